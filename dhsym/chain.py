@@ -1,0 +1,164 @@
+"""DH rows and chains: link matrices, products between any two frames, and their inverses.
+
+>>> import sympy
+>>> t1, t2, l1, l2 = sympy.symbols("theta_1 theta_2 l_1 l_2", real=True)
+>>> arm = Chain([DHRow.revolute(t1, a=l1), DHRow.revolute(t2, a=l2)], "standard")
+>>> arm.fk()[0, 3]
+l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2)
+>>> arm.transform(2, 0)[0, 3]
+-l_1*cos(theta_2) - l_2
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+import sympy
+
+from .errors import UserError
+from .simplify import contract
+from .transforms import CONVENTIONS, Step, inverse_transform, link_steps, product
+
+Frame = int | str  # 0..n, or "base" / "tool"
+Simplifier = Callable[[Sequence[Step], frozenset], sympy.Matrix]
+
+
+@dataclass(frozen=True)
+class DHRow:
+    """One joint's row. In the `modified` convention `a` and `alpha` are a_{i-1}, α_{i-1}."""
+
+    joint: str  # "R" revolute or "P" prismatic
+    theta: sympy.Expr
+    d: sympy.Expr
+    a: sympy.Expr
+    alpha: sympy.Expr
+    variable: sympy.Symbol
+
+    @classmethod
+    def revolute(cls, theta, d=0, a=0, alpha=0, variable=None) -> "DHRow":
+        """A revolute row; the variable defaults to the one symbol in `theta`."""
+        return cls._make("R", theta, d, a, alpha, variable, theta)
+
+    @classmethod
+    def prismatic(cls, d, theta=0, a=0, alpha=0, variable=None) -> "DHRow":
+        """A prismatic row; the variable defaults to the one symbol in `d`."""
+        return cls._make("P", theta, d, a, alpha, variable, d)
+
+    @classmethod
+    def _make(cls, joint, theta, d, a, alpha, variable, moving) -> "DHRow":
+        theta, d, a, alpha, moving = (sympy.sympify(x) for x in (theta, d, a, alpha, moving))
+        if variable is None:
+            free = sorted(moving.free_symbols, key=str)
+            field_name = "theta" if joint == "R" else "d"
+            if len(free) != 1:
+                raise UserError(f"{field_name} {moving} must hold exactly one joint variable, "
+                                f"found {len(free)}; name it with var")
+            variable = free[0]
+        return cls(joint, theta, d, a, alpha, variable)
+
+    def steps(self, convention: str) -> list[Step]:
+        return link_steps(convention, self.theta, self.d, self.a, self.alpha)
+
+
+class Chain:
+    """A serial chain: DH rows in one convention, with optional fixed base and tool steps.
+
+    Frames are numbered 0..n; "base" (before the base steps) and "tool" (after the tool
+    steps) exist when the chain has such steps.
+    """
+
+    def __init__(self, rows: Sequence[DHRow], convention: str, base: Sequence[Step] = (),
+                 tool: Sequence[Step] = (), simplifier: Simplifier = contract):
+        if convention not in CONVENTIONS:
+            raise UserError(f"unknown convention {convention!r}; use standard or modified")
+        if not rows:
+            raise UserError("a chain needs at least one joint")
+        self.rows, self.convention = tuple(rows), convention
+        self.base, self.tool = tuple(base), tuple(tool)
+        self.simplifier = simplifier
+        self._cache: dict = {}
+
+    @property
+    def n(self) -> int:
+        return len(self.rows)
+
+    @property
+    def joint_variables(self) -> list[sympy.Symbol]:
+        return [row.variable for row in self.rows]
+
+    @property
+    def frames(self) -> list[Frame]:
+        return (["base"] if self.base else []) + list(range(self.n + 1)) + (["tool"] if self.tool else [])
+
+    @property
+    def first_frame(self) -> Frame:
+        return self.frames[0]
+
+    @property
+    def last_frame(self) -> Frame:
+        return self.frames[-1]
+
+    def link(self, i: int, raw: bool = False) -> sympy.Matrix:
+        """The link matrix {i-1}T_i."""
+        return self.transform(i - 1, i, raw=raw)
+
+    def links(self, raw: bool = False) -> list[sympy.Matrix]:
+        return [self.link(i, raw=raw) for i in range(1, self.n + 1)]
+
+    def fk(self, raw: bool = False) -> sympy.Matrix:
+        """The whole chain, from base (else 0) to tool (else n)."""
+        return self.transform(self.first_frame, self.last_frame, raw=raw)
+
+    def transform(self, i: Frame, j: Frame, raw: bool = False) -> sympy.Matrix:
+        """{i}T_{j}; for i after j this is the inverse, built in closed form."""
+        key = (self._position(i), self._position(j), raw)
+        if key not in self._cache:
+            self._cache[key] = self._compute(*key)
+        return self._cache[key].copy()
+
+    def _compute(self, start: int, end: int, raw: bool) -> sympy.Matrix:
+        if start > end:
+            if raw:
+                return inverse_transform(self._compute(end, start, raw=True))
+            steps = [step.inverse() for step in reversed(self._steps()[end:start])]
+        else:
+            steps = self._steps()[start:end]
+        if raw:
+            return self._raw_links(start, end)
+        return self.simplifier(steps, frozenset(self.joint_variables))
+
+    def _raw_links(self, start: int, end: int) -> sympy.Matrix:
+        """The plain product of whole link matrices (and base/tool matrices)."""
+        bounds = self._bounds()
+        result = sympy.eye(4)
+        for lo, hi in zip(bounds, bounds[1:]):
+            if start <= lo and hi <= end and hi > lo:
+                result = result * product(self._steps()[lo:hi])
+        return result
+
+    def _steps(self) -> list[Step]:
+        if "steps" not in self._cache:
+            link = [s for row in self.rows for s in row.steps(self.convention)]
+            self._cache["steps"] = list(self.base) + link + list(self.tool)
+        return self._cache["steps"]
+
+    def _bounds(self) -> list[int]:
+        """Step index of each frame, in the order of `frames`."""
+        bounds = [0] if self.base else []
+        position = len(self.base)
+        bounds.append(position)
+        for _ in self.rows:
+            position += 4
+            bounds.append(position)
+        if self.tool:
+            bounds.append(position + len(self.tool))
+        return bounds
+
+    def _position(self, frame: Frame) -> int:
+        frames = self.frames
+        if isinstance(frame, str) and frame.isdigit():
+            frame = int(frame)
+        if frame not in frames:
+            names = ", ".join(str(f) for f in (frames[:2] + ["..."] + frames[-2:] if len(frames) > 6 else frames))
+            raise UserError(f"no frame {frame!r} in this robot; frames are {names}")
+        return self._bounds()[frames.index(frame)]

@@ -1,0 +1,48 @@
+"""Errors a user can cause, carrying where in their input they happened.
+
+>>> err = UserError("unknown key 'alpah'", Location("arm.yaml", 4, 12))
+>>> str(err)
+"arm.yaml:4:12: unknown key 'alpah'"
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Location:
+    """A place in a user's input; line and column count from 1."""
+
+    file: str
+    line: int | None = None
+    column: int | None = None
+
+    def shifted(self, columns: int) -> "Location":
+        """The same place moved right by `columns` on its line."""
+        if self.column is None:
+            return self
+        return Location(self.file, self.line, self.column + columns)
+
+    def __str__(self) -> str:
+        parts = [self.file]
+        if self.line is not None:
+            parts.append(str(self.line))
+            if self.column is not None:
+                parts.append(str(self.column))
+        return ":".join(parts)
+
+
+class UserError(Exception):
+    """A mistake in the user's input or command line: reported in one line, exit status 2."""
+
+    def __init__(self, message: str, where: Location | None = None):
+        super().__init__(message)
+        self.message = message
+        self.where = where
+
+    def __str__(self) -> str:
+        return f"{self.where}: {self.message}" if self.where else self.message
+
+    def at(self, where: Location) -> "UserError":
+        """This error placed at `where` unless it already knows its place."""
+        return self if self.where else UserError(self.message, where)

@@ -1,0 +1,96 @@
+"""Elementary homogeneous transforms and the link matrix of each DH convention.
+
+A chain is a sequence of `Step`s (Rx, Ry, Rz, Tx, Ty, Tz); each convention is just the
+order of four steps:
+
+>>> import sympy
+>>> th, d, a, al = sympy.symbols("theta d a alpha", real=True)
+>>> [str(s) for s in link_steps("standard", th, d, a, al)]
+['Rz(theta)', 'Tz(d)', 'Tx(a)', 'Rx(alpha)']
+>>> [str(s) for s in link_steps("modified", th, d, a, al)]
+['Rx(alpha)', 'Tx(a)', 'Rz(theta)', 'Tz(d)']
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy
+
+CONVENTIONS = ("standard", "modified")
+STEP_KINDS = ("Rx", "Ry", "Rz", "Tx", "Ty", "Tz")
+
+
+@dataclass(frozen=True)
+class Step:
+    """One elementary motion: a rotation about or a translation along a frame axis."""
+
+    kind: str
+    value: sympy.Expr
+
+    @property
+    def axis(self) -> int:
+        return "xyz".index(self.kind[1])
+
+    @property
+    def is_rotation(self) -> bool:
+        return self.kind[0] == "R"
+
+    def inverse(self) -> "Step":
+        return Step(self.kind, -self.value)
+
+    def matrix(self) -> sympy.Matrix:
+        return rotation(self.axis, self.value) if self.is_rotation else translation(self.axis, self.value)
+
+    def __str__(self) -> str:
+        return f"{self.kind}({self.value})"
+
+
+def rotation(axis: int, angle: sympy.Expr) -> sympy.Matrix:
+    """Homogeneous rotation about x (0), y (1) or z (2).
+
+    >>> rotation(2, sympy.pi / 2)[:3, :3]
+    Matrix([
+    [0, -1, 0],
+    [1,  0, 0],
+    [0,  0, 1]])
+    """
+    c, s = sympy.cos(angle), sympy.sin(angle)
+    i, j = [k for k in range(3) if k != axis]
+    if axis == 1:  # about y the cyclic order is z, x
+        i, j = j, i
+    m = sympy.eye(4)
+    m[i, i], m[i, j], m[j, i], m[j, j] = c, -s, s, c
+    return m
+
+
+def translation(axis: int, distance: sympy.Expr) -> sympy.Matrix:
+    """Homogeneous translation along x (0), y (1) or z (2)."""
+    m = sympy.eye(4)
+    m[axis, 3] = distance
+    return m
+
+
+def link_steps(convention: str, theta, d, a, alpha) -> list[Step]:
+    """The four steps of one DH row; in `modified` rows `a`, `alpha` are a_{i-1}, α_{i-1}."""
+    if convention == "standard":
+        return [Step("Rz", theta), Step("Tz", d), Step("Tx", a), Step("Rx", alpha)]
+    if convention == "modified":
+        return [Step("Rx", alpha), Step("Tx", a), Step("Rz", theta), Step("Tz", d)]
+    raise ValueError(f"unknown convention {convention!r}")
+
+
+def product(steps) -> sympy.Matrix:
+    """The plain matrix product of the steps, without any simplification."""
+    result = sympy.eye(4)
+    for step in steps:
+        result = result * step.matrix()
+    return result
+
+
+def inverse_transform(matrix: sympy.Matrix) -> sympy.Matrix:
+    """Closed-form inverse of a homogeneous transform: [Rᵀ, −Rᵀp; 0, 1]."""
+    rotation_t = matrix[:3, :3].T
+    result = sympy.eye(4)
+    result[:3, :3] = rotation_t
+    result[:3, 3] = -rotation_t * matrix[:3, 3]
+    return result
