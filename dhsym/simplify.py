@@ -141,7 +141,15 @@ def collect_by_trig(expr: sympy.Expr, variables) -> sympy.Expr:
         for factor in sympy.Mul.make_args(term):
             (key if _is_trig_of(factor, variables) else rest).append(factor)
         groups.setdefault(sympy.Mul(*key), []).append(sympy.Mul(*rest))
-    return sympy.Add(*(key * sympy.Add(*rests) for key, rests in groups.items()))
+    return sympy.Add(*(_group(key, rests) for key, rests in groups.items()))
+
+
+def _group(key: sympy.Expr, terms) -> sympy.Expr:
+    """key·(Σ terms), pulling out a minus sign that every term shares: −s1(s4 c5 c6 + c4 s6)."""
+    total = sympy.Add(*terms)
+    if key != 1 and total.is_Add and all(t.could_extract_minus_sign() for t in total.args):
+        return sympy.Mul(-1, key, -total)
+    return key * total
 
 
 def _is_trig_of(factor: sympy.Expr, variables) -> bool:

@@ -1,0 +1,152 @@
+"""The `dhsym` command: argument parsing and dispatch only.
+
+    dhsym list
+    dhsym table puma560
+    dhsym links planar3r --ascii
+    dhsym fk puma560 --from 3 --to 6 --format latex
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from . import render
+from .errors import UserError
+from .library import builtin_names, load
+from .printing import LatexPrinter
+
+EXIT_USER_ERROR = 2
+EXIT_INTERNAL_ERROR = 70
+ISSUE_URL = "the dhsym issue tracker"
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a usage mistake is one line on stderr and exit status 2."""
+
+    def error(self, message):
+        raise UserError(f"{message} (see '{self.prog} --help')")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="dhsym", description="Denavit–Hartenberg tables to textbook-form kinematics: "
+                     "link matrices, products iTj and 0Tn in c1/s23/c123 notation, as text, LaTeX or JSON.",
+                     epilog="ROBOT is a built-in name (see 'dhsym list') or a path to a robot YAML file.")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    commands.required = True
+    commands.add_parser("list", help="list the built-in robots and their sources",
+                        description="List the built-in robots with their joints, convention and source.")
+
+    def robot_command(name, help_text, description):
+        sub = commands.add_parser(name, help=help_text, description=description)
+        sub.add_argument("robot", metavar="ROBOT", help="built-in robot name or path to a robot YAML file")
+        sub.add_argument("--format", choices=("text", "latex", "json"), default="text", help="output format (default text)")
+        sub.add_argument("--ascii", action="store_true", help="plain ASCII text instead of Unicode")
+        sub.add_argument("--width", type=int, default=100, metavar="N",
+                         help="text width; wider matrices are printed element by element (default 100)")
+        return sub
+
+    robot_command("table", "print the DH table", "Print the robot's DH table in its convention's column order; "
+                  "* marks the joint variables.")
+    links = robot_command("links", "print every link matrix", "Print every link matrix {i-1}T_i, simplified.")
+    links.add_argument("--raw", action="store_true", help="plain products, without simplification")
+    fk = robot_command("fk", "print the transform between two frames (default: whole chain)",
+                       "Print {FROM}T_{TO}. Frames are 0..n, plus base and tool when the robot has them. "
+                       "FROM after TO gives the inverse transform.")
+    fk.add_argument("--from", dest="start", metavar="F", help="start frame (default: base, else 0)")
+    fk.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else n)")
+    fk.add_argument("--raw", action="store_true", help="the plain product, without simplification")
+    return parser
+
+
+def main(argv=None) -> int:
+    try:
+        args = build_parser().parse_args(argv)
+        return _dispatch(args)
+    except UserError as error:
+        print(f"dhsym: error: {error}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except KeyboardInterrupt:
+        print("dhsym: interrupted", file=sys.stderr)
+        return 130
+    except Exception as error:  # a bug in dhsym, not the user's fault
+        print(f"dhsym: internal error: {type(error).__name__}: {error}\n"
+              f"This is a bug in dhsym. Please report it on {ISSUE_URL} with the command you ran.", file=sys.stderr)
+        return EXIT_INTERNAL_ERROR
+
+
+def _dispatch(args) -> int:
+    if args.command == "list":
+        _print_list()
+        return 0
+    robot = load(args.robot)
+    for warning in robot.warnings:
+        print(f"dhsym: warning: {warning}", file=sys.stderr)
+    output = {"table": _table, "links": _links, "fk": _fk}[args.command](robot, args)
+    sys.stdout.write(output if output.endswith("\n") else output + "\n")
+    return 0
+
+
+def _print_list() -> None:
+    robots = [load(name) for name in builtin_names()]
+    width = max(len(name) for name in builtin_names())
+    for name, robot in zip(builtin_names(), robots):
+        print(f"{name:<{width}}  {robot.chain.n} joints  {robot.chain.convention:<8}  {robot.name}")
+        print(f"{'':<{width}}  source: {robot.source}")
+
+
+def _frame(text, default):
+    if text is None:
+        return default
+    return int(text) if text.lstrip("-").isdigit() else text
+
+
+def _header(robot, what: str, ascii: bool) -> str:
+    title = f"{robot.name}: {what}  ({robot.chain.convention} DH)"
+    return title.replace("−", "-") if ascii else title
+
+
+def _table(robot, args) -> str:
+    if args.format == "json":
+        rows = [{"joint": r.joint, "theta": str(r.theta), "d": str(r.d), "a": str(r.a), "alpha": str(r.alpha),
+                 "variable": r.variable.name} for r in robot.chain.rows]
+        return json.dumps({"robot": robot.name, "convention": robot.chain.convention, "rows": rows}, indent=2)
+    if args.format == "latex":
+        return "\\[\n" + render.latex_table(robot) + "\n\\]"
+    note = render.CONVENTION_NOTES[robot.chain.convention] + "; * marks joint variables"
+    return _header(robot, "DH table", args.ascii) + "\n" + (note.encode("ascii", "replace").decode() if args.ascii else note) \
+        + "\n\n" + render.text_table(robot, ascii=args.ascii)
+
+
+def _links(robot, args) -> str:
+    results = [(i - 1, i, robot.chain.link(i, raw=args.raw)) for i in range(1, robot.chain.n + 1)]
+    return _results(robot, results, args)
+
+
+def _fk(robot, args) -> str:
+    chain = robot.chain
+    start, end = _frame(args.start, chain.first_frame), _frame(args.end, chain.last_frame)
+    return _results(robot, [(start, end, chain.transform(start, end, raw=args.raw))], args)
+
+
+def _results(robot, results, args) -> str:
+    if args.format == "json":
+        data = [render.json_result(robot, i, j, m) for i, j, m in results]
+        return json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False)
+    if args.format == "latex":
+        printer = LatexPrinter(robot.chain.joint_variables)
+        blocks = [f"{render.transform_title(i, j, 'latex')} =\n{render.latex_matrix(m, printer)}" for i, j, m in results]
+        legend = render.latex_legend(printer)
+        return "\n\n".join(f"\\[\n{b}\n\\]" for b in blocks) + (f"\n\nwhere ${legend}$" if legend else "")
+    printer = render.text_printer(robot, ascii=args.ascii)
+    style = "ascii" if args.ascii else "unicode"
+    blocks = []
+    for i, j, matrix in results:
+        title = _header(robot, render.transform_title(i, j, style), args.ascii)
+        blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, args.width))
+    legend = render.text_legend(printer, args.width)
+    return "\n\n".join(blocks) + ("\n\n" + legend if legend else "")
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,183 @@
+"""Expression printers that write the textbook c/s notation, in text and in LaTeX.
+
+The math objects know nothing of printing; these are SymPy printer subclasses that override
+how cos, sin, sums, products and symbols are written, and remember which abbreviations they
+used so that a legend can list exactly those.
+
+>>> import sympy
+>>> t1, t2, l1, l2 = sympy.symbols("theta_1 theta_2 l_1 l_2", real=True)
+>>> px = l1*sympy.cos(t1) + l2*sympy.cos(t1 + t2)
+>>> printer = TextPrinter([t1, t2])
+>>> printer.doprint(px), sorted(a.label("unicode") for a in printer.used)
+('l1 c1 + l2 c12', ['c1', 'c12'])
+>>> LatexPrinter([t1, t2]).doprint(px)
+'l_{1} c_{1} + l_{2} c_{12}'
+"""
+from __future__ import annotations
+
+import sympy
+from sympy.printing.latex import LatexPrinter as _SympyLatex
+from sympy.printing.str import StrPrinter
+
+from .notation import Notation, display_name
+
+_BRACKETS = {"text": [("(", ")"), ("[", "]"), ("{", "}")],
+             "latex": [("(", ")"), ("[", "]"), ("\\{", "\\}")]}
+
+
+class _TextbookMixin:
+    """The parts shared by the text and the LaTeX printer."""
+
+    style = "unicode"
+    family = "text"
+    minus = " − "
+
+    def _setup(self, joint_variables, marked=()):
+        self.notation = Notation(joint_variables)
+        self.marked = set(marked)  # symbols printed with a star: the joint variables in a DH table
+        self.used: set = set()
+
+    def _print_Symbol(self, expr):
+        name = display_name(expr.name, self.style)
+        return self._mark(name) if expr in self.marked else name
+
+    def _trig(self, expr):
+        found = self.notation.abbreviation(expr)
+        if not found:
+            return self._plain_trig(expr)
+        sign, abbreviation = found
+        self.used.add(abbreviation)
+        return (self.minus.strip() if sign < 0 else "") + abbreviation.label(self.style)
+
+    def _print_cos(self, expr):
+        return self._trig(expr)
+
+    def _print_sin(self, expr):
+        return self._trig(expr)
+
+    def _print_Add(self, expr, order=None):
+        out = ""
+        for position, term in enumerate(sorted(expr.args, key=self.notation.term_key)):
+            negative = term.could_extract_minus_sign()
+            body = self._print(-term if negative else term)
+            if position == 0:
+                out = (self.minus.strip() if negative else "") + body
+            else:
+                out += (self.minus if negative else " + ") + body
+        return out
+
+    def _print_Mul(self, expr):
+        if expr.could_extract_minus_sign():
+            return self.minus.strip() + self._print(-expr)
+        coefficient, rest = expr.as_coeff_Mul()
+        factors = sorted(sympy.Mul.make_args(rest), key=self.notation.factor_key)
+        upper = [f for f in factors if not (f.is_Pow and f.exp.is_negative)]
+        lower = [1 / f for f in factors if f.is_Pow and f.exp.is_negative]
+        if coefficient.is_Rational and coefficient != 1:
+            if coefficient.p != 1 or not upper:
+                upper.insert(0, sympy.Integer(coefficient.p))
+            if coefficient.q != 1:
+                lower.insert(0, sympy.Integer(coefficient.q))
+        elif coefficient != 1:
+            upper.insert(0, coefficient)
+        top = self._join([self._factor(f) for f in upper]) if upper else "1"
+        if not lower:
+            return top
+        return self._fraction(top, self._join([self._factor(f) for f in lower]), len(upper) > 1)
+
+    def _factor(self, factor):
+        if factor.is_Add:
+            opening, closing = _BRACKETS[self.family][_nesting(factor) % 3]
+            return opening + self._print(factor) + closing
+        return self._print(factor)
+
+    def _join(self, pieces):
+        out = pieces[0]
+        for piece in pieces[1:]:
+            out += piece if piece[:1] in "([{\\" and not piece.startswith("\\sqrt") and self.family == "text" \
+                or piece[:2] in ("(", "[", "\\{") else " " + piece
+        return out
+
+
+class TextPrinter(_TextbookMixin, StrPrinter):
+    """Plain text, Unicode by default (θ1, −, √) or ASCII (`ascii=True`)."""
+
+    def __init__(self, joint_variables, marked=(), ascii=False):
+        StrPrinter.__init__(self, {})
+        self._setup(joint_variables, marked)
+        if ascii:
+            self.style, self.minus = "ascii", " - "
+
+    def _mark(self, name):
+        return name + "*"
+
+    def _plain_trig(self, expr):
+        name = type(expr).__name__
+        argument = self._print(expr.args[0])
+        return f"{name} {argument}" if expr.args[0].is_Atom else f"{name}({argument})"
+
+    def _print_Pow(self, expr, rational=False):
+        if expr.exp == sympy.Rational(1, 2):
+            base = self._print(expr.base)
+            if self.style == "ascii":
+                return f"sqrt({base})"
+            return "√" + (base if expr.base.is_Atom else f"({base})")
+        if expr.exp.is_Integer and expr.exp > 1:
+            base = self._factor(expr.base) if not expr.base.is_Atom else self._print(expr.base)
+            return base + ("^" + str(expr.exp) if self.style == "ascii" else _superscript(str(expr.exp)))
+        return super()._print_Pow(expr, rational)
+
+    def _print_Integer(self, expr):
+        return self.minus.strip() + str(-expr) if expr < 0 else str(expr)
+
+    def _print_Rational(self, expr):
+        return self.minus.strip() + f"{-expr.p}/{expr.q}" if expr < 0 else f"{expr.p}/{expr.q}"
+
+    def _print_Pi(self, expr):
+        return "pi" if self.style == "ascii" else "π"
+
+    def _fraction(self, top, bottom, grouped):
+        return (f"({top})" if grouped else top) + "/" + bottom
+
+
+class LatexPrinter(_TextbookMixin, _SympyLatex):
+    """LaTeX with c_{1}, s_{23}; symbols as \\theta_{1}, l_{1}."""
+
+    style, family, minus = "latex", "latex", " - "
+
+    def __init__(self, joint_variables, marked=()):
+        _SympyLatex.__init__(self, {})
+        self._setup(joint_variables, marked)
+
+    def _mark(self, name):
+        return name + "^{*}"
+
+    def _plain_trig(self, expr):
+        name = "\\" + type(expr).__name__
+        argument = self._print(expr.args[0])
+        return f"{name}{{{argument}}}" if expr.args[0].is_Atom else f"{name}({argument})"
+
+    def _fraction(self, top, bottom, grouped):
+        return f"\\frac{{{top}}}{{{bottom}}}"
+
+
+def _nesting(expr) -> int:
+    """How many bracket levels a sum contains inside it (0 for a flat sum)."""
+    deepest = 0
+    for term in sympy.Add.make_args(expr):
+        for factor in sympy.Mul.make_args(term):
+            if factor.is_Add:
+                deepest = max(deepest, 1 + _nesting(factor))
+    return deepest
+
+
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+_SUBSCRIPT = str.maketrans("0123456789-", "₀₁₂₃₄₅₆₇₈₉₋")
+
+
+def _superscript(text: str) -> str:
+    return text.translate(_SUPERSCRIPT)
+
+
+def _subscript(text: str) -> str:
+    return text.translate(_SUBSCRIPT)

@@ -1,0 +1,146 @@
+"""Whole results for people: matrices, DH tables, legends and JSON, built on the printers.
+
+>>> from dhsym.library import load
+>>> robot = load("planar3r")
+>>> print(text_table(robot))  # doctest: +NORMALIZE_WHITESPACE
+i │ αᵢ₋₁ │ aᵢ₋₁ │ dᵢ │ θᵢ
+1 │ 0    │ 0    │ 0  │ θ1*
+2 │ 0    │ l1   │ 0  │ θ2*
+3 │ 0    │ l2   │ 0  │ θ3*
+"""
+from __future__ import annotations
+
+import sympy
+
+from .printing import LatexPrinter, TextPrinter, _subscript, _superscript
+from .robotfile import Robot
+
+ELEMENT_NAMES = [["r11", "r12", "r13", "px"], ["r21", "r22", "r23", "py"], ["r31", "r32", "r33", "pz"]]
+CONVENTION_NOTES = {
+    "standard": "standard (distal) DH: A_i = Rz(θi) Tz(di) Tx(ai) Rx(αi)",
+    "modified": "modified (proximal, Craig) DH: T_i = Rx(αi−1) Tx(ai−1) Rz(θi) Tz(di)",
+}
+
+
+def text_printer(robot: Robot, ascii: bool = False, marked=()) -> TextPrinter:
+    return TextPrinter(robot.chain.joint_variables, marked=marked, ascii=ascii)
+
+
+def transform_title(i, j, style: str = "unicode") -> str:
+    """⁰T₆ (unicode), 0T6 (ascii), {}^{0}T_{6} (latex); base/tool frames by name."""
+    if style == "latex":
+        name = lambda f: f"\\mathrm{{{f}}}" if isinstance(f, str) else str(f)  # noqa: E731
+        return f"{{}}^{{{name(i)}}}T_{{{name(j)}}}"
+    if style == "unicode" and isinstance(i, int) and isinstance(j, int):
+        return f"{_superscript(str(i))}T{_subscript(str(j))}"
+    if isinstance(i, int) and isinstance(j, int):
+        return f"{i}T{j}"
+    return f"T({i} -> {j})" if style == "ascii" else f"T({i} → {j})"
+
+
+def text_matrix(matrix: sympy.Matrix, printer: TextPrinter, width: int = 100) -> str:
+    """An aligned 4×4 matrix, or the named elements r11 … pz when the matrix is too wide."""
+    cells = [[printer.doprint(matrix[r, c]) for c in range(4)] for r in range(4)]
+    widths = [max(len(cells[r][c]) for r in range(4)) for c in range(4)]
+    ascii = printer.style == "ascii"
+    if sum(widths) + 3 * 4 + 1 <= width:
+        edges = [("[", "]")] * 4 if ascii else [("⎡", "⎤"), ("⎢", "⎥"), ("⎢", "⎥"), ("⎣", "⎦")]
+        rows = []
+        for r in range(4):
+            body = "   ".join(cells[r][c].ljust(widths[c]) for c in range(4))
+            rows.append(f"{edges[r][0]} {body} {edges[r][1]}")
+        return "\n".join(rows)
+    lines = []
+    for r in range(3):
+        for c in range(4):
+            lines.append(f"{ELEMENT_NAMES[r][c]:<3} = {cells[r][c]}")
+    lines.append("bottom row: 0 0 0 1")
+    return "\n".join(lines)
+
+
+def legend_entries(printer, style: str) -> list[tuple[str, str]]:
+    """(abbreviation, meaning) for exactly the abbreviations the printer has written."""
+    return [(a.label(style), printer.notation.meaning(a, style))
+            for a in sorted(printer.used, key=lambda a: a.sort_key())]
+
+
+def text_legend(printer: TextPrinter, width: int = 100) -> str:
+    entries = legend_entries(printer, printer.style)
+    if not entries:
+        return ""
+    lines, line = [], "where"
+    for position, (label, meaning) in enumerate(entries):
+        entry = f" {label} = {meaning}" + ("," if position < len(entries) - 1 else "")
+        if len(line) + len(entry) > width and line.strip() != "where":
+            lines.append(line)
+            line = "     "
+        line += entry
+    return "\n".join(lines + [line])
+
+
+def table_columns(robot: Robot) -> list[tuple[str, str, str]]:
+    """(row field, unicode header, LaTeX header) in the order the convention's books use."""
+    if robot.chain.convention == "modified":
+        return [("alpha", "αᵢ₋₁", "\\alpha_{i-1}"), ("a", "aᵢ₋₁", "a_{i-1}"), ("d", "dᵢ", "d_i"), ("theta", "θᵢ", "\\theta_i")]
+    return [("theta", "θᵢ", "\\theta_i"), ("d", "dᵢ", "d_i"), ("a", "aᵢ", "a_i"), ("alpha", "αᵢ", "\\alpha_i")]
+
+
+def text_table(robot: Robot, ascii: bool = False) -> str:
+    """The DH table in the convention's column order; * marks each joint variable."""
+    printer = text_printer(robot, ascii=ascii, marked=robot.chain.joint_variables)
+    columns = table_columns(robot)
+    headers = ["i"] + [_ascii_header(field) if ascii else header for field, header, _ in columns]
+    body = [[str(n)] + [printer.doprint(getattr(row, field)) for field, _, _ in columns]
+            for n, row in enumerate(robot.chain.rows, 1)]
+    widths = [max(len(r[k]) for r in [headers] + body) for k in range(len(headers))]
+    separator = " | " if ascii else " │ "
+    lines = [separator.join(cell.ljust(w) for cell, w in zip(line, widths)).rstrip() for line in [headers] + body]
+    return "\n".join(lines)
+
+
+def _ascii_header(field: str) -> str:
+    return {"alpha": "alpha", "theta": "theta"}.get(field, field)
+
+
+def latex_matrix(matrix: sympy.Matrix, printer: LatexPrinter) -> str:
+    rows = [" & ".join(printer.doprint(matrix[r, c]) for c in range(4)) for r in range(4)]
+    return "\\begin{bmatrix}\n" + " \\\\\n".join(rows) + "\n\\end{bmatrix}"
+
+
+def latex_legend(printer: LatexPrinter) -> str:
+    entries = legend_entries(printer, "latex")
+    return ",\\quad ".join(f"{label} = {meaning}" for label, meaning in entries)
+
+
+def latex_table(robot: Robot) -> str:
+    """The DH table as a LaTeX array; joint variables carry a star."""
+    printer = LatexPrinter(robot.chain.joint_variables, marked=robot.chain.joint_variables)
+    columns = table_columns(robot)
+    header = " & ".join(["i"] + [h for _, _, h in columns])
+    body = [" & ".join([str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns])
+            for n, row in enumerate(robot.chain.rows, 1)]
+    return ("\\begin{array}{c|cccc}\n" + header + " \\\\\n\\hline\n" + " \\\\\n".join(body) + "\n\\end{array}")
+
+
+def json_result(robot: Robot, i, j, matrix: sympy.Matrix) -> dict:
+    """A result any SymPy user can read back: full cos/sin, the robot file's symbol names."""
+    printer = text_printer(robot, ascii=True)
+    for element in matrix:
+        printer.doprint(element)  # collects the abbreviations the text form uses
+    return {
+        "robot": robot.name,
+        "convention": robot.chain.convention,
+        "from": i,
+        "to": j,
+        "joint_variables": [s.name for s in robot.chain.joint_variables],
+        "matrix": [[sympy.sstr(matrix[r, c]) for c in range(4)] for r in range(4)],
+        "abbreviations": {label: meaning for label, meaning in _json_legend(printer)},
+    }
+
+
+def _json_legend(printer: TextPrinter):
+    for abbreviation in sorted(printer.used, key=lambda a: a.sort_key()):
+        terms = " ".join(("- " if sign < 0 else "+ ") + printer.notation.name_of(number)
+                         for number, sign in abbreviation.indices).lstrip("+ ")
+        function = "cos" if abbreviation.function == "c" else "sin"
+        yield abbreviation.label("ascii"), f"{function}({terms})"

@@ -1,0 +1,75 @@
+"""Equality of expressions and matrices, proven by algebra and by numbers at random points.
+
+Algebra: both sides are expanded into products of cos/sin of single angles and every
+``sin(u)**2`` is replaced by ``1 - cos(u)**2``. In that form a trigonometric polynomial is
+zero only if it is identically zero, so the test is exact, not a heuristic.
+
+>>> import sympy
+>>> t1, t2 = sympy.symbols("theta_1 theta_2", real=True)
+>>> verdict = check(sympy.cos(t1 + t2), sympy.cos(t1)*sympy.cos(t2) - sympy.sin(t1)*sympy.sin(t2))
+>>> verdict.algebraic, verdict.numeric
+(True, True)
+>>> bool(check(sympy.sin(t1)**2, 1 - sympy.cos(t2)**2))
+False
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import sympy
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """Whether two things are equal, by algebra and by numbers."""
+
+    algebraic: bool
+    numeric: bool
+    max_error: float
+
+    def __bool__(self) -> bool:
+        return self.algebraic and self.numeric
+
+
+def trig_canonical(expr: sympy.Expr) -> sympy.Expr:
+    """A form in which a trigonometric polynomial is zero exactly when it is identically zero."""
+    expr = sympy.expand(sympy.expand_trig(sympy.sympify(expr)))
+    while True:
+        squares = {p for p in expr.atoms(sympy.Pow)
+                   if isinstance(p.base, sympy.sin) and p.exp.is_Integer and p.exp >= 2}
+        if not squares:
+            return expr
+        expr = sympy.expand(expr.xreplace({p: (1 - sympy.cos(p.base.args[0])**2) * sympy.sin(p.base.args[0])**(p.exp - 2)
+                                           for p in squares}))
+
+
+def algebraically_equal(a, b) -> bool:
+    return trig_canonical(sympy.sympify(a) - sympy.sympify(b)) == 0
+
+
+def numeric_error(a, b, trials: int = 12, seed: int = 0) -> float:
+    """The largest |a − b| at random values of every symbol (angles and lengths alike)."""
+    difference = sympy.sympify(a) - sympy.sympify(b)
+    symbols = sorted(difference.free_symbols, key=lambda s: s.name)
+    if not symbols:
+        return float(abs(sympy.N(difference)))
+    rng = random.Random(seed)
+    function = sympy.lambdify(symbols, difference, modules="math")
+    worst = 0.0
+    for _ in range(trials):
+        worst = max(worst, abs(function(*[rng.uniform(-3.0, 3.0) for _ in symbols])))
+    return worst
+
+
+def check(a, b, tolerance: float = 1e-9, trials: int = 12) -> Verdict:
+    """Compare two expressions or two matrices of the same shape, element by element."""
+    if isinstance(a, sympy.MatrixBase) or isinstance(b, sympy.MatrixBase):
+        a, b = sympy.Matrix(a), sympy.Matrix(b)
+        if a.shape != b.shape:
+            return Verdict(False, False, float("inf"))
+        verdicts = [check(x, y, tolerance, trials) for x, y in zip(a, b)]
+        return Verdict(all(v.algebraic for v in verdicts), all(v.numeric for v in verdicts),
+                       max(v.max_error for v in verdicts))
+    error = numeric_error(a, b, trials)
+    return Verdict(algebraically_equal(a, b), error <= tolerance, error)
