@@ -15,6 +15,9 @@ from typing import Callable, Sequence
 
 import sympy
 
+import warnings
+
+from .budget import BudgetExceeded, SimplificationTimeout, time_budget
 from .errors import UserError
 from .simplify import contract
 from .transforms import CONVENTIONS, Step, inverse_transform, link_steps, product
@@ -68,7 +71,7 @@ class Chain:
     """
 
     def __init__(self, rows: Sequence[DHRow], convention: str, base: Sequence[Step] = (),
-                 tool: Sequence[Step] = (), simplifier: Simplifier = contract):
+                 tool: Sequence[Step] = (), simplifier: Simplifier = contract, timeout: float | None = None):
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {convention!r}; use standard or modified")
         if not rows:
@@ -76,6 +79,7 @@ class Chain:
         self.rows, self.convention = tuple(rows), convention
         self.base, self.tool = tuple(base), tuple(tool)
         self.simplifier = simplifier
+        self.timeout = timeout  # seconds of simplification per result; past it the raw product is returned
         self._cache: dict = {}
 
     @property
@@ -125,7 +129,13 @@ class Chain:
             steps = self._steps()[start:end]
         if raw:
             return self._raw_links(start, end)
-        return self.simplifier(steps, frozenset(self.joint_variables))
+        try:
+            with time_budget(self.timeout):
+                return self.simplifier(steps, frozenset(self.joint_variables))
+        except BudgetExceeded:
+            warnings.warn(SimplificationTimeout(f"simplification took longer than {self.timeout:g} s; "
+                                                "showing the unsimplified product"), stacklevel=3)
+            return self._compute(start, end, raw=True)
 
     def _raw_links(self, start: int, end: int) -> sympy.Matrix:
         """The plain product of whole link matrices (and base/tool matrices)."""

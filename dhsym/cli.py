@@ -10,11 +10,17 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import warnings
 
 from . import render
 from .errors import UserError
+from .budget import SimplificationTimeout
 from .library import builtin_names, load
 from .printing import LatexPrinter
+
+# Subcommands that live in their own modules: each has NAME, add_parser(commands) and
+# run(robot, args) -> str | None (None when it wrote its own output file).
+EXTENSIONS: tuple = ()
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70
@@ -44,6 +50,7 @@ def build_parser() -> argparse.ArgumentParser:
         sub.add_argument("--ascii", action="store_true", help="plain ASCII text instead of Unicode")
         sub.add_argument("--width", type=int, default=100, metavar="N",
                          help="text width; wider matrices are printed element by element (default 100)")
+        add_common_options(sub)
         return sub
 
     robot_command("table", "print the DH table", "Print the robot's DH table in its convention's column order; "
@@ -56,13 +63,37 @@ def build_parser() -> argparse.ArgumentParser:
     fk.add_argument("--from", dest="start", metavar="F", help="start frame (default: base, else 0)")
     fk.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else n)")
     fk.add_argument("--raw", action="store_true", help="the plain product, without simplification")
+    for extension in EXTENSIONS:
+        extension.add_parser(commands)
     return parser
+
+
+def add_common_options(sub: argparse.ArgumentParser) -> None:
+    """Options every command that reads a robot shares."""
+    sub.add_argument("--timeout", type=_seconds, default=60.0, metavar="SECONDS",
+                     help="simplification budget per result; past it the raw product is printed (default 60)")
+
+
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of seconds") from None
+    if not 0 < value < 1e6:
+        raise argparse.ArgumentTypeError("the timeout must be a positive number of seconds")
+    return value
 
 
 def main(argv=None) -> int:
     try:
         args = build_parser().parse_args(argv)
-        return _dispatch(args)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", SimplificationTimeout)
+            status = _dispatch(args)
+        for warning in caught:
+            if issubclass(warning.category, SimplificationTimeout):
+                print(f"dhsym: warning: {warning.message}", file=sys.stderr)
+        return status
     except UserError as error:
         print(f"dhsym: error: {error}", file=sys.stderr)
         return EXIT_USER_ERROR
@@ -80,10 +111,14 @@ def _dispatch(args) -> int:
         _print_list()
         return 0
     robot = load(args.robot)
+    robot.chain.timeout = args.timeout
     for warning in robot.warnings:
         print(f"dhsym: warning: {warning}", file=sys.stderr)
-    output = {"table": _table, "links": _links, "fk": _fk}[args.command](robot, args)
-    sys.stdout.write(output if output.endswith("\n") else output + "\n")
+    commands = {"table": _table, "links": _links, "fk": _fk}
+    commands.update({extension.NAME: extension.run for extension in EXTENSIONS})
+    output = commands[args.command](robot, args)
+    if output is not None:
+        sys.stdout.write(output if output.endswith("\n") else output + "\n")
     return 0
 
 

@@ -1,0 +1,53 @@
+"""Writing result files atomically: a temporary file beside the target, then a rename.
+
+A failure at any point leaves either the old file or no file, never half of a new one.
+
+>>> import tempfile, os
+>>> folder = tempfile.mkdtemp()
+>>> write_atomic(os.path.join(folder, "T.tex"), "x")
+>>> open(os.path.join(folder, "T.tex")).read()
+'x'
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+from .errors import Location, UserError
+
+
+def write_atomic(path, data: str | bytes, inputs=()) -> None:
+    """Write `data` to `path`; refuse to overwrite any of the `inputs` files."""
+    target = Path(path)
+    for source in inputs:
+        try:
+            if Path(source).exists() and target.exists() and os.path.samefile(source, target):
+                raise UserError("refusing to overwrite the input file with the output", Location(str(target)))
+        except OSError:
+            pass
+    folder = target.parent if str(target.parent) else Path(".")
+    if not folder.is_dir():
+        raise UserError(f"folder {str(folder)!r} does not exist", Location(str(target)))
+    binary = isinstance(data, bytes)
+    try:
+        handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
+    except OSError as exc:
+        raise UserError(f"cannot write here: {exc.strerror}", Location(str(target))) from None
+    try:
+        with os.fdopen(handle, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as stream:
+            stream.write(data)
+        os.replace(temporary, target)
+    except OSError as exc:
+        _remove_quietly(temporary)
+        raise UserError(f"cannot write file: {exc.strerror}", Location(str(target))) from None
+    except BaseException:
+        _remove_quietly(temporary)
+        raise
+
+
+def _remove_quietly(path) -> None:
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
