@@ -20,7 +20,7 @@ import warnings
 from .budget import BudgetExceeded, SimplificationTimeout, time_budget
 from .errors import UserError
 from .simplify import contract
-from .transforms import CONVENTIONS, Step, inverse_transform, link_steps, product
+from .transforms import CONVENTIONS, Step, as_expr, inverse_transform, link_steps, product
 
 Frame = int | str  # 0..n, or "base" / "tool"
 Simplifier = Callable[[Sequence[Step], frozenset], sympy.Matrix]
@@ -49,7 +49,7 @@ class DHRow:
 
     @classmethod
     def _make(cls, joint, theta, d, a, alpha, variable, moving) -> "DHRow":
-        theta, d, a, alpha, moving = (sympy.sympify(x) for x in (theta, d, a, alpha, moving))
+        theta, d, a, alpha, moving = (as_expr(x) for x in (theta, d, a, alpha, moving))
         if variable is None:
             free = sorted(moving.free_symbols, key=str)
             field_name = "theta" if joint == "R" else "d"

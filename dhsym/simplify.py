@@ -74,8 +74,8 @@ def keeps_z_axis(step: Step) -> bool:
 
 def _half_turns(angle) -> int | None:
     """k if angle = kπ exactly, else None."""
-    ratio = sympy.nsimplify(angle / sympy.pi) if angle.is_number else None
-    return int(ratio) if ratio is not None and ratio.is_Integer else None
+    ratio = angle / sympy.pi
+    return int(ratio) if ratio.is_Integer else None
 
 
 def split_into_blocks(steps) -> list[Block]:

@@ -27,6 +27,11 @@ class Step:
     kind: str
     value: sympy.Expr
 
+    def __post_init__(self):
+        if self.kind not in STEP_KINDS:
+            raise ValueError(f"unknown step {self.kind!r}; use one of {', '.join(STEP_KINDS)}")
+        object.__setattr__(self, "value", as_expr(self.value))
+
     @property
     def axis(self) -> int:
         return "xyz".index(self.kind[1])
@@ -43,6 +48,17 @@ class Step:
 
     def __str__(self) -> str:
         return f"{self.kind}({self.value})"
+
+
+def as_expr(value) -> sympy.Expr:
+    """A SymPy number or expression; text must go through dhsym.expr.parse_expression instead.
+
+    >>> as_expr(2), as_expr(sympy.pi)
+    (2, pi)
+    """
+    if isinstance(value, str):
+        raise TypeError("pass text through dhsym.parse_expression, not directly")
+    return sympy.sympify(value, strict=True)
 
 
 def rotation(axis: int, angle: sympy.Expr) -> sympy.Matrix:

@@ -49,17 +49,23 @@ def algebraically_equal(a, b) -> bool:
 
 
 def numeric_error(a, b, trials: int = 12, seed: int = 0) -> float:
-    """The largest |a − b| at random values of every symbol (angles and lengths alike)."""
-    difference = sympy.sympify(a) - sympy.sympify(b)
-    symbols = sorted(difference.free_symbols, key=lambda s: s.name)
-    if not symbols:
-        return float(abs(sympy.N(difference)))
+    """The largest |a − b| at random values of every symbol (angles and lengths alike);
+    a and b may be expressions or matrices of the same shape."""
+    differences = _elements(a) if b is None else [x - y for x, y in zip(_elements(a), _elements(b))]
+    symbols = sorted(set().union(*(d.free_symbols for d in differences)), key=lambda s: s.name)
     rng = random.Random(seed)
-    function = sympy.lambdify(symbols, difference, modules="math")
+    function = sympy.lambdify(symbols, differences, modules="math")
     worst = 0.0
-    for _ in range(trials):
-        worst = max(worst, abs(function(*[rng.uniform(-3.0, 3.0) for _ in symbols])))
+    for _ in range(trials if symbols else 1):
+        values = function(*[rng.uniform(-3.0, 3.0) for _ in symbols])
+        worst = max([worst] + [abs(complex(v)) for v in values])
     return worst
+
+
+def _elements(x) -> list:
+    if isinstance(x, sympy.MatrixBase):
+        return list(x)
+    return [sympy.sympify(x)]
 
 
 def check(a, b, tolerance: float = 1e-9, trials: int = 12) -> Verdict:
