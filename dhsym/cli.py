@@ -12,6 +12,7 @@ import json
 import sys
 import warnings
 
+from . import plot
 from . import render
 from .errors import UserError
 from .budget import SimplificationTimeout
@@ -20,7 +21,7 @@ from .printing import LatexPrinter
 
 # Subcommands that live in their own modules: each has NAME, add_parser(commands) and
 # run(robot, args) -> str | None (None when it wrote its own output file).
-EXTENSIONS: tuple = ()
+EXTENSIONS: tuple = (plot,)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70

@@ -1,0 +1,154 @@
+"""Pictures: numeric frame poses equal the symbolic kinematics; drawings and the `plot` command."""
+import shutil
+
+import matplotlib
+import numpy as np
+import pytest
+import sympy
+from matplotlib.colors import to_rgb
+from matplotlib.figure import Figure
+
+from dhsym import Chain, DHRow, plot
+from dhsym.cli import main
+from dhsym.errors import UserError
+from dhsym.library import ROBOTS_DIR, load
+
+matplotlib.use("Agg")
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+def _origins(robot, values):
+    return {frame: pose[:3, 3] for frame, pose in plot.frame_poses(robot, values)}
+
+
+def test_planar2r_origins_are_the_hand_computed_ones():
+    origins = _origins(load("planar2r"), {"theta_1": "30deg", sympy.Symbol("theta_2", real=True): sympy.pi / 3})
+    elbow = 0.5 * np.array([np.cos(np.pi / 6), np.sin(np.pi / 6), 0])
+    assert np.allclose(origins[0], 0)
+    assert np.allclose(origins[1], elbow)
+    assert np.allclose(origins[2], elbow + 0.4 * np.array([0, 1, 0]))  # θ1 + θ2 = 90°
+
+
+@pytest.mark.parametrize("name", ["puma560", "stanford", "fourbar_right", "planar3r"])
+def test_every_pose_equals_the_symbolic_transform(name):
+    robot = load(name)
+    rng = np.random.default_rng(7)
+    angles = {v: float(rng.uniform(-2, 2)) for v in robot.chain.joint_variables}
+    numbers = {**{s: float(v) for s, v in robot.sample.items()}, **angles}
+    for frame, pose in plot.frame_poses(robot, angles):
+        exact = robot.chain.transform(robot.chain.first_frame, frame, raw=True).xreplace(numbers)
+        assert np.allclose(pose, np.array(exact.evalf(), dtype=float)), frame
+
+
+def test_missing_and_unknown_symbols_are_user_errors():
+    a_1, l_1, theta_1 = sympy.symbols("a_1 l_1 theta_1", real=True)
+    arm = Chain([DHRow.revolute(theta_1, a=a_1)], "standard")  # a chain has no sample values
+    assert plot.frame_poses(arm, {"a_1": 2})[-1][1][0, 3] == pytest.approx(2)  # joint variable defaults to 0
+    with pytest.raises(UserError, match="no value for a_1"):
+        plot.frame_poses(arm, {theta_1: 1})
+    with pytest.raises(UserError, match="l_1 is not a symbol.*a_1, theta_1"):
+        plot.frame_poses(arm, {l_1: 1, "a_1": 1})
+
+
+def test_planar_arms_are_recognised_numerically():
+    assert plot.is_planar(load("planar3r"), {"theta_2": 1})
+    assert not plot.is_planar(load("scara"))  # all axes parallel, but the prismatic joint leaves the plane
+    assert not plot.is_planar(load("spatial3r"))
+
+
+def test_planar3r_is_drawn_flat_and_puma560_in_equal_3d():
+    assert plot.draw(load("planar3r"), ax=Figure()).name == "rectilinear"
+    ax = plot.draw(load("puma560"), {"theta_2": "-30deg"}, ax=Figure())
+    assert ax.name == "3d"
+    spans = [np.ptp(limits) for limits in (ax.get_xlim(), ax.get_ylim(), ax.get_zlim())]
+    assert np.allclose(spans, spans[0])
+    assert np.allclose(ax.get_box_aspect() / ax.get_box_aspect()[0], 1)
+
+
+def _artists(ax, prefix):
+    return [a for a in ax.get_children() if (a.get_gid() or "").startswith(prefix)]
+
+
+def _colour(artist):
+    if hasattr(artist, "arrow_patch"):
+        return to_rgb(artist.arrow_patch.get_edgecolor())
+    return to_rgb(np.atleast_2d(artist.get_color())[0] if hasattr(artist, "get_segments") else artist.get_color())
+
+
+@pytest.mark.parametrize("name", ["planar2r", "spatial3r"])
+def test_triads_are_red_green_blue(name):
+    ax = plot.draw(load(name), {"theta_1": 0.3}, ax=Figure())
+    for channel, letter in enumerate("xyz"):
+        artists = _artists(ax, f"{letter} axis")
+        assert artists, letter
+        for artist in artists:
+            rgb = _colour(artist)
+            assert rgb[channel] == max(rgb) and rgb[channel] > 0.4, (letter, rgb)
+
+
+def test_frames_sharing_an_origin_and_axis_share_one_labelled_arrow():
+    ax = plot.draw(load("planar3r"), ax=Figure())  # frames 0 and 1 coincide at θ1 = 0
+    labels = [t.get_text() for t in ax.texts if t.get_text()]
+    assert "$x_{0,1}$" in labels and "$x_{0}$" not in labels
+    assert not plot.draw(load("planar3r"), ax=Figure(), show_frames=False).texts
+
+
+def test_joints_are_circles_and_squares():
+    ax = plot.draw(load("scara"), ax=Figure())
+    assert [a.get_marker() for a in _artists(ax, "R joint")] == ["o", "o", "o"]
+    assert [a.get_marker() for a in _artists(ax, "P joint")] == ["s"]
+
+
+def test_fourbar_loop_closes_and_is_drawn_with_its_cut_joint():
+    left, right = load("fourbar_left"), load("fourbar_right")
+    left_values, right_values = plot.close_loop(left, right, {"phi_1": "120deg"}, ["theta_1", "phi_2"],
+                                                guess={"theta_1": 1, "phi_2": -1})
+    assert np.allclose(plot.frame_poses(left, left_values)[-1][1][:3, 3],
+                       plot.frame_poses(right, right_values)[-1][1][:3, 3])
+    ax = plot.draw_closed([(left, left_values, "black", "left"), (right, right_values, "brown", "right")], ax=Figure())
+    assert ax.name == "rectilinear"
+    assert len(_artists(ax, "R joint")) == 4  # left 2, right 1, and the cut joint
+    assert "$x_{LT}$" in [t.get_text() for t in ax.texts]
+    with pytest.raises(UserError, match="does not close"):
+        plot.close_loop(left, right, {"phi_1": 0}, ["theta_1", "phi_2"])  # the rocker cannot reach 0°
+
+
+def test_save_writes_png_and_never_over_an_input(tmp_path):
+    ax = plot.draw(load("planar2r"), ax=Figure())
+    plot.save(ax, tmp_path / "arm.png")
+    assert (tmp_path / "arm.png").read_bytes().startswith(PNG_MAGIC)
+    with pytest.raises(UserError, match="refusing to overwrite"):
+        plot.save(ax.figure, tmp_path / "arm.png", inputs=[tmp_path / "arm.png"])
+
+
+def test_cli_writes_png_to_the_robot_name_by_default(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    assert main(["plot", "planar2r", "--q", "theta_1=30deg", "theta_2=-pi/4", "--set", "a_1=1"]) == 0
+    assert capsys.readouterr().out.strip() == "planar2r.png"
+    assert (tmp_path / "planar2r.png").read_bytes().startswith(PNG_MAGIC)
+
+
+@pytest.mark.parametrize("arguments, message", [
+    (["--q", "theta_1=30dg"], "--q 'theta_1=30dg': cannot read expression"),
+    (["--q", "l_9=1"], "no symbol l_9; its symbols are a_1, a_2, theta_1, theta_2"),
+    (["--set", "theta_1=1"], "theta_1 is a joint variable; use --q"),
+    (["--q", "theta_1"], "expected NAME=EXPR"),
+    (["--q", "theta_1=a_1"], "must be a number"),
+    (["-o", "arm.jpg"], "cannot write .jpg"),
+])
+def test_cli_bad_values_give_one_error_line_and_exit_2(arguments, message, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    assert main(["plot", "planar2r", *arguments]) == 2
+    error = capsys.readouterr().err
+    assert error.count("\n") == 1 and error.startswith("dhsym: error: ") and message in error
+    assert not list(tmp_path.iterdir())
+
+
+def test_cli_refuses_to_overwrite_the_robot_file(tmp_path, capsys):
+    robot_file = tmp_path / "arm.png"  # an odd name for a robot file, but a readable one
+    shutil.copy(ROBOTS_DIR / "planar2r.yaml", robot_file)
+    before = robot_file.read_bytes()
+    assert main(["plot", str(robot_file), "-o", str(tmp_path / "picture.png")]) == 0
+    assert main(["plot", str(robot_file), "--3d", "-o", str(robot_file)]) == 2
+    assert "refusing to overwrite" in capsys.readouterr().err
+    assert robot_file.read_bytes() == before
