@@ -26,6 +26,9 @@ test: install tex
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py
 
+notebooks: install
+	bash scripts/export-notebooks.sh
+
 lint: install
 	$(BIN)/ruff check dhsym tests benchmarks
 
