@@ -98,3 +98,14 @@ def test_simplification_strategy_is_injectable():
     chain = Chain([DHRow.revolute(th, a=a)], "standard", simplifier=plain)
     chain.fk()
     assert calls == [4]
+
+
+def test_lecture_planar3r_in_standard_convention_gives_the_same_tool_pose():
+    # Lecture 000 writes the planar 3R in Craig's modified convention with a tool frame Tx(l3);
+    # Spong's standard table (θi, 0, li, 0) puts frame 3 at the tool point directly.
+    modified = load("planar3r").chain
+    thetas = modified.joint_variables
+    lengths = sympy.symbols("l_1 l_2 l_3", real=True)
+    standard = Chain([DHRow.revolute(t, a=l) for t, l in zip(thetas, lengths)], "standard")
+    assert check(standard.fk(), modified.fk())
+    assert standard.fk() == modified.fk()  # the same textbook form, not only the same value
