@@ -1,12 +1,19 @@
-"""A time budget for simplification, so a huge chain prints its raw product instead of hanging.
+"""Time budgets: one per simplification, so a huge chain prints its raw product instead of
+hanging, and one for a whole command, so that nothing (printing included) runs for hours.
 
 >>> with time_budget(5):
 ...     pass
+>>> with time_budget(0.05, CommandTooSlow):
+...     while True:
+...         pass
+Traceback (most recent call last):
+dhsym.budget.CommandTooSlow
 """
 from __future__ import annotations
 
 import signal
 import threading
+import time
 from contextlib import contextmanager
 
 
@@ -15,20 +22,37 @@ class BudgetExceeded(BaseException):
     `except Exception` inside SymPy can swallow it)."""
 
 
+class CommandTooSlow(BaseException):
+    """Raised when a whole command is over its budget; a separate class, so that the
+    simplification fallback (which catches BudgetExceeded) cannot swallow it."""
+
+
 class SimplificationTimeout(UserWarning):
     """Warned when a result is returned unsimplified because its budget ran out."""
 
 
 @contextmanager
-def time_budget(seconds: float | None):
-    """Raise BudgetExceeded in the block after `seconds`; no limit for None or off the main thread."""
+def time_budget(seconds: float | None, exception: type = BudgetExceeded):
+    """Raise `exception` in the block after `seconds`; no limit for None or off the main thread.
+
+    Uses SIGALRM, so it interrupts Python code (SymPy's included) but not one long call into C.
+    A timer that was already running (an outer budget, a test's watchdog) is put back
+    afterwards with the time it has left; if it would fire first, it stays in charge.
+    """
+    if seconds is not None and seconds < 0:
+        raise ValueError("a time budget must be positive (or None for no limit)")
     if not seconds or threading.current_thread() is not threading.main_thread():
         yield
         return
+    outer_delay, outer_interval = signal.getitimer(signal.ITIMER_REAL)
+    if outer_delay and outer_delay <= seconds:
+        yield  # the outer timer fires first and keeps its own handler
+        return
 
     def expire(signum, frame):
-        raise BudgetExceeded()
+        raise exception()
 
+    started = time.monotonic()
     previous = signal.signal(signal.SIGALRM, expire)
     signal.setitimer(signal.ITIMER_REAL, seconds)
     try:
@@ -36,3 +60,6 @@ def time_budget(seconds: float | None):
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+        if outer_delay:
+            left = max(outer_delay - (time.monotonic() - started), 1e-3)
+            signal.setitimer(signal.ITIMER_REAL, left, outer_interval)

@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import warnings
 
 from . import plot
 from . import render
 from .errors import UserError
-from .budget import SimplificationTimeout
+from .budget import CommandTooSlow, SimplificationTimeout, time_budget
 from .library import builtin_names, load
 from .printing import LatexPrinter
 
@@ -25,6 +26,8 @@ EXTENSIONS: tuple = (plot,)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70
+COMMAND_BUDGET_FACTOR = 5  # times --timeout, for everything a command does (printing too)
+EXIT_BROKEN_PIPE = 141  # what a shell reports for a tool stopped by SIGPIPE
 ISSUE_URL = "the dhsym issue tracker"
 
 
@@ -72,7 +75,8 @@ def build_parser() -> argparse.ArgumentParser:
 def add_common_options(sub: argparse.ArgumentParser) -> None:
     """Options every command that reads a robot shares."""
     sub.add_argument("--timeout", type=_seconds, default=60.0, metavar="SECONDS",
-                     help="simplification budget per result; past it the raw product is printed (default 60)")
+                     help="simplification budget per result; past it the raw product is printed (default 60). "
+                          f"A whole command stops with an error after {COMMAND_BUDGET_FACTOR} times this")
 
 
 def _seconds(text: str) -> float:
@@ -88,23 +92,47 @@ def _seconds(text: str) -> float:
 def main(argv=None) -> int:
     try:
         args = build_parser().parse_args(argv)
-        with warnings.catch_warnings(record=True) as caught:
+        with warnings.catch_warnings(record=True) as caught, time_budget(_command_budget(args), CommandTooSlow):
             warnings.simplefilter("always", SimplificationTimeout)
             status = _dispatch(args)
         for warning in caught:
             if issubclass(warning.category, SimplificationTimeout):
-                print(f"dhsym: warning: {warning.message}", file=sys.stderr)
+                print(f"dhsym: warning: {_printable(str(warning.message))}", file=sys.stderr)
         return status
     except UserError as error:
-        print(f"dhsym: error: {error}", file=sys.stderr)
+        print(f"dhsym: error: {_printable(str(error))}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except CommandTooSlow:
+        print(f"dhsym: error: {_printable(args.robot)}: gave up after {_command_budget(args):g} s; the result is "
+              f"too large to work out and print (ask for part of the chain with --from/--to, or raise --timeout)",
+              file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt:
         print("dhsym: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:  # `dhsym fk puma560 | head`: the reader left; stop quietly, like a shell tool
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return EXIT_BROKEN_PIPE
+    except UnicodeEncodeError as error:
+        print(f"dhsym: error: the output cannot be written as {error.encoding}; use --ascii, or set "
+              f"PYTHONIOENCODING=utf-8", file=sys.stderr)
+        return EXIT_USER_ERROR
     except Exception as error:  # a bug in dhsym, not the user's fault
-        print(f"dhsym: internal error: {type(error).__name__}: {error}\n"
-              f"This is a bug in dhsym. Please report it on {ISSUE_URL} with the command you ran.", file=sys.stderr)
+        print(f"dhsym: internal error: {type(error).__name__}: {_printable(str(error))[:300]}\n"
+              f"This is a bug in dhsym, not a mistake in your input. Please report it on {ISSUE_URL} "
+              f"with the command you ran and the robot file.", file=sys.stderr)
         return EXIT_INTERNAL_ERROR
+
+
+def _command_budget(args) -> float | None:
+    """A whole command may take this long; simplification alone gets --timeout per result."""
+    timeout = getattr(args, "timeout", None)
+    return COMMAND_BUDGET_FACTOR * timeout if timeout else None
+
+
+def _printable(message: str) -> str:
+    """One line whatever the message quotes: line breaks and control characters are escaped."""
+    return "".join(ch if ch.isprintable() else ascii(ch)[1:-1] for ch in message)
 
 
 def _dispatch(args) -> int:
@@ -114,7 +142,7 @@ def _dispatch(args) -> int:
     robot = load(args.robot)
     robot.chain.timeout = args.timeout
     for warning in robot.warnings:
-        print(f"dhsym: warning: {warning}", file=sys.stderr)
+        print(f"dhsym: warning: {_printable(warning)}", file=sys.stderr)
     commands = {"table": _table, "links": _links, "fk": _fk}
     commands.update({extension.NAME: extension.run for extension in EXTENSIONS})
     output = commands[args.command](robot, args)
@@ -131,10 +159,19 @@ def _print_list() -> None:
         print(f"{'':<{width}}  source: {robot.source}")
 
 
-def _frame(text, default):
+def _frame(text, chain, default):
+    """The frame a --from/--to value names (0..n, base, tool), or a UserError listing the frames."""
     if text is None:
         return default
-    return int(text) if text.lstrip("-").isdigit() else text
+    wanted = text.strip().lower()
+    if wanted.isascii() and wanted.lstrip("+").isdigit() and len(wanted) < 6:
+        wanted = str(int(wanted))  # "03" and "+3" are frame 3
+    for frame in chain.frames:
+        if wanted == str(frame):
+            return frame
+    shown = text if len(text) <= 20 else text[:20] + "..."
+    shown = shown if shown.lstrip("-").isascii() and shown.lstrip("-").isdigit() else repr(shown)
+    raise UserError(f"no frame {shown} in this robot; frames are {', '.join(map(str, chain.frames))}")
 
 
 def _header(robot, what: str, ascii: bool) -> str:
@@ -161,7 +198,7 @@ def _links(robot, args) -> str:
 
 def _fk(robot, args) -> str:
     chain = robot.chain
-    start, end = _frame(args.start, chain.first_frame), _frame(args.end, chain.last_frame)
+    start, end = _frame(args.start, chain, chain.first_frame), _frame(args.end, chain, chain.last_frame)
     return _results(robot, [(start, end, chain.transform(start, end, raw=args.raw))], args)
 
 

@@ -7,6 +7,7 @@ True
 """
 from __future__ import annotations
 
+import difflib
 from pathlib import Path
 
 from .errors import UserError
@@ -20,10 +21,20 @@ def builtin_names() -> list[str]:
 
 
 def load(name_or_path: str) -> Robot:
-    """A built-in robot by name, or a robot file by path."""
-    path = Path(name_or_path)
-    if name_or_path in builtin_names():
+    """A built-in robot by name, or a robot file by path.
+
+    >>> load("puma")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    dhsym.errors.UserError: unknown robot 'puma'; built-in robots are: ..., ur5; did you mean 'puma560'?
+    """
+    names = builtin_names()
+    if name_or_path in names:
         return load_robot_file(ROBOTS_DIR / f"{name_or_path}.yaml")
-    if path.suffix in (".yaml", ".yml") or path.exists() or "/" in name_or_path:
+    path = Path(name_or_path)
+    if name_or_path.strip() and (path.suffix in (".yaml", ".yml") or path.exists() or "/" in name_or_path):
         return load_robot_file(path)
-    raise UserError(f"unknown robot {name_or_path!r}; built-in robots are: {', '.join(builtin_names())}")
+    hint = difflib.get_close_matches(name_or_path.lower(), names, n=1, cutoff=0.5)
+    if not hint:
+        hint = [name for name in names if name_or_path and name.startswith(name_or_path.lower())][:1]
+    suggestion = f"; did you mean {hint[0]!r}?" if hint else ""
+    raise UserError(f"unknown robot {name_or_path!r}; built-in robots are: {', '.join(names)}{suggestion}")

@@ -37,6 +37,9 @@ def write_atomic(path, data: str | bytes, inputs=()) -> None:
     try:
         with os.fdopen(handle, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as stream:
             stream.write(data)
+            stream.flush()
+            os.fsync(stream.fileno())  # the bytes are on disk before the name points at them
+        os.chmod(temporary, _mode_for(target))
         os.replace(temporary, target)
     except OSError as exc:
         _remove_quietly(temporary)
@@ -44,6 +47,16 @@ def write_atomic(path, data: str | bytes, inputs=()) -> None:
     except BaseException:
         _remove_quietly(temporary)
         raise
+
+
+def _mode_for(target: Path) -> int:
+    """The existing file's permissions, else the usual ones (mkstemp alone would give 0600)."""
+    try:
+        return target.stat().st_mode & 0o7777
+    except OSError:
+        mask = os.umask(0)
+        os.umask(mask)
+        return 0o666 & ~mask
 
 
 def _remove_quietly(path) -> None:

@@ -1,7 +1,10 @@
 """Robot files: YAML in, a validated `Robot` out, with every mistake placed at FILE:LINE:COL.
 
-The YAML is composed with the safe loader into nodes (which keep their line and column)
-and read by hand: no Python objects are ever constructed from tags, and aliases are refused.
+The YAML is composed (never constructed) with the safe loader into nodes, which keep their
+line and column, and read by hand: no Python object is ever built from a tag. Tags, aliases,
+more than one document, deep nesting and huge node counts are refused while composing, so
+a hostile file costs little. Limits: 1 MiB per file, 24 joints, 10 levels of nesting,
+20,000 YAML values, 200 characters per expression (see dhsym.expr).
 
 >>> robot = load_robot_text('''
 ... name: two-link arm
@@ -12,6 +15,9 @@ and read by hand: no Python objects are ever constructed from tags, and aliases 
 ... ''', "arm.yaml")
 >>> robot.chain.fk()[0, 3]
 l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2)
+>>> load_robot_text("convention: standard\\njoints: [{joint: R, alpah: 0}]", "arm.yaml")
+Traceback (most recent call last):
+dhsym.errors.UserError: arm.yaml:2:21: unknown key 'alpah' in joint row 1; did you mean 'alpha'?
 """
 from __future__ import annotations
 
@@ -29,10 +35,13 @@ from .transforms import CONVENTIONS, STEP_KINDS, Step
 
 MAX_FILE_BYTES = 1 << 20
 MAX_JOINTS = 24
+MAX_YAML_DEPTH = 10  # a robot file needs 3 (file, joints list, row)
+MAX_YAML_NODES = 20_000  # a 24-joint robot with notes needs a few hundred
 TOP_KEYS = ("name", "source", "convention", "joints", "base", "tool", "sample", "notes")
 ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 _DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
+_YAML_TAG = "tag:yaml.org,2002:"
 
 
 @dataclass
@@ -44,7 +53,7 @@ class Robot:
     chain: Chain
     source: str = ""
     notes: str = ""
-    sample: dict = field(default_factory=dict)  # constant symbol -> exact number, for pictures
+    sample: dict = field(default_factory=dict)  # symbol -> exact number, for pictures
     path: str = "<robot>"
     warnings: list = field(default_factory=list)  # strings "FILE:LINE:COL: message"
 
@@ -54,20 +63,29 @@ def load_robot_file(path: str | Path) -> Robot:
     path = Path(path)
     where = Location(str(path))
     try:
-        size = path.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise UserError(f"file is {size} bytes; robot files are limited to {MAX_FILE_BYTES}", where)
+        if path.is_dir():
+            raise UserError("is a folder, not a robot file", where)
         with path.open("rb") as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)
+            data = handle.read(MAX_FILE_BYTES + 1)  # never more than the limit, whatever stat says
     except OSError as exc:
         raise UserError(f"cannot read file: {exc.strerror or exc}", where) from None
     if len(data) > MAX_FILE_BYTES:
-        raise UserError(f"file is larger than {MAX_FILE_BYTES} bytes", where)
+        raise UserError(f"file is larger than {MAX_FILE_BYTES // (1 << 20)} MiB, the limit for robot files",
+                        Location(str(path), 1, 1))
+    return load_robot_text(decode_utf8(data, str(path)), str(path))
+
+
+def decode_utf8(data: bytes, filename: str) -> str:
+    """The text of a file, or a UserError at the line and column of the first bad byte."""
     try:
-        text = data.decode("utf-8")
+        return data.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise UserError(f"file is not UTF-8 text (bad byte at offset {exc.start})", where) from None
-    return load_robot_text(text, str(path))
+        before = data[:exc.start].decode("utf-8", errors="replace")
+        line = before.count("\n") + 1
+        column = len(before) - (before.rfind("\n") + 1) + 1
+        hint = "it looks like UTF-16; " if data[:2] in (b"\xff\xfe", b"\xfe\xff") else ""
+        raise UserError(f"file is not UTF-8 text (byte 0x{data[exc.start]:02X}); {hint}save it as UTF-8",
+                        Location(filename, line, column)) from None
 
 
 def load_robot_text(text: str, filename: str = "<robot>") -> Robot:
@@ -75,23 +93,91 @@ def load_robot_text(text: str, filename: str = "<robot>") -> Robot:
 
 
 def _compose(text: str, filename: str) -> yaml.Node:
+    loader = None
     try:
-        for event in yaml.parse(text, Loader=yaml.SafeLoader):
-            if isinstance(event, yaml.AliasEvent):
-                raise UserError("YAML aliases (*name) are not allowed in robot files", _mark(filename, event.start_mark))
-        node = yaml.compose(text, Loader=yaml.SafeLoader)
+        loader = _GuardedLoader(text, filename)
+        node = loader.single_node()
+    except yaml.reader.ReaderError as exc:
+        line = text.count("\n", 0, exc.position) + 1
+        column = exc.position - (text.rfind("\n", 0, exc.position) + 1) + 1
+        character = exc.character if isinstance(exc.character, str) else chr(exc.character)
+        raise UserError(f"character U+{ord(character):04X} is not allowed in a robot file",
+                        Location(filename, line, column)) from None
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
-        raise UserError(f"YAML syntax error: {exc.problem or exc.context}", _mark(filename, mark)) from None
+        raise UserError(f"YAML syntax error: {_yaml_problem(exc)}", _mark(filename, mark)) from None
     except yaml.YAMLError as exc:
-        raise UserError(f"YAML error: {exc}", Location(filename)) from None
+        raise UserError(f"YAML error: {_one_line(str(exc))}", Location(filename, 1, 1)) from None
+    finally:
+        if loader is not None:
+            loader.dispose()
     if node is None:
         raise UserError("file is empty; expected a robot description", Location(filename, 1, 1))
     return node
 
 
+def _yaml_problem(exc: yaml.MarkedYAMLError) -> str:
+    problem = _one_line(exc.problem or exc.context or "unreadable YAML")
+    if "'\\t'" in problem:
+        return "a tab character; YAML indentation must use spaces"
+    return problem
+
+
+def _one_line(message: str) -> str:
+    return " ".join(message.split())
+
+
+class _GuardedLoader(yaml.SafeLoader):
+    """The safe loader's composer, refusing aliases, tags, deep nesting and too many nodes.
+
+    The checks run as each node is composed, before any recursion into it, so a hostile
+    file is refused after reading only as much of it as the first offence.
+    """
+
+    def __init__(self, text: str, filename: str):
+        super().__init__(text)
+        self.filename, self.depth, self.count = filename, 0, 0
+
+    def single_node(self) -> yaml.Node | None:
+        """The one document's root node; a second document is a mistake, not ignored."""
+        self.get_event()  # stream start
+        root = None if self.check_event(yaml.StreamEndEvent) else self.compose_document()
+        if not self.check_event(yaml.StreamEndEvent):
+            raise UserError("a robot file holds one YAML document, but a second one starts here",
+                            _mark(self.filename, self.peek_event().start_mark))
+        return root
+
+    def compose_node(self, parent, index):
+        event = self.peek_event()
+        where = _mark(self.filename, event.start_mark)
+        if isinstance(event, yaml.AliasEvent):
+            raise UserError("YAML aliases (*name) are not allowed in robot files", where)
+        tag = getattr(event, "tag", None)
+        if tag is not None:
+            shown = "!!" + tag[len(_YAML_TAG):] if tag.startswith(_YAML_TAG) else tag
+            raise UserError(f"YAML tags ({shown}) are not allowed in robot files", where)
+        self.count += 1
+        if self.count > MAX_YAML_NODES:
+            raise UserError(f"more than {MAX_YAML_NODES} YAML values; this is not a robot file", where)
+        if self.depth >= MAX_YAML_DEPTH:
+            raise UserError(f"YAML nested deeper than {MAX_YAML_DEPTH} levels", where)
+        self.depth += 1
+        try:
+            return super().compose_node(parent, index)
+        finally:
+            self.depth -= 1
+
+
 def _mark(filename: str, mark) -> Location:
-    return Location(filename, mark.line + 1, mark.column + 1) if mark else Location(filename)
+    return Location(filename, mark.line + 1, mark.column + 1) if mark else Location(filename, 1, 1)
+
+
+def _suggestion(key: str, allowed) -> str:
+    """`; did you mean 'alpha'?` for a near miss, else the list of what is allowed."""
+    allowed = list(allowed)
+    same_but_case = [name for name in allowed if name.lower() == key.lower()]
+    hint = same_but_case or difflib.get_close_matches(key, allowed, n=1)
+    return f"; did you mean {hint[0]!r}?" if hint else f"; expected one of {', '.join(allowed)}"
 
 
 class _Reader:
@@ -106,17 +192,20 @@ class _Reader:
         quoted = isinstance(node, yaml.ScalarNode) and node.style in ("'", '"')
         return location.shifted(1) if quoted else location
 
-    def mapping(self, node: yaml.Node, what: str, allowed: tuple) -> dict:
+    def warn(self, node: yaml.Node, message: str) -> None:
+        self.warnings.append(f"{self.where(node)}: {message}")
+
+    def mapping(self, node: yaml.Node, what: str, allowed) -> dict:
         """A mapping's items as {key: (key node, value node)}, refusing unknown keys."""
         if not isinstance(node, yaml.MappingNode):
-            raise UserError(f"{what} must be a mapping of keys to values", self.where(node))
+            raise UserError(f"{what} must be a mapping of keys to values, not {_kind(node)}", self.where(node))
         items = {}
         for key_node, value_node in node.value:
-            key = key_node.value if isinstance(key_node, yaml.ScalarNode) else None
+            if not isinstance(key_node, yaml.ScalarNode):
+                raise UserError(f"keys in {what} must be plain names, not {_kind(key_node)}", self.where(key_node))
+            key = key_node.value
             if key not in allowed:
-                hint = difflib.get_close_matches(str(key), allowed, n=1)
-                suggestion = f"; did you mean {hint[0]!r}?" if hint else f"; expected one of {', '.join(allowed)}"
-                raise UserError(f"unknown key {key!r} in {what}{suggestion}", self.where(key_node))
+                raise UserError(f"unknown key {key!r} in {what}{_suggestion(key, allowed)}", self.where(key_node))
             if key in items:
                 raise UserError(f"key {key!r} appears twice in {what}", self.where(key_node))
             items[key] = (key_node, value_node)
@@ -124,141 +213,199 @@ class _Reader:
 
     def text(self, node: yaml.Node, what: str) -> str:
         if not isinstance(node, yaml.ScalarNode):
-            raise UserError(f"{what} must be a single value, not a list or mapping", self.where(node))
+            raise UserError(f"{what} must be a single value, not {_kind(node)}", self.where(node))
         return node.value
 
     def expression(self, node: yaml.Node, what: str) -> sympy.Expr:
-        return parse_expression(self.text(node, what), self.where(node))
+        """A field's value parsed as an expression; any mistake is reported with the field's name."""
+        value = self.text(node, what)
+        if node.style is None and node.tag == _YAML_TAG + "null":
+            raise UserError(f"{what} has no value", self.where(node))
+        if node.style is None and node.tag == _YAML_TAG + "bool":
+            raise UserError(f"{what}: {value!r} reads as a YAML true/false, not a number; quote it to "
+                            f"use it as a name", self.where(node))
+        try:
+            return parse_expression(value, self.where(node))
+        except UserError as error:
+            raise UserError(f"{what}: {error.message}", error.where) from None
+
+    def optional_text(self, top: dict, key: str, default: str) -> str:
+        if key not in top:
+            return default
+        node = top[key][1]
+        if isinstance(node, yaml.ScalarNode) and node.style is None and node.tag == _YAML_TAG + "null":
+            return default
+        return self.text(node, key)
 
     def sequence(self, node: yaml.Node, what: str) -> list:
-        if isinstance(node, yaml.ScalarNode) and node.tag.endswith(":null"):
+        if isinstance(node, yaml.ScalarNode) and node.tag == _YAML_TAG + "null":
             return []
         if not isinstance(node, yaml.SequenceNode):
-            raise UserError(f"{what} must be a list", self.where(node))
+            raise UserError(f"{what} must be a list, not {_kind(node)}", self.where(node))
         return node.value
 
     def robot(self, root: yaml.Node) -> Robot:
+        if not isinstance(root, yaml.MappingNode):
+            raise UserError(f"a robot file must be a mapping of keys (convention, joints, ...) to values, "
+                            f"not {_kind(root)}", self.where(root))
         top = self.mapping(root, "the robot file", TOP_KEYS)
-        for required in ("convention", "joints"):
-            if required not in top:
-                raise UserError(f"missing key {required!r} (standard or modified)" if required == "convention"
-                                else f"missing key {required!r}", self.where(root))
+        if "convention" not in top:
+            raise UserError("missing key 'convention' (standard or modified)", self.where(root))
+        if "joints" not in top:
+            raise UserError("missing key 'joints' (the list of DH rows)", self.where(root))
         convention_node = top["convention"][1]
         convention = self.text(convention_node, "convention").strip().lower()
         if convention not in CONVENTIONS:
-            raise UserError(f"unknown convention {convention!r}; use standard or modified", self.where(convention_node))
+            raise UserError(f"unknown convention {self.text(convention_node, 'convention')!r}; use standard or "
+                            f"modified", self.where(convention_node))
         joints_node = top["joints"][1]
         row_nodes = self.sequence(joints_node, "joints")
         if not row_nodes:
             raise UserError("joints is empty; a robot needs at least one joint", self.where(joints_node))
         if len(row_nodes) > MAX_JOINTS:
             raise UserError(f"{len(row_nodes)} joints; dhsym handles at most {MAX_JOINTS}", self.where(joints_node))
-        parsed = [self.row(node, number) for number, node in enumerate(row_nodes, 1)]
-        rows = [row for row, _ in parsed]
-        self.check_variables(rows, [moving for _, moving in parsed], row_nodes)
-        variables = {row.variable for row in rows}
+        rows = [self.row(node, number) for number, node in enumerate(row_nodes, 1)]
+        self.check_variables(rows)
+        dh_rows = [row.dh for row in rows]
+        variables = {row.variable for row in dh_rows}
         base = self.steps(top["base"][1], "base", variables) if "base" in top else []
         tool = self.steps(top["tool"][1], "tool", variables) if "tool" in top else []
-        name = self.text(top["name"][1], "name") if "name" in top else Path(self.filename).stem
+        chain = Chain(dh_rows, convention, base, tool)
         return Robot(
-            name=name, convention=convention, chain=Chain(rows, convention, base, tool),
-            source=self.text(top["source"][1], "source") if "source" in top else "",
-            notes=self.text(top["notes"][1], "notes") if "notes" in top else "",
-            sample=self.sample(top["sample"][1], variables) if "sample" in top else {},
+            name=self.optional_text(top, "name", Path(self.filename).stem), convention=convention, chain=chain,
+            source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""),
+            sample=self.sample(top["sample"][1], _symbols_of(chain)) if "sample" in top else {},
             path=self.filename, warnings=self.warnings,
         )
 
-    def row(self, node: yaml.Node, number: int) -> tuple[DHRow, yaml.Node]:
-        """One joint row, and the node of the field that holds its variable."""
+    def row(self, node: yaml.Node, number: int) -> "_Row":
+        """One joint row, checked field by field."""
         what = f"joint row {number}"
         items = self.mapping(node, what, ROW_KEYS)
         for key in ("joint", "alpha", "a", "d", "theta"):
             if key not in items:
                 raise UserError(f"{what} is missing {key!r}", self.where(node))
-        kind_node = items["joint"][1]
-        kind = _JOINT_TYPES.get(self.text(kind_node, "joint").strip().lower())
+        nodes = {key: value_node for key, (_, value_node) in items.items()}
+        kind = _JOINT_TYPES.get(self.text(nodes["joint"], f"{what} joint").strip().lower())
         if kind is None:
-            raise UserError(f"{what}: joint must be R (revolute) or P (prismatic)", self.where(kind_node))
-        values = {key: self.expression(items[key][1], f"{what} {key}") for key in ("alpha", "a", "d", "theta")}
-        self.warn_degrees(values["alpha"], items["alpha"][1], "alpha")
-        if kind == "R":
-            self.warn_degrees(values["theta"], items["theta"][1], "theta")
-        moving_key = "theta" if kind == "R" else "d"
-        moving_node = items[moving_key][1]
-        free = sorted(values[moving_key].free_symbols, key=str)
-        if "var" in items:
-            var_node = items["var"][1]
-            name = self.text(var_node, "var").strip()
-            match = [s for s in free if s.name == name]
-            if not match:
-                raise UserError(f"{what}: var {name!r} does not appear in {moving_key}", self.where(var_node))
-            variable = match[0]
-        elif len(free) == 1:
-            variable = free[0]
-        elif not free:
-            raise UserError(f"{what}: no joint variable; a {'revolute' if kind == 'R' else 'prismatic'} "
-                            f"joint needs a symbol in {moving_key}", self.where(moving_node))
-        else:
-            names = ", ".join(s.name for s in free)
-            raise UserError(f"{what}: {moving_key} has several symbols ({names}); name the joint variable "
-                            f"with var", self.where(moving_node))
-        if kind == "P" and values["theta"].free_symbols and "var" not in items:
-            raise UserError(f"{what}: a prismatic joint moves along d, but theta holds a variable "
-                            f"({values['theta']}); use joint: R or a constant theta", self.where(items["theta"][1]))
+            raise UserError(f"{what} joint: must be R (revolute) or P (prismatic), not "
+                            f"{nodes['joint'].value!r}", self.where(nodes["joint"]))
+        values = {key: self.expression(nodes[key], f"{what} {key}") for key in ("alpha", "a", "d", "theta")}
+        moving = "theta" if kind == "R" else "d"
+        variable = self.joint_variable(what, kind, values, nodes)
         for key in ("alpha", "a", "theta" if kind == "P" else "d"):
             if variable in values[key].free_symbols:
-                raise UserError(f"{what}: joint variable {variable} also appears in {key}", self.where(items[key][1]))
-        return DHRow(kind, values["theta"], values["d"], values["a"], values["alpha"], variable), moving_node
+                raise UserError(f"{what} {key}: joint variable {variable} also appears here; only {moving} "
+                                f"may hold it", self.where(nodes[key]))
+        self.warn_degrees(values["alpha"], nodes["alpha"], f"{what} alpha")
+        if kind == "R":
+            self.warn_degrees(values["theta"] - variable, nodes["theta"], f"{what} theta", offset=True)
+        else:
+            self.warn_degrees(values["theta"], nodes["theta"], f"{what} theta")
+        dh = DHRow(kind, values["theta"], values["d"], values["a"], values["alpha"], variable)
+        return _Row(number, dh, nodes)
 
-    def check_variables(self, rows: list[DHRow], moving_nodes: list, row_nodes: list) -> None:
+    def joint_variable(self, what: str, kind: str, values: dict, nodes: dict) -> sympy.Symbol:
+        """The one symbol of theta (revolute) or d (prismatic), or the one named by `var`."""
+        moving = "theta" if kind == "R" else "d"
+        free = sorted(values[moving].free_symbols, key=str)
+        if "var" in nodes:
+            name = self.text(nodes["var"], f"{what} var").strip()
+            match = [s for s in free if s.name == name]
+            if not match:
+                raise UserError(f"{what} var: {name!r} does not appear in {moving}", self.where(nodes["var"]))
+            return match[0]
+        if kind == "P" and values["theta"].free_symbols and not free:
+            names = ", ".join(sorted(map(str, values["theta"].free_symbols)))
+            raise UserError(f"{what} theta: holds {names}, but joint P (prismatic) moves along d, and d is "
+                            f"constant; write joint: R, or put the variable in d", self.where(nodes["theta"]))
+        if len(free) == 1:
+            return free[0]
+        if not free:
+            joint = "revolute" if kind == "R" else "prismatic"
+            raise UserError(f"{what} {moving}: no joint variable; a {joint} joint needs a symbol in {moving}",
+                            self.where(nodes[moving]))
+        names = ", ".join(s.name for s in free)
+        raise UserError(f"{what} {moving}: several symbols ({names}); name the joint variable with var",
+                        self.where(nodes[moving]))
+
+    def check_variables(self, rows: list["_Row"]) -> None:
         """Each joint variable belongs to one row and is no other row's constant."""
-        seen: dict = {}
-        for number, row in enumerate(rows, 1):
-            if row.variable in seen:
-                raise UserError(f"joint row {number}: joint variable {row.variable} is already the variable "
-                                f"of row {seen[row.variable]}", self.where(moving_nodes[number - 1]))
-            seen[row.variable] = number
-        variables = set(seen)
-        for number, row in enumerate(rows, 1):
-            constants = (row.a, row.alpha, row.d if row.joint == "R" else row.theta)
-            for value in constants:
-                clash = value.free_symbols & (variables - {row.variable})
-                if clash:
-                    raise UserError(f"joint row {number}: {sorted(map(str, clash))[0]} is another row's joint "
-                                    f"variable and cannot be a constant here", self.where(row_nodes[number - 1]))
+        owner: dict = {}
+        for row in rows:
+            moving = "theta" if row.dh.joint == "R" else "d"
+            if row.dh.variable in owner:
+                raise UserError(f"joint row {row.number} {moving}: joint variable {row.dh.variable} is already "
+                                f"the variable of joint row {owner[row.dh.variable]}", self.where(row.nodes[moving]))
+            owner[row.dh.variable] = row.number
+        for row in rows:
+            constants = ("alpha", "a", "d" if row.dh.joint == "R" else "theta")
+            for key in constants:
+                for symbol in sorted(getattr(row.dh, key).free_symbols, key=str):
+                    if symbol in owner and owner[symbol] != row.number:
+                        raise UserError(f"joint row {row.number} {key}: {symbol} is the joint variable of joint "
+                                        f"row {owner[symbol]} and cannot be a constant here",
+                                        self.where(row.nodes[key]))
 
-    def warn_degrees(self, value: sympy.Expr, node: yaml.Node, key: str) -> None:
-        if value.is_Integer and abs(int(value)) in _DEGREE_LOOKING:
-            self.warnings.append(f"{self.where(node)}: {key} {value} is taken as radians; "
-                                 f"write {value}deg if you meant degrees")
+    def warn_degrees(self, value: sympy.Expr, node: yaml.Node, what: str, offset: bool = False) -> None:
+        """Warn about an angle such as 90 that was almost certainly meant in degrees."""
+        constant = value.as_coeff_Add()[0] if value.is_Add else value
+        if constant.is_Integer and abs(int(constant)) in _DEGREE_LOOKING:
+            kind = "the offset " if offset or constant != value else ""
+            self.warn(node, f"{what}: {kind}{constant} is taken as radians; write {constant}deg if you meant degrees")
 
     def steps(self, node: yaml.Node, what: str, variables: set) -> list[Step]:
         steps = []
         for number, step_node in enumerate(self.sequence(node, what), 1):
-            items = self.mapping(step_node, f"{what} step {number}", STEP_KINDS)
+            step_what = f"{what} step {number}"
+            items = self.mapping(step_node, step_what, STEP_KINDS)
             if len(items) != 1:
-                raise UserError(f"{what} step {number} must have exactly one of {', '.join(STEP_KINDS)}",
-                                self.where(step_node))
+                raise UserError(f"{step_what} must have exactly one of {', '.join(STEP_KINDS)}, not "
+                                f"{len(items)}", self.where(step_node))
             (kind, (_, value_node)), = items.items()
-            value = self.expression(value_node, f"{what} step {number}")
+            value = self.expression(value_node, f"{step_what} {kind}")
             if value.free_symbols & variables:
-                raise UserError(f"{what} step {number} is fixed and cannot use a joint variable", self.where(value_node))
+                raise UserError(f"{step_what} {kind}: a fixed step cannot use a joint variable "
+                                f"({', '.join(sorted(map(str, value.free_symbols & variables)))})",
+                                self.where(value_node))
             if kind[0] == "R":
-                self.warn_degrees(value, value_node, kind)
+                self.warn_degrees(value, value_node, f"{step_what} {kind}")
             steps.append(Step(kind, value))
         return steps
 
-    def sample(self, node: yaml.Node, variables: set) -> dict:
+    def sample(self, node: yaml.Node, symbols: dict) -> dict:
+        """Numbers for the robot's symbols; a name the robot does not use is a typo."""
+        keys = [k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)] \
+            if isinstance(node, yaml.MappingNode) else []
         values = {}
-        for key, (key_node, value_node) in self.mapping(node, "sample", tuple(_keys(node))).items():
+        for key, (key_node, value_node) in self.mapping(node, "sample", keys).items():
+            if key.strip() not in symbols:
+                raise UserError(f"sample {key}: the robot has no symbol {key!r}{_suggestion(key, sorted(symbols))}",
+                                self.where(key_node))
             value = self.expression(value_node, f"sample {key}")
             if not value.is_number:
-                raise UserError(f"sample {key} must be a number", self.where(value_node))
-            values[parse_expression(key, self.where(key_node))] = value
+                raise UserError(f"sample {key}: must be a number, not {value}", self.where(value_node))
+            values[symbols[key.strip()]] = value
         return values
 
 
-def _keys(node: yaml.Node) -> list:
-    if not isinstance(node, yaml.MappingNode):
-        return []
-    return [k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)]
+@dataclass
+class _Row:
+    number: int
+    dh: DHRow
+    nodes: dict  # field name -> YAML value node, for locating later errors
+
+
+def _kind(node: yaml.Node) -> str:
+    if isinstance(node, yaml.SequenceNode):
+        return "a list"
+    if isinstance(node, yaml.MappingNode):
+        return "a mapping"
+    return "a single value" if node.value else "an empty value"
+
+
+def _symbols_of(chain: Chain) -> dict:
+    """Every symbol a robot's rows and fixed steps use, by name."""
+    values = [x for row in chain.rows for x in (row.theta, row.d, row.a, row.alpha)]
+    values += [step.value for step in chain.base + chain.tool]
+    return {s.name: s for value in values for s in value.free_symbols}

@@ -66,7 +66,7 @@ def test_two_symbols_in_theta_need_var():
 def test_degree_looking_twist_warns():
     text = "convention: standard\njoints:\n  - {joint: R, alpha: 90, a: 0, d: 0, theta: q}\n"
     robot = load_robot_text(text, "w.yaml")
-    assert robot.warnings == ["w.yaml:3:23: alpha 90 is taken as radians; write 90deg if you meant degrees"]
+    assert robot.warnings == ["w.yaml:3:23: joint row 1 alpha: 90 is taken as radians; write 90deg if you meant degrees"]
 
 
 def test_every_builtin_robot_loads_and_cites_a_source():
