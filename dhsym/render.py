@@ -103,7 +103,7 @@ def _ascii_header(field: str) -> str:
 
 
 def latex_matrix(matrix: sympy.Matrix, printer: LatexPrinter) -> str:
-    rows = [" & ".join(printer.doprint(matrix[r, c]) for c in range(4)) for r in range(4)]
+    rows = [" & ".join(printer.doprint(matrix[r, c]) for c in range(matrix.cols)) for r in range(matrix.rows)]
     return "\\begin{bmatrix}\n" + " \\\\\n".join(rows) + "\n\\end{bmatrix}"
 
 
