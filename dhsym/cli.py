@@ -13,6 +13,7 @@ import os
 import sys
 import warnings
 
+from . import latexdoc
 from . import plot
 from . import render
 from .errors import UserError
@@ -22,7 +23,7 @@ from .printing import LatexPrinter
 
 # Subcommands that live in their own modules: each has NAME, add_parser(commands) and
 # run(robot, args) -> str | None (None when it wrote its own output file).
-EXTENSIONS: tuple = (plot,)
+EXTENSIONS: tuple = (plot, latexdoc)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70

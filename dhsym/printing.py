@@ -94,9 +94,14 @@ class _TextbookMixin:
     def _join(self, pieces):
         out = pieces[0]
         for piece in pieces[1:]:
-            out += piece if piece[:1] in "([{\\" and not piece.startswith("\\sqrt") and self.family == "text" \
-                or piece[:2] in ("(", "[", "\\{") else " " + piece
+            out += piece if self._hugs(piece) else " " + piece
         return out
+
+    def _hugs(self, piece) -> bool:
+        """Whether a factor is written without a space before it: a bracket, c1(…), c1[…]."""
+        if self.family == "text":
+            return piece[:1] in "([{\\" and not piece.startswith("\\sqrt")
+        return piece[:1] in "([" or piece.startswith("\\{")
 
 
 class TextPrinter(_TextbookMixin, StrPrinter):

@@ -1,0 +1,324 @@
+"""`dhsym latex`: documents that compile with pdflatex, fit their pages (no overfull boxes),
+and print the textbook forms.
+
+Every built-in robot is compiled four ways (slides with and without --steps, article with
+--steps, snippet wrapped in a minimal amsmath document), once per module and in parallel.
+A document fails on any LaTeX error and on any overfull box wider or taller than
+OVERFULL_TOLERANCE_PT. Golden files: tests/golden/*.tex; after an intended change of the
+output, rewrite them with DHSYM_UPDATE_GOLDEN=1.
+"""
+import os
+import re
+import shutil
+import subprocess
+from concurrent.futures import ThreadPoolExecutor
+from itertools import pairwise
+from pathlib import Path
+
+import pytest
+
+from dhsym import latexdoc
+from dhsym.cli import main
+from dhsym.library import builtin_names, load
+from dhsym.printing import LatexPrinter
+from dhsym.robotfile import load_robot_text
+
+GOLDEN = Path(__file__).parent / "golden"
+OVERFULL_TOLERANCE_PT = 1.0  # TeX's own \hfuzz is 0.1 pt; 1 pt is invisible on a slide
+INSTALL_HINT = ("pdflatex is not installed: run `make tex` (as root it installs TeX Live), or "
+                "sudo apt-get install texlive-latex-base texlive-latex-recommended texlive-pictures "
+                "texlive-fonts-recommended lmodern poppler-utils")
+needs_tex = pytest.mark.skipif(shutil.which("pdflatex") is None, reason=INSTALL_HINT)
+
+VARIANTS = {"slides-steps": ("slides", True), "slides": ("slides", False),
+            "article-steps": ("article", True), "snippet": ("snippet", False)}
+SNIPPET_HOST = "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n{}\\end{{document}}\n"
+
+# Robots that are not built in but exercise notation: two-digit joints, Greek names, text to escape.
+TEN_JOINTS = """name: "Ten-link planar arm & co: 100% planar_test, θ"
+source: "made up for the tests; names with # and ~ and {braces}"
+convention: standard
+joints:
+""" + "".join(f"  - {{joint: R, alpha: 0, a: l_{i}, d: 0, theta: theta_{i}}}\n" for i in range(1, 11))
+
+GREEK_PRISMATIC = """name: Greek names
+convention: modified
+joints:
+  - {joint: R, alpha: 0, a: 0, d: 0, theta: phi_1}
+  - {joint: R, alpha: pi, a: lambda_1, d: 0, theta: psi_2}
+  - {joint: P, alpha: -pi/2, a: 0, d: d_3, theta: 0}
+"""
+
+
+def _document(robot, variant: str, **options) -> str:
+    kind, steps = VARIANTS[variant]
+    text = latexdoc.document(robot, kind, steps=steps, **options)
+    return SNIPPET_HOST.format(text) if kind == "snippet" else text
+
+
+def _width_probe() -> str:
+    """A document that logs TeX's own width of every matrix element of every built-in robot."""
+    lines = []
+    for number, element in enumerate(_all_elements()):
+        lines.append(f"\\setbox0\\hbox{{${element}$}}\\typeout{{WIDTH {number} \\the\\wd0}}")
+    return SNIPPET_HOST.format("\n".join(lines) + "\n")
+
+
+def _all_elements() -> list[str]:
+    elements = set()
+    for name in builtin_names():
+        chain = load(name).chain
+        printer = LatexPrinter(chain.joint_variables)
+        for i, j in pairwise(chain.frames):
+            for matrix in (chain.transform(chain.first_frame, j), chain.transform(i, j)):
+                elements.update(printer.doprint(element) for element in matrix)
+    return sorted(elements)
+
+
+@pytest.fixture(scope="module")
+def compiled(tmp_path_factory):
+    """{job name: (exit status, log text, pdf path)} for every document, compiled once."""
+    folder = tmp_path_factory.mktemp("latex")
+    sources = {f"{name}-{variant}": _document(load(name), variant) for name in builtin_names() for variant in VARIANTS}
+    sources["ten-joints-slides"] = _document(load_robot_text(TEN_JOINTS, "ten.yaml"), "slides-steps")
+    sources["greek-article"] = _document(load_robot_text(GREEK_PRISMATIC, "greek.yaml"), "article-steps")
+    sources["puma560-inverse-slides"] = _document(load("puma560"), "slides-steps", start="6", end="2")
+    sources["width-probe"] = _width_probe()
+    for job, text in sources.items():
+        (folder / f"{job}.tex").write_text(text, encoding="utf-8")
+    with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
+        return dict(zip(sources, pool.map(lambda job: _pdflatex(folder, job), sources), strict=True))
+
+
+def _pdflatex(folder: Path, job: str):
+    command = ["pdflatex", "-halt-on-error", "-interaction=nonstopmode", "-no-shell-escape", f"{job}.tex"]
+    result = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=120)
+    log = (folder / f"{job}.log").read_text(encoding="latin-1")
+    return result.returncode, log, folder / f"{job}.pdf"
+
+
+def _problems(log: str) -> list[str]:
+    errors = re.findall(r"^! .*", log, re.MULTILINE)
+    overfull = [m.group(0) for m in re.finditer(r"Overfull \\[hv]box \(([\d.]+)pt too (?:wide|high)\)", log)
+                if float(m.group(1)) > OVERFULL_TOLERANCE_PT]
+    return errors + overfull
+
+
+@needs_tex
+@pytest.mark.parametrize("variant", VARIANTS)
+@pytest.mark.parametrize("name", builtin_names())
+def test_every_robot_compiles_and_fits(compiled, name, variant):
+    status, log, pdf = compiled[f"{name}-{variant}"]
+    assert status == 0 and pdf.exists(), _problems(log) or log[-2000:]
+    assert _problems(log) == []
+
+
+@needs_tex
+@pytest.mark.parametrize("job", ["ten-joints-slides", "greek-article", "puma560-inverse-slides"])
+def test_notation_and_text_edge_cases_compile(compiled, job):
+    status, log, _ = compiled[job]
+    assert status == 0, _problems(log) or log[-2000:]
+    assert _problems(log) == []
+
+
+@needs_tex
+def test_width_estimate_matches_tex(compiled):
+    """The layout rules rely on it: never more than 2 % short of TeX's width, at most 15 % over."""
+    status, log, _ = compiled["width-probe"]
+    assert status == 0
+    measured = {int(n): float(w) for n, w in re.findall(r"WIDTH (\d+) ([\d.]+)pt", log)}
+    elements = _all_elements()
+    assert len(measured) == len(elements)
+    for number, element in enumerate(elements):
+        if measured[number] > 20:  # 10 pt font: 1 em = 10 pt
+            ratio = latexdoc.math_width(element) * 10 / measured[number]
+            assert 0.98 <= ratio <= 1.15, (element, ratio)
+
+
+@needs_tex
+@pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm (poppler-utils) is not installed")
+def test_puma_slides_render_with_everything_inside_the_page(compiled, tmp_path):
+    import matplotlib.image
+
+    _, log, pdf = compiled["puma560-slides-steps"]
+    pages = int(re.search(r"Output written on .*\((\d+) pages?", log).group(1))
+    subprocess.run(["pdftoppm", "-r", "40", "-png", str(pdf), str(tmp_path / "page")], check=True, timeout=120)
+    images = sorted(tmp_path.glob("page-*.png"))
+    assert len(images) == pages >= 15
+    for image in images:
+        ink = matplotlib.image.imread(image)[:, :, :3].min(axis=2) < 0.6  # dark pixels
+        height, width = ink.shape
+        assert ink.any(), f"{image.name} is blank"
+        assert not ink[:, width - width // 40:].any(), f"{image.name}: something touches the right edge"
+        bottom = ink[height - height // 25:, : width - width // 8]  # the frame number sits at the right
+        assert not bottom.any(), f"{image.name}: something runs off the bottom"
+
+
+# ---------------------------------------------------------------- layout rules, no TeX needed
+
+def _frames(text: str) -> list[str]:
+    return re.findall(r"\\begin\{frame\}.*?\\end\{frame\}", text, re.DOTALL)
+
+
+def test_short_matrices_are_matrices_long_ones_are_named_elements():
+    planar = latexdoc.document(load("planar3r"), "slides")
+    assert "& l_{1} c_{1} + l_{2} c_{12} + l_{3} c_{123} \\\\" in planar and "r_{11}" not in planar
+    puma = latexdoc.document(load("puma560"), "slides")
+    result = [frame for frame in _frames(puma) if "Result" in frame]
+    assert "r_{11} & r_{12} & r_{13} & p_{x}" in result[0]
+    # Craig's r11, on one line, in textbook order of factors and brackets
+    assert ("r_{11} &= c_{1}[c_{23}(c_{4} c_{5} c_{6} - s_{4} s_{6}) - s_{23} s_{5} c_{6}] "
+            "+ s_{1}(c_{4} s_{6} + s_{4} c_{5} c_{6})") in result[0]
+    assert "p_{z} &= -a_{2} s_{2} - d_{4} c_{23} - a_{3} s_{23}" in "".join(result)
+
+
+def test_elements_come_column_by_column_and_a_column_stays_on_one_frame():
+    for name in ("puma560", "stanford", "iiwa7"):
+        frames = _frames(latexdoc.document(load(name), "slides"))
+        labels = [re.findall(r"^([rp]_\{\w+\}) &=", frame, re.MULTILINE) for frame in frames if "Result" in frame]
+        order = [label for frame in labels for label in frame]
+        assert order == [latexdoc.element_name(r, c) for c in range(4) for r in range(3)]
+        for frame in labels:
+            assert len(frame) % 3 == 0, (name, frame)
+
+
+def test_long_elements_break_before_a_sign_at_the_outermost_bracket():
+    slides = latexdoc.document(load("iiwa7"), "slides")
+    continuations = re.findall(r"^&\\quad \{\}([+-]) ", slides, re.MULTILINE)
+    assert continuations, "the 7-axis arm's elements need more than one line"
+    page = latexdoc.PAGES["slides"]
+    line_pattern = r"^(?:[rp]_\{\w+\} &= |&\\quad \{\})(.*?)(?: \\\\(?:\[[\d.]+pt\])?)?$"
+    for line in re.findall(line_pattern, slides, re.MULTILINE):
+        assert latexdoc.math_width(line) <= page.width
+
+
+def test_break_lines_keeps_every_character_and_never_splits_a_group():
+    element = latexdoc.LatexPrinter(load("iiwa7").chain.joint_variables).doprint(load("iiwa7").chain.fk()[0, 0])
+    lines = latexdoc.break_lines(element, 12, 11)
+    assert len(lines) > 2
+    assert " ".join(lines) == element
+    for line in lines:
+        assert line.count("{") - line.count("\\{") == line.count("}") - line.count("\\}")
+        assert latexdoc.math_width("{}" + line) <= 12 or not latexdoc.break_points(line)
+    # the outermost sign first, unless that leaves a line less than half full
+    assert latexdoc.break_lines("x_{1} x_{2} x_{3} + (b + c)", 5.5, 5.5) == ["x_{1} x_{2} x_{3}", "+ (b + c)"]
+    assert latexdoc.break_lines("a + (b + c)", 3.5, 3.5) == ["a + (b", "+ c)"]
+
+
+def test_steps_show_the_product_and_simplified_intermediate_results():
+    snippet = latexdoc.document(load("spatial3r"), "snippet", steps=True)
+    step1 = snippet.split("% Step 1")[1].split("% Step 2")[0]
+    assert "{}^{0}T_{2} &= {}^{0}T_{1}\\,{}^{1}T_{2} =" in step1 and step1.count("begin{bmatrix}") == 3
+    assert "c_{1} c_{2} & -c_{1} s_{2} & s_{1} & a_{2} c_{1} c_{2}" in step1  # simplified, then used again:
+    step2 = snippet.split("% Step 2")[1].split("% Result")[0]
+    assert "c_{1} c_{2} & -c_{1} s_{2} & s_{1} & a_{2} c_{1} c_{2}" in step2
+    assert "c_{1} c_{23} & -c_{1} s_{23} & s_{1} & c_{1}(a_{2} c_{2} + a_{3} c_{23})" in step2
+    puma = latexdoc.document(load("puma560"), "snippet", steps=True)
+    step3 = puma.split("% Step 3")[1].split("% Step 4")[0]
+    assert "{}^{0}T_{4} = {}^{0}T_{3}\\,{}^{3}T_{4} =" in step3 and step3.count("begin{bmatrix}") == 1  # names only
+    assert "r_{13} &= -c_{1} s_{23}" in step3
+    titles = re.findall(r"\\begin\{frame\}\{(Step \d+): ", latexdoc.document(load("puma560"), "slides", steps=True))
+    assert sorted(set(titles)) == [f"Step {k}" for k in range(1, 6)]
+
+
+def test_slides_have_title_table_link_and_result_frames():
+    slides = latexdoc.document(load("stanford"), "slides")
+    frames = _frames(slides)
+    assert "Stanford manipulator" in frames[0] and "Source: Lecture 003" in frames[0]
+    assert frames[1].startswith("\\begin{frame}{DH table}")
+    assert "i & \\theta_i & d_i & a_i & \\alpha_i" in frames[1]  # standard column order
+    assert "3 & 0 & d_{3}^{*} & 0 & 0" in frames[1]  # the prismatic variable, as it is, starred
+    assert "Standard (distal) DH convention" in frames[1]
+    assert [f"Link {i}" for i in range(1, 7)] == re.findall(r"\{(Link \d): ", slides)
+    assert "s_{2}(d_{3} + d_{6} c_{5})" in slides
+    legend = slides.split("Abbreviations:" if "Abbreviations:" in slides else "where")[1]
+    assert "c_{1} &= \\cos{\\theta_{1}} & s_{1} &= \\sin{\\theta_{1}}" in legend
+    assert "c_{3}" not in legend  # joint 3 is prismatic: no c3 anywhere
+
+
+def test_modified_table_order_and_base_tool_frames():
+    slides = latexdoc.document(load("finger_rrr"), "slides")
+    assert "i & \\alpha_{i-1} & a_{i-1} & d_i & \\theta_i" in slides
+    assert "Fixed base transform: ${}^{\\mathrm{base}}T_{0} = T_{y}(-d)\\,T_{z}(h)$." in slides
+    assert "{Base: ${}^{\\mathrm{base}}T_{0}$}" in slides and "{Tool: ${}^{3}T_{\\mathrm{tool}}$}" in slides
+    assert "\\psi_{1}" in slides and "c_{23} &= \\cos(\\psi_{1} + \\phi_{1})" in slides
+
+
+def test_two_digit_joints_greek_names_and_angle_differences():
+    ten = latexdoc.document(load_robot_text(TEN_JOINTS, "ten.yaml"), "snippet")
+    assert "{}^{9}T_{10}" in ten and "c_{10}" in ten and "c_{1,2,3,4,5,6,7,8,9,10}" in ten
+    assert "% where (commas separate the joint numbers when one of them has two digits)" in ten
+    assert "Ten-link planar arm \\& co: 100\\% planar\\_test, $\\theta$" in latexdoc.document(
+        load_robot_text(TEN_JOINTS, "ten.yaml"), "slides")
+    greek = latexdoc.document(load_robot_text(GREEK_PRISMATIC, "greek.yaml"), "snippet")
+    assert "\\phi_{1}^{*}" in greek and "\\lambda_{1}" in greek and "d_{3}^{*}" in greek
+    assert "\\bar{2}" in greek and "(a bar over a joint number marks an angle that is subtracted)" in greek
+
+
+# ---------------------------------------------------------------- golden files
+
+@pytest.mark.parametrize("name", ["planar3r", "spatial3r", "spherical_wrist"])
+def test_golden_snippets(name):
+    text = latexdoc.document(load(name), "snippet", steps=True)
+    path = GOLDEN / f"{name}.tex"
+    if os.environ.get("DHSYM_UPDATE_GOLDEN"):
+        path.write_text(text, encoding="utf-8")
+    assert _math_only(text) == _math_only(path.read_text(encoding="utf-8"))
+
+
+def _math_only(text: str) -> list[str]:
+    """Lines without the robot's name and source, which the robot file may reword."""
+    return [line for line in text.splitlines() if not line.startswith(("% dhsym latex:", "% Source:"))]
+
+
+def test_golden_files_hold_the_textbook_forms():
+    planar = (GOLDEN / "planar3r.tex").read_text()
+    assert "c_{123} & -s_{123} & 0 & l_{1} c_{1} + l_{2} c_{12} + l_{3} c_{123}" in planar  # 0T_tool
+    spatial = (GOLDEN / "spatial3r.tex").read_text()
+    assert "s_{1} c_{23} & -s_{1} s_{23} & -c_{1} & s_{1}(a_{2} c_{2} + a_{3} c_{23})" in spatial
+    wrist = (GOLDEN / "spherical_wrist.tex").read_text()
+    assert "c_{4} c_{5} c_{6} - s_{4} s_{6} & -c_{4} c_{5} s_{6} - s_{4} c_{6} & c_{4} s_{5} & d_{6} c_{4} s_{5}" \
+        in wrist  # Z-Y-Z Euler angles, as the lecture prints 3T6
+    assert "-s_{5} c_{6} & s_{5} s_{6} & c_{5} & d_{6} c_{5}" in wrist
+
+
+# ---------------------------------------------------------------- the command
+
+def test_cli_writes_the_same_text_to_a_file(tmp_path, capsys):
+    assert main(["latex", "planar2r", "--document", "article"]) == 0
+    printed = capsys.readouterr().out
+    target = tmp_path / "arm.tex"
+    assert main(["latex", "planar2r", "--document", "article", "-o", str(target)]) == 0
+    assert capsys.readouterr().out == ""
+    assert target.read_text(encoding="utf-8") == printed
+    assert [p.name for p in tmp_path.iterdir()] == ["arm.tex"]  # no temporary file left behind
+
+
+def test_cli_failures_leave_no_partial_file(tmp_path, capsys, monkeypatch):
+    target = tmp_path / "slides.tex"
+    assert main(["latex", "puma560", "--from", "9", "-o", str(target)]) == 2
+    error = capsys.readouterr().err
+    assert error.count("\n") == 1 and "--from: no frame 9 in this robot; frames are 0, 1, 2, 3, 4, 5, 6" in error
+    assert main(["latex", "puma560", "--from", "2", "--to", "2", "-o", str(target)]) == 2
+    assert "same frame" in capsys.readouterr().err
+    assert not target.exists()
+
+    target.write_text("the lecturer's old slides")
+
+    def broken_rename(source, destination):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "replace", broken_rename)
+    assert main(["latex", "puma560", "-o", str(target)]) == 2
+    assert "No space left on device" in capsys.readouterr().err
+    assert target.read_text() == "the lecturer's old slides"
+    assert [p.name for p in tmp_path.iterdir()] == ["slides.tex"]
+
+
+def test_cli_from_to_and_inverse(capsys):
+    assert main(["latex", "puma560", "--document", "snippet", "--from", "3", "--to", "6"]) == 0
+    forward = capsys.readouterr().out
+    assert "% Result: ${}^{3}T_{6}$" in forward and "{}^{0}T_{1}" not in forward.split("% Link")[1]
+    assert main(["latex", "puma560", "--document", "snippet", "--from", "6", "--to", "3"]) == 0
+    backward = capsys.readouterr().out
+    assert "% Link 6 (inverse): ${}^{6}T_{5}$" in backward and "% Result: ${}^{6}T_{3}$" in backward
