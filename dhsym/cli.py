@@ -112,7 +112,7 @@ def main(argv=None) -> int:
         print("dhsym: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:  # `dhsym fk puma560 | head`: the reader left; stop quietly, like a shell tool
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        _silence_stdout()
         return EXIT_BROKEN_PIPE
     except UnicodeEncodeError as error:
         print(f"dhsym: error: the output cannot be written as {error.encoding}; use --ascii, or set "
@@ -129,6 +129,14 @@ def _command_budget(args) -> float | None:
     """A whole command may take this long; simplification alone gets --timeout per result."""
     timeout = getattr(args, "timeout", None)
     return COMMAND_BUDGET_FACTOR * timeout if timeout else None
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null, so that Python's final flush does not complain about the pipe again."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except (OSError, ValueError):  # stdout without a file descriptor (tests, notebooks): nothing to do
+        pass
 
 
 def _printable(message: str) -> str:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import ast
 import re
+import warnings
 from fractions import Fraction
 
 import sympy
@@ -24,7 +25,7 @@ from .errors import Location, UserError
 MAX_LENGTH = 200  # characters of one expression
 MAX_DEPTH = 24  # nesting of operators and calls
 MAX_EXPONENT = 16  # largest |numerator| or denominator of a power's exponent
-MAX_NUMBER_BITS = 400  # about 120 decimal digits, for any exact number built on the way
+MAX_DIGITS = 120  # of any exact number built on the way (numerator or denominator)
 
 FUNCTIONS = {"sqrt": sympy.sqrt, "sin": sympy.sin, "cos": sympy.cos}
 CONSTANTS = {"pi": sympy.pi, "π": sympy.pi}
@@ -71,7 +72,9 @@ def parse_expression(text: str, where: Location | None = None) -> sympy.Expr:
         raise UserError("° must follow a number, as in 90°", where.shifted(columns[stray_degree]))
     indent = len(source) - len(source.lstrip())  # Python reads leading blanks as an indent
     try:
-        tree = ast.parse(source[indent:], mode="eval")
+        with warnings.catch_warnings():  # `1if`, `"\d"`: Python would warn on stderr about code we refuse anyway
+            warnings.simplefilter("ignore")
+            tree = ast.parse(source[indent:], mode="eval")
     except SyntaxError as exc:
         offset = indent + max((exc.offset or 1) - 1, 0)  # SyntaxError counts characters, not bytes
         column = columns[min(offset, len(columns) - 1)]
@@ -136,7 +139,15 @@ def _exact_decimal(literal: str) -> sympy.Rational | None:
 
 
 def _too_big(value: sympy.Expr) -> bool:
-    return value.is_Rational and max(abs(value.p).bit_length(), value.q.bit_length()) > MAX_NUMBER_BITS
+    """More than MAX_DIGITS digits above or below the fraction bar (bits first: str() of a huge int is slow)."""
+    if not value.is_Rational:
+        return False
+    parts = (abs(value.p), value.q)
+    return any(part.bit_length() > 4 * MAX_DIGITS or len(str(part)) > MAX_DIGITS for part in parts)
+
+
+def _bits(value: sympy.Rational) -> int:
+    return max(abs(value.p).bit_length(), value.q.bit_length())
 
 
 class _Builder:
@@ -166,7 +177,7 @@ class _Builder:
         if result.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo):
             raise self.fail(node, "expression is undefined (division by zero?)")
         if _too_big(result):
-            raise self.fail(node, f"number too large (more than {MAX_NUMBER_BITS} bits)")
+            raise self.fail(node, f"number too large (more than {MAX_DIGITS} digits)")
         if result.is_real is False:
             raise self.fail(node, "expression is not a real number")
         return result
@@ -176,9 +187,7 @@ class _Builder:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.fail(node, f"{_describe(node)} is not allowed in an expression")
         if isinstance(value, int):
-            if value.bit_length() > MAX_NUMBER_BITS:
-                raise self.fail(node, f"number too large (more than {MAX_NUMBER_BITS} bits)")
-            return sympy.Integer(value)
+            return sympy.Integer(value)  # at most MAX_LENGTH digits; build() checks the size
         exact = _exact_decimal(self.source[self.start(node):self.end(node)])
         if exact is None:
             raise self.fail(node, "number too large or too small")
@@ -221,8 +230,8 @@ class _Builder:
             raise self.fail(node, f"exponent must be a small number (at most {MAX_EXPONENT})")
         if left == 0 and right.is_negative:
             raise self.fail(node, "division by zero")
-        if left.is_Rational and max(abs(left.p).bit_length(), left.q.bit_length()) * abs(right.p) > MAX_NUMBER_BITS:
-            raise self.fail(node, f"number too large (more than {MAX_NUMBER_BITS} bits)")  # refuse before computing
+        if left.is_Rational and _bits(left) * abs(right.p) > 4 * MAX_DIGITS * right.q:
+            raise self.fail(node, f"number too large (more than {MAX_DIGITS} digits)")  # refused before computing
         return left**right
 
     def _Call(self, node: ast.Call, depth: int) -> sympy.Expr:

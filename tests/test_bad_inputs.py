@@ -1,0 +1,184 @@
+"""Hostile and malformed input: every file in tests/bad_inputs/ gives exactly its expected lines.
+
+Each case NAME has NAME.expected (the exact stderr, one line per message; empty when the input
+is accepted silently), usually an input NAME.yaml, and optionally NAME.args (the command line,
+one argument per line, `{file}` standing for NAME.yaml; the default is `fk NAME.yaml`).
+An expected line with an error means exit status 2 and nothing on stdout; warnings alone
+mean exit status 0 and a result on stdout. Several inputs try to run code that would create
+a file named CANARY; the tests check that it never appears.
+
+Most cases run in-process through `cli.main` (fast); a handful run through a real subprocess,
+to check what a user sees: no traceback, the exit status, the streams.
+"""
+import os
+import re
+import shutil
+import stat
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from dhsym import cli
+from dhsym.errors import UserError
+from dhsym.library import builtin_names
+from dhsym.output import write_atomic
+from dhsym.robotfile import MAX_FILE_BYTES, MAX_YAML_NODES
+
+CORPUS = Path(__file__).parent / "bad_inputs"
+CASES = sorted(path.stem for path in CORPUS.glob("*.expected"))
+THROUGH_SUBPROCESS = ["yaml_python_object_apply", "expr_import", "warn_twist_90"]
+CANARY = "CANARY"
+
+
+def command_line(name: str) -> list[str]:
+    args_file = CORPUS / f"{name}.args"
+    args = args_file.read_text(encoding="utf-8").splitlines() if args_file.exists() else ["fk", "{file}"]
+    return [arg.replace("{file}", f"{name}.yaml") for arg in args]
+
+
+def expected_lines(name: str) -> list[str]:
+    text = (CORPUS / f"{name}.expected").read_text(encoding="utf-8")
+    return text.replace("{builtin_names}", ", ".join(builtin_names())).splitlines()
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory):
+    """A copy of the corpus to run in, so that a canary would land where we look for it."""
+    folder = tmp_path_factory.mktemp("bad_inputs")
+    for path in CORPUS.iterdir():
+        shutil.copy(path, folder / path.name)
+    before = sorted(os.listdir(folder))
+    yield folder
+    assert sorted(os.listdir(folder)) == before  # nothing created, nothing removed, anywhere in the run
+
+
+def check_outcome(name: str, status: int, stdout: str, stderr: str) -> None:
+    lines = expected_lines(name)
+    assert stderr.splitlines() == lines
+    assert "Traceback" not in stderr
+    if any(line.startswith("dhsym: error: ") for line in lines):
+        assert status == 2 and stdout == "" and len(lines) == 1
+        if (CORPUS / f"{name}.yaml").exists() and not name.startswith("cli_"):  # the file's content is at fault
+            assert re.match(rf"dhsym: error: {re.escape(name)}\.yaml:\d+:\d+: \S", lines[0])
+    else:
+        assert all(line.startswith("dhsym: warning: ") for line in lines)
+        assert status == 0 and stdout.strip()
+
+
+def test_the_corpus_is_big_and_complete():
+    inputs = list(CORPUS.glob("*.yaml"))
+    assert len(inputs) >= 40
+    for path in inputs:
+        assert (CORPUS / f"{path.stem}.expected").exists(), path.name
+    assert sum(CANARY in path.read_bytes().decode("utf-8", "replace") for path in inputs) >= 12
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_case_in_process(name, workdir, monkeypatch, capsys):
+    monkeypatch.chdir(workdir)
+    status = cli.main(command_line(name))
+    stdout, stderr = capsys.readouterr()
+    check_outcome(name, status, stdout, stderr)
+    assert not (workdir / CANARY).exists()
+
+
+@pytest.mark.parametrize("name", THROUGH_SUBPROCESS)
+def test_case_through_subprocess(name, workdir):
+    result = subprocess.run([sys.executable, "-m", "dhsym.cli", *command_line(name)], cwd=workdir,
+                            capture_output=True, text=True, timeout=60, env={**os.environ, "PYTHONIOENCODING": "utf-8"})
+    check_outcome(name, result.returncode, result.stdout, result.stderr)
+    assert not (workdir / CANARY).exists()
+
+
+def _run_in_process(argv, capsys):
+    status = cli.main(argv)
+    stdout, stderr = capsys.readouterr()
+    return status, stdout, stderr
+
+
+def test_a_file_over_the_size_limit_is_refused_without_reading_it_all(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    Path("huge.yaml").write_bytes(b"notes: " + b"x" * MAX_FILE_BYTES + b"\n")
+    assert _run_in_process(["fk", "huge.yaml"], capsys) == (
+        2, "", "dhsym: error: huge.yaml:1:1: file is larger than 1 MiB, the limit for robot files\n")
+
+
+def test_too_many_yaml_values_are_refused(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    Path("wide.yaml").write_text("convention: standard\nnotes: [" + "1, " * MAX_YAML_NODES + "1]\n")
+    status, stdout, stderr = _run_in_process(["fk", "wide.yaml"], capsys)
+    assert (status, stdout) == (2, "")
+    assert re.fullmatch(r"dhsym: error: wide\.yaml:2:\d+: more than 20000 YAML values; this is not a robot file\n",
+                        stderr)
+
+
+def test_an_internal_bug_asks_for_a_report_and_exits_70(monkeypatch, capsys):
+    def broken(args):
+        raise KeyError("a bug")
+    monkeypatch.setattr(cli, "_dispatch", broken)
+    status, stdout, stderr = _run_in_process(["fk", "planar2r"], capsys)
+    assert status == 70 and stdout == ""
+    assert stderr.startswith("dhsym: internal error: KeyError: 'a bug'\n") and "report" in stderr
+    assert "Traceback" not in stderr
+
+
+def test_a_closed_pipe_ends_quietly(monkeypatch, capsys):
+    def reader_left(args):
+        raise BrokenPipeError()
+    monkeypatch.setattr(cli, "_dispatch", reader_left)
+    assert _run_in_process(["fk", "planar2r"], capsys) == (cli.EXIT_BROKEN_PIPE, "", "")
+
+
+def test_an_ascii_terminal_gets_advice_not_a_traceback():
+    result = subprocess.run([sys.executable, "-m", "dhsym.cli", "fk", "planar2r"], capture_output=True, text=True,
+                            timeout=60, env={**os.environ, "PYTHONIOENCODING": "ascii"})
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr == "dhsym: error: the output cannot be written as ascii; use --ascii, or set " \
+                            "PYTHONIOENCODING=utf-8\n"
+
+
+def test_messages_stay_on_one_line_whatever_the_file_is_called(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    Path("two\nlines.yaml").write_text("convention: standard\njoints: []\n")
+    status, _, stderr = _run_in_process(["fk", "two\nlines.yaml"], capsys)
+    assert status == 2
+    assert stderr == "dhsym: error: two\\nlines.yaml:2:9: joints is empty; a robot needs at least one joint\n"
+
+
+# --- Nothing lost: output files are written atomically and never over an input.
+
+def test_refuses_to_overwrite_the_input_by_any_name(tmp_path):
+    robot = tmp_path / "arm.yaml"
+    robot.write_text("convention: standard\n")
+    (tmp_path / "link.yaml").symlink_to(robot)
+    os.link(robot, tmp_path / "hard.yaml")
+    for target in ("arm.yaml", "link.yaml", "hard.yaml", "./sub/../arm.yaml"):
+        (tmp_path / "sub").mkdir(exist_ok=True)
+        with pytest.raises(UserError, match="refusing to overwrite the input file"):
+            write_atomic(tmp_path / target, "oops", inputs=[str(robot)])
+    assert robot.read_text() == "convention: standard\n"
+
+
+def test_a_failed_write_keeps_the_old_file_and_leaves_no_temporary(tmp_path):
+    target = tmp_path / "T.tex"
+    target.write_text("old")
+    with pytest.raises(UnicodeEncodeError):
+        write_atomic(target, "new \ud800 text")  # a lone surrogate cannot be encoded: fails mid-write
+    assert target.read_text() == "old"
+    assert os.listdir(tmp_path) == ["T.tex"]
+
+
+def test_a_new_file_gets_ordinary_permissions(tmp_path):
+    mask = os.umask(0o022)
+    try:
+        write_atomic(tmp_path / "new.txt", "x")
+    finally:
+        os.umask(mask)
+    assert stat.S_IMODE((tmp_path / "new.txt").stat().st_mode) == 0o644
+
+
+def test_a_missing_folder_is_a_user_error(tmp_path):
+    with pytest.raises(UserError, match="does not exist"):
+        write_atomic(tmp_path / "nowhere" / "T.tex", "x")

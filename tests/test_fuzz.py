@@ -1,0 +1,194 @@
+"""Fuzzing the two doors user text comes through: the expression parser and the robot-file loader.
+
+Every input must end in a result (a real SymPy expression, a Robot whose chain computes) or
+in dhsym's own UserError with a place and a one-line message: no other exception, and no
+example may run longer than EXAMPLE_SECONDS. The example counts are set here, not by the
+profile, so that every run (CI included) tries at least 2,000 inputs.
+"""
+import os
+
+import pytest
+import sympy
+import yaml
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from dhsym.budget import time_budget
+from dhsym.errors import UserError
+from dhsym.expr import parse_expression
+from dhsym.robotfile import ROW_KEYS, TOP_KEYS, Robot, load_robot_text
+
+EXAMPLE_SECONDS = 5.0  # generous: a hang is what we look for, not a slow machine
+FUZZ = settings(deadline=None, database=None, suppress_health_check=list(HealthCheck))
+EXPRESSIONS, EXPRESSION_GARBAGE, ROBOTS, ROBOT_GARBAGE = 900, 700, 700, 300  # 2,600 inputs per run
+
+
+class ExampleTooSlow(BaseException):
+    """One fuzz example ran past EXAMPLE_SECONDS."""
+
+
+# --- expressions ------------------------------------------------------------------------------
+
+NAMES = ["theta_1", "θ2", "l_1", "a_2", "d_3", "x", "pi", "π", "deg", "E", "I", "oo", "inf", "nan",
+         "_deg", "__import__", "__class__", "ｓｉｎ", "eval", "open", "lambda_1", "𝜃"]
+TOKENS = NAMES + [
+    "sqrt", "sin", "cos", "(", ")", "+", "-", "−", "*", "/", "**", "^", "·", "×", "%", "//", "@", "~", ".", ",",
+    "0", "1", "2", "9", "16", "17", "90", "0.5", ".5", "1e3", "1e999", "1e-99", "1_0", "0x1f", "07", "1j",
+    "deg", "°", " ", "\t", "\n", "\x00", "#", "'", '"', "[", "]", "{", "}", ":", "=", ":=", "<", "and", "not",
+    "lambda", "for", "in", "if", "else", "True", "None", "\\", "\u200b", "＿",
+]
+numbers = st.one_of(
+    st.integers(-10**40, 10**40).map(str),
+    st.floats(allow_nan=True, allow_infinity=True).map(repr),
+    st.from_regex(r"[0-9]{1,4}(\.[0-9]{0,3})?(e-?[0-9]{1,3})?", fullmatch=True),
+    st.from_regex(r"-?[0-9]{1,3}(\.[0-9])? ?(deg|°)", fullmatch=True),
+)
+leaves = st.one_of(numbers, st.sampled_from(NAMES))
+
+
+def _grow(children):
+    return st.one_of(
+        st.tuples(children, st.sampled_from(["+", "-", "*", "/", "**", "^", " - ", "−"]), children)
+        .map(lambda t: f"{t[0]}{t[1]}{t[2]}"),
+        st.tuples(children, st.sampled_from(["+", "*", "/", "**"]), children).map(lambda t: f"({t[0]}){t[1]}({t[2]})"),
+        st.tuples(st.sampled_from(["sqrt", "sin", "cos", "-", "+", ""]), children).map(lambda t: f"{t[0]}({t[1]})"),
+    )
+
+
+well_formed = st.recursive(leaves, _grow, max_leaves=24)
+token_soup = st.lists(st.sampled_from(TOKENS), max_size=40).map("".join)
+any_text = st.text(max_size=260)
+
+
+def assert_expression_outcome(text: str) -> None:
+    with time_budget(EXAMPLE_SECONDS, ExampleTooSlow):
+        try:
+            value = parse_expression(text)
+        except UserError as error:
+            assert error.where.line == 1 and 1 <= error.where.column <= len(text) + 1, (text, error)
+            assert "\n" not in str(error), (text, error)
+            return
+    assert isinstance(value, sympy.Expr)
+    assert all(symbol.is_real for symbol in value.free_symbols)
+    assert not value.has(sympy.zoo, sympy.nan, sympy.oo, sympy.I)
+    assert value.is_real is not False
+
+
+@settings(FUZZ, max_examples=EXPRESSIONS)
+@given(well_formed)
+def test_fuzz_well_formed_expressions(text):
+    assert_expression_outcome(text)
+
+
+@settings(FUZZ, max_examples=EXPRESSION_GARBAGE)
+@given(st.one_of(token_soup, any_text))
+def test_fuzz_expression_garbage(text):
+    assert_expression_outcome(text)
+
+
+# --- robot files ------------------------------------------------------------------------------
+
+JOINT_NAMES = ["theta_1", "theta_2", "q", "d_1", "d_2"]
+good_angle = st.sampled_from(["0", "pi/2", "-pi/2", "pi", "90deg", "-90°", "90", "1.5708", "pi/4", "alpha_1"])
+good_length = st.sampled_from(["0", "l_1", "a_2", "0.5", "1/3", "d_1 + 0.1", "sqrt(2)*l_1", "L_2"])
+bad_value = st.one_of(
+    st.sampled_from(["sin", "1/0", "sqrt(-1)", "x.y", "yes", "", "__import__('os')", "theta_1", "q", "9**9**9"]),
+    numbers, well_formed, st.integers(), st.floats(), st.booleans(), st.none(),
+    st.lists(st.integers(0, 9), max_size=2),
+    st.dictionaries(st.sampled_from(["value", "x"]), st.integers(), max_size=1),
+)
+
+
+@st.composite
+def good_row(draw, number):
+    if draw(st.booleans()):
+        offset = draw(st.sampled_from(["", " - pi/2", " + pi/2", " + 90", " + beta"]))
+        return {"joint": "R", "alpha": draw(good_angle), "a": draw(good_length), "d": draw(good_length),
+                "theta": f"theta_{number}{offset}", **({"var": f"theta_{number}"} if "beta" in offset else {})}
+    return {"joint": "P", "alpha": draw(good_angle), "a": draw(good_length), "d": f"d_{number}",
+            "theta": draw(st.sampled_from(["0", "pi/2", "90"]))}
+
+
+@st.composite
+def robot_documents(draw):
+    """A valid robot description, then zero to two mistakes of the kinds people make."""
+    rows = [draw(good_row(number)) for number in range(1, draw(st.integers(1, 4)) + 1)]
+    doc = {"name": draw(st.text(max_size=12)), "convention": draw(st.sampled_from(["standard", "modified"])),
+           "joints": rows}
+    if draw(st.booleans()):
+        doc["tool"] = [{draw(st.sampled_from(["Tx", "Tz", "Rz", "Rx"])): draw(good_length)}]
+    for _ in range(draw(st.sampled_from([0, 0, 1, 1, 2]))):
+        mistake = draw(st.sampled_from(["field", "drop", "key", "top", "convention", "sample", "rows", "step"]))
+        target = draw(st.sampled_from(rows))
+        if mistake == "field":
+            target[draw(st.sampled_from(ROW_KEYS))] = draw(bad_value)
+        elif mistake == "drop":
+            target.pop(draw(st.sampled_from(sorted(target))), None)
+        elif mistake == "key":
+            target[draw(st.sampled_from(["alpah", "Theta", "th", "offset"]))] = draw(bad_value)
+        elif mistake == "top":
+            doc[draw(st.sampled_from(list(TOP_KEYS) + ["bogus", "joint"]))] = draw(bad_value)
+        elif mistake == "convention":
+            doc["convention"] = draw(st.sampled_from(["Craig", "craig", None, "MODIFIED", ["standard"]]))
+        elif mistake == "sample":
+            doc["sample"] = draw(st.dictionaries(st.sampled_from(["l_1", "a_2", "l1", "pi", "theta_1"]),
+                                                 st.one_of(good_length, bad_value), max_size=3))
+        elif mistake == "rows":
+            doc["joints"] = draw(st.sampled_from([[], rows * 7, rows + [rows[0]], "R R R", None]))
+        else:
+            doc["base"] = [draw(st.dictionaries(st.sampled_from(["Rx", "Tz", "Rw"]), bad_value, max_size=2))]
+    return doc
+
+
+HOSTILE = ["\t", "&a ", "*a", "!!python/object/apply:os.system ['touch CANARY']", "---\n", "[", "]", "{", "}",
+           ": ", "- ", "\x00", "\ufeff", "%TAG ! tag:x,\n", "\n", "  ", "#", "'", '"', "<<: *a\n", "? ", "!!str ",
+           "\r", "\u2028", "\x85", "...\n"]
+
+
+@st.composite
+def robot_texts(draw):
+    """A robot-like document dumped as YAML, sometimes hit with a few hostile edits."""
+    text = yaml.safe_dump(draw(robot_documents()), default_flow_style=draw(st.sampled_from([None, True, False])),
+                          allow_unicode=True, sort_keys=False)
+    for _ in range(draw(st.sampled_from([0, 0, 0, 1, 2, 3]))):
+        position = draw(st.integers(0, len(text)))
+        text = text[:position] + draw(st.sampled_from(HOSTILE)) + text[position + draw(st.integers(0, 2)):]
+    return text
+
+
+def assert_robot_outcome(text: str) -> None:
+    with time_budget(EXAMPLE_SECONDS, ExampleTooSlow):
+        try:
+            robot = load_robot_text(text, "fuzz.yaml")
+        except UserError as error:
+            assert error.where.file == "fuzz.yaml" and error.where.line >= 1 and error.where.column >= 1, error
+            return
+        assert isinstance(robot, Robot) and 1 <= robot.chain.n
+        matrix = robot.chain.fk()  # a file that loads must also compute
+    assert matrix.shape == (4, 4)
+    assert all(symbol.is_real for symbol in matrix.free_symbols)
+    assert all(warning.startswith("fuzz.yaml:") for warning in robot.warnings)
+
+
+@pytest.fixture(scope="module", autouse=True)
+def in_a_scratch_folder(tmp_path_factory):
+    """Run where a canary would be seen: if any input ran code, CANARY would appear here."""
+    folder, before = tmp_path_factory.mktemp("fuzz"), os.getcwd()
+    os.chdir(folder)
+    yield
+    os.chdir(before)
+    assert os.listdir(folder) == []
+
+
+@settings(FUZZ, max_examples=ROBOTS)
+@given(robot_texts())
+def test_fuzz_robot_files(text):
+    assert_robot_outcome(text)
+
+
+@settings(FUZZ, max_examples=ROBOT_GARBAGE)
+@given(st.one_of(any_text, st.lists(st.sampled_from(HOSTILE + ["convention: standard\n", "joints:\n", "a: b\n"]),
+                                    max_size=30).map("".join)))
+def test_fuzz_robot_file_garbage(text):
+    assert_robot_outcome(text)
+
