@@ -14,7 +14,7 @@ import sys
 import warnings
 
 from . import latexdoc
-from . import plot
+from . import plot_cli
 from . import render
 from .errors import UserError
 from .budget import CommandTooSlow, SimplificationTimeout, time_budget
@@ -23,7 +23,7 @@ from .printing import LatexPrinter
 
 # Subcommands that live in their own modules: each has NAME, add_parser(commands) and
 # run(robot, args) -> str | None (None when it wrote its own output file).
-EXTENSIONS: tuple = (plot, latexdoc)
+EXTENSIONS: tuple = (plot_cli, latexdoc)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70

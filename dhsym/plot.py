@@ -1,17 +1,17 @@
 """Pictures of DH chains: links, joints and the x/y/z triad of every frame, drawn with matplotlib.
 
-Planar arms are drawn in their plane, spatial arms in 3D with equal axis scaling. The
-numbers come from the same DH steps the algebra uses, so a picture is the formula evaluated.
+Planar arms are drawn in their plane, spatial arms in 3D with equal axis scaling. The numeric
+poses come from dhsym.poses; frame_poses, resolve_values, is_planar and close_loop are
+re-exported here so that one import serves a notebook.
 
 >>> from dhsym.library import load
->>> poses = frame_poses(load("planar2r"), {"theta_1": 0, "theta_2": sympy.pi / 2})
->>> [(frame, pose[:2, 3].round(3).tolist()) for frame, pose in poses]
-[(0, [0.0, 0.0]), (1, [0.5, 0.0]), (2, [0.5, 0.4])]
+>>> ax = draw(load("planar2r"), {"theta_1": "30deg"})
+>>> ax.name
+'rectilinear'
 """
 from __future__ import annotations
 
 import io
-import re
 from dataclasses import dataclass
 from itertools import pairwise
 from pathlib import Path
@@ -19,9 +19,7 @@ from pathlib import Path
 import numpy as np
 import sympy
 
-from .chain import Chain
 from .errors import UserError
-from .expr import parse_expression
 from .output import write_atomic
 from .robotfile import Robot
 
@@ -35,212 +33,8 @@ VIEW = {"elev": 25, "azim": -60}
 FORMATS = ("png", "pdf", "svg")
 
 
-# ---------------------------------------------------------------- numbers
-
-def frame_poses(robot_or_chain, values=None) -> list[tuple]:
-    """The numeric 4×4 pose of every frame (base, 0..n, tool as present) in the first frame.
-
-    `values` maps symbols or their names to numbers (or to expression text such as "30deg").
-    Missing constants come from the robot file's `sample`, missing joint variables are 0.
-
-    >>> from dhsym.library import load
-    >>> [f for f, _ in frame_poses(load("fourbar_right"), {"phi_1": 0})]
-    ['base', 0, 1, 'tool']
-    """
-    return _skeleton(robot_or_chain, values).poses
-
-
-def resolve_values(robot_or_chain, values=None) -> dict:
-    """Every symbol of the chain mapped to a float: given, else sample (constants) or 0 (joints).
-
-    >>> from dhsym.library import load
-    >>> sorted((s.name, v) for s, v in resolve_values(load("planar2r"), {"theta_1": "90deg"}).items())
-    [('a_1', 0.5), ('a_2', 0.4), ('theta_1', 1.5707963267948966), ('theta_2', 0.0)]
-    """
-    chain, sample = _chain_and_sample(robot_or_chain)
-    symbols = {s.name: s for s in _symbols(chain)}
-    given = {}
-    for key, value in (values or {}).items():
-        name = key.name if isinstance(key, sympy.Symbol) else str(key)
-        if name not in symbols:
-            raise UserError(f"{name} is not a symbol of this robot; its symbols are {', '.join(sorted(symbols))}")
-        given[name] = _number(value, name)
-    sample = {str(symbol): value for symbol, value in sample.items()}
-    variables = {v.name for v in chain.joint_variables}
-    resolved, missing = {}, []
-    for name, symbol in symbols.items():
-        if name in given:
-            resolved[symbol] = given[name]
-        elif name in variables:
-            resolved[symbol] = 0.0
-        elif name in sample:
-            resolved[symbol] = _number(sample[name], name)
-        else:
-            missing.append(name)
-    if missing:
-        raise UserError(f"no value for {', '.join(sorted(missing))}; give a number for each "
-                        "(the robot file's sample does not have one)")
-    return resolved
-
-
-def close_loop(first, second, known: dict, unknowns, guess=None, tolerance=1e-10) -> tuple[dict, dict]:
-    """Values of `unknowns` that bring the last frame origins of two chains together.
-
-    A closed mechanism cut at a revolute joint gives two chains from one fixed frame (their base
-    steps place them); closing the loop means both cut ends meet. Solved by Gauss-Newton from
-    `guess` (default 0.5 for every unknown; another guess finds another assembly branch).
-    Returns the full values of each chain, ready for `draw_closed`.
-
-    >>> from dhsym.library import load
-    >>> left, right = close_loop(load("fourbar_left"), load("fourbar_right"), {"phi_1": sympy.pi / 2},
-    ...                          ["theta_1", "phi_2"])
-    >>> round(float(np.degrees(left[sympy.Symbol("theta_1", real=True)])), 1)  # the other branch: 59.9
-    11.1
-    """
-    names = [u.name if isinstance(u, sympy.Symbol) else str(u) for u in unknowns]
-    guess = {(k.name if isinstance(k, sympy.Symbol) else str(k)): _number(v, str(k)) for k, v in (guess or {}).items()}
-    known = {(k.name if isinstance(k, sympy.Symbol) else str(k)): v for k, v in known.items()}
-    own = [{s.name for s in _symbols(_chain_and_sample(c)[0])} for c in (first, second)]
-    strangers = [n for n in list(known) + names if not any(n in symbols for symbols in own)]
-    if strangers:
-        raise UserError(f"{', '.join(strangers)} belong to neither chain")
-    unknown_values = np.array([guess.get(n, 0.5) for n in names], dtype=float)
-
-    def gap(x):
-        given = {**known, **dict(zip(names, x, strict=True))}
-        ends = [frame_poses(chain, {n: v for n, v in given.items() if n in symbols})[-1][1][:3, 3]
-                for chain, symbols in zip((first, second), own, strict=True)]
-        return ends[0] - ends[1]
-
-    for _ in range(60):
-        residual = gap(unknown_values)
-        if np.linalg.norm(residual) < tolerance:
-            break
-        step = 1e-7
-        jacobian = np.column_stack([(gap(unknown_values + step * e) - gap(unknown_values - step * e)) / (2 * step)
-                                    for e in np.eye(len(names))])
-        unknown_values = unknown_values + np.linalg.lstsq(jacobian, -residual, rcond=None)[0]
-    if np.linalg.norm(gap(unknown_values)) > 1e3 * tolerance:
-        raise UserError(f"the loop does not close for these values (gap {np.linalg.norm(gap(unknown_values)):.3g}); "
-                        "the mechanism cannot be assembled there, or try another guess")
-    solved = {**known, **dict(zip(names, unknown_values.tolist(), strict=True))}
-    return tuple(resolve_values(chain, {n: v for n, v in solved.items() if n in symbols})
-                 for chain, symbols in zip((first, second), own, strict=True))
-
-
-def _chain_and_sample(robot_or_chain) -> tuple[Chain, dict]:
-    if isinstance(robot_or_chain, Robot):
-        return robot_or_chain.chain, robot_or_chain.sample
-    if isinstance(robot_or_chain, Chain):
-        return robot_or_chain, {}
-    raise TypeError(f"expected a Robot or a Chain, not {type(robot_or_chain).__name__}")
-
-
-def _symbols(chain: Chain) -> set:
-    fields = [e for row in chain.rows for e in (row.theta, row.d, row.a, row.alpha)]
-    fields += [step.value for step in chain.base + chain.tool]
-    return set().union(*(sympy.sympify(e).free_symbols for e in fields)) | set(chain.joint_variables)
-
-
-def _number(value, name: str) -> float:
-    if isinstance(value, str):
-        value = parse_expression(value)
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise UserError(f"value of {name} must be a number, not {value}") from None
-    if not np.isfinite(number):
-        raise UserError(f"value of {name} must be a finite number")
-    return number
-
-
-def _step_matrix(kind: str, value: float) -> np.ndarray:
-    matrix = np.eye(4)
-    axis = "xyz".index(kind[1])
-    if kind[0] == "T":
-        matrix[axis, 3] = value
-        return matrix
-    i, j = ((1, 2), (2, 0), (0, 1))[axis]  # the plane turned by a rotation about x, y, z
-    c, s = np.cos(value), np.sin(value)
-    matrix[i, i], matrix[i, j], matrix[j, i], matrix[j, j] = c, -s, s, c
-    return matrix
-
-
-@dataclass
-class _Skeleton:
-    """What a picture needs: frame poses, the link polyline and where the joints are."""
-
-    poses: list  # (frame, 4×4 pose)
-    ground: list  # points from the first frame to frame 0 (the fixed base steps)
-    links: list  # points from frame 0 to the last frame, through the corner between d and a
-    joints: list  # (kind "R" or "P", point)
-
-
-def _skeleton(robot_or_chain, values) -> _Skeleton:
-    chain, _ = _chain_and_sample(robot_or_chain)
-    numbers = resolve_values(robot_or_chain, values)
-    pose = np.eye(4)
-
-    def move(steps) -> list:
-        nonlocal pose
-        points = []
-        for step in steps:
-            pose = pose @ _step_matrix(step.kind, float(sympy.sympify(step.value).xreplace(numbers)))
-            points.append(pose[:3, 3].copy())
-        return points
-
-    poses, ground, links, joints = [], [pose[:3, 3].copy()], [], []
-    if chain.base:
-        poses.append(("base", pose.copy()))
-        move(chain.base)
-        ground.append(pose[:3, 3].copy())
-    poses.append((0, pose.copy()))
-    links.append(pose[:3, 3].copy())
-    for number, row in enumerate(chain.rows, 1):
-        if chain.convention == "standard":  # joint i turns about z_{i-1}
-            joints.append((row.joint, pose[:3, 3].copy()))
-        # the corner after Tz(d) (standard) or Tx(a) (modified): a row with both d and a bends there
-        corner = move(row.steps(chain.convention))[1]
-        links.extend([corner, pose[:3, 3].copy()])
-        if chain.convention == "modified":  # joint i turns about z_i
-            joints.append((row.joint, pose[:3, 3].copy()))
-        poses.append((number, pose.copy()))
-    if chain.tool:
-        move(chain.tool)
-        links.append(pose[:3, 3].copy())
-        poses.append(("tool", pose.copy()))
-    return _Skeleton(poses, ground if chain.base else [], _without_repeats(links), joints)
-
-
-def _without_repeats(points: list) -> list:
-    kept = [points[0]]
-    for point in points[1:]:
-        if np.linalg.norm(point - kept[-1]) > 1e-12:
-            kept.append(point)
-    return kept
-
-
-def is_planar(robot_or_chain, values=None) -> bool:
-    """True when every z axis is parallel to the first frame's z, all points lie in one plane
-    normal to it, and no joint is prismatic (a prismatic joint would leave the plane).
-
-    >>> from dhsym.library import load
-    >>> is_planar(load("planar3r")), is_planar(load("scara")), is_planar(load("puma560"))
-    (True, False, False)
-    """
-    return _planar([_skeleton(robot_or_chain, values)])
-
-
-def _planar(skeletons) -> bool:
-    points = np.array([p for s in skeletons for p in s.ground + s.links])
-    tolerance = 1e-9 * max(1.0, _extent(points))
-    return all(
-        abs(abs(pose[2, 2]) - 1) < 1e-9 for s in skeletons for _, pose in s.poses
-    ) and np.ptp(points[:, 2]) < tolerance and all(kind == "R" for s in skeletons for kind, _ in s.joints)
-
-
-def _extent(points: np.ndarray) -> float:
-    return float(np.max(np.ptp(points, axis=0))) if len(points) else 0.0
+from .loops import close_loop  # noqa: F401 - re-exported for notebooks
+from .poses import _extent, _planar, _skeleton, _Skeleton, frame_poses, is_planar, resolve_values  # noqa: F401
 
 
 # ---------------------------------------------------------------- pictures
@@ -601,76 +395,3 @@ def _overlap(a: tuple, b: tuple) -> float:
     width = min(a[2], b[2]) - max(a[0], b[0])
     height = min(a[3], b[3]) - max(a[1], b[1])
     return width * height if width > 0 and height > 0 else 0.0
-
-
-# ---------------------------------------------------------------- the `dhsym plot` command
-
-NAME = "plot"
-_ASSIGNMENT = re.compile(r"\s*([^\W\d]\w*)\s*=(.*)\Z", re.DOTALL)
-
-
-def add_parser(commands) -> None:
-    from . import cli  # cli imports this module, so not at the top
-
-    sub = commands.add_parser(NAME, help="draw the arm (links, joints, frames) as a PNG",
-                              description="Draw the arm with every DH frame as an x/y/z triad (x red, y green, "
-                              "z blue). Constants default to the robot file's sample values, joint variables to 0. "
-                              "Planar arms are drawn in their plane, others in 3D.")
-    sub.add_argument("robot", metavar="ROBOT", help="built-in robot name or path to a robot YAML file")
-    sub.add_argument("--set", dest="constants", metavar="NAME=EXPR", nargs="+", action="extend", default=[],
-                     help="value of a constant, e.g. --set l_1=0.5 l_2=1/3")
-    sub.add_argument("--q", dest="joints", metavar="NAME=EXPR", nargs="+", action="extend", default=[],
-                     help="value of a joint variable, e.g. --q theta_1=30deg d_3=0.2 (default 0)")
-    sub.add_argument("-o", "--output", metavar="FILE", help="picture to write (.png, .pdf or .svg; default ROBOT.png)")
-    sub.add_argument("--no-frames", action="store_true", help="draw links and joints only")
-    sub.add_argument("--3d", dest="three_d", action="store_true", help="3D even when the arm is planar")
-    cli.add_common_options(sub)
-
-
-def run(robot, args) -> str:
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    values = {**parse_assignments(robot, args.constants, "--set"), **parse_assignments(robot, args.joints, "--q")}
-    path = args.output or f"{Path(args.robot).stem}.png"
-    _format(path)  # a wrong suffix is found before any drawing
-    planar = False if args.three_d else None
-    figure = Figure(figsize=(6.4, 5.6) if (planar is None and is_planar(robot, values)) else (7.2, 6.8))
-    FigureCanvasAgg(figure)
-    draw(robot, values, ax=figure, planar=planar, show_frames=not args.no_frames)
-    save(figure, path, inputs=[robot.path])
-    return str(path)
-
-
-def parse_assignments(robot, texts, option: str) -> dict:
-    """`NAME=EXPR` texts to {name: exact value}; --q takes joint variables, --set constants.
-
-    >>> from dhsym.library import load
-    >>> parse_assignments(load("planar2r"), ["theta_1=30deg"], "--q")
-    {'theta_1': pi/6}
-    """
-    symbols = sorted(s.name for s in _symbols(robot.chain))
-    variables = {v.name for v in robot.chain.joint_variables}
-    values = {}
-    for text in texts:
-        match = _ASSIGNMENT.match(text)
-        if not match:
-            raise UserError(f"{option} {text!r}: expected NAME=EXPR, e.g. {option} "
-                            f"{'theta_1=30deg' if option == '--q' else 'l_1=0.5'}")
-        name, expression = match.group(1), match.group(2)
-        if name not in symbols:
-            raise UserError(f"{option} {text!r}: {robot.name} has no symbol {name}; its symbols are "
-                            f"{', '.join(symbols)}")
-        wanted = option == "--q"
-        if (name in variables) != wanted:
-            kind = "a joint variable; use --q" if name in variables else "a constant; use --set"
-            raise UserError(f"{option} {text!r}: {name} is {kind}")
-        try:
-            value = parse_expression(expression)
-        except UserError as error:
-            raise UserError(f"{option} {text!r}: {error.message}") from None
-        if value.free_symbols:
-            raise UserError(f"{option} {text!r}: the value must be a number, not an expression in "
-                            f"{', '.join(sorted(map(str, value.free_symbols)))}")
-        values[name] = value
-    return values

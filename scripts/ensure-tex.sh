@@ -5,9 +5,10 @@ set -u
 missing=()
 command -v pdflatex >/dev/null 2>&1 || missing+=(pdflatex)
 kpsewhich beamer.cls >/dev/null 2>&1 || missing+=(beamer)
+kpsewhich pgfcore.sty >/dev/null 2>&1 || missing+=(pgf)  # beamer needs pgf, in texlive-pictures
 command -v pdftoppm >/dev/null 2>&1 || missing+=(pdftoppm)
 [ ${#missing[@]} -eq 0 ] && exit 0
-packages="texlive-latex-base texlive-latex-recommended texlive-fonts-recommended lmodern poppler-utils"
+packages="texlive-latex-base texlive-latex-recommended texlive-pictures texlive-fonts-recommended lmodern poppler-utils"
 if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
   echo "ensure-tex: installing ${packages} (missing: ${missing[*]})"
   export DEBIAN_FRONTEND=noninteractive

@@ -1,0 +1,181 @@
+"""Numeric poses of a chain's frames at given values: what pictures and loop closure need.
+
+The numbers come from the same DH steps the algebra uses, so a picture is the formula evaluated.
+
+>>> from dhsym.library import load
+>>> poses = frame_poses(load("planar2r"), {"theta_1": 0, "theta_2": sympy.pi / 2})
+>>> [(frame, pose[:2, 3].round(3).tolist()) for frame, pose in poses]
+[(0, [0.0, 0.0]), (1, [0.5, 0.0]), (2, [0.5, 0.4])]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import sympy
+
+from .chain import Chain
+from .errors import UserError
+from .expr import parse_expression
+from .robotfile import Robot
+
+
+def frame_poses(robot_or_chain, values=None) -> list[tuple]:
+    """The numeric 4×4 pose of every frame (base, 0..n, tool as present) in the first frame.
+
+    `values` maps symbols or their names to numbers (or to expression text such as "30deg").
+    Missing constants come from the robot file's `sample`, missing joint variables are 0.
+
+    >>> from dhsym.library import load
+    >>> [f for f, _ in frame_poses(load("fourbar_right"), {"phi_1": 0})]
+    ['base', 0, 1, 'tool']
+    """
+    return _skeleton(robot_or_chain, values).poses
+
+
+def resolve_values(robot_or_chain, values=None) -> dict:
+    """Every symbol of the chain mapped to a float: given, else sample (constants) or 0 (joints).
+
+    >>> from dhsym.library import load
+    >>> sorted((s.name, v) for s, v in resolve_values(load("planar2r"), {"theta_1": "90deg"}).items())
+    [('a_1', 0.5), ('a_2', 0.4), ('theta_1', 1.5707963267948966), ('theta_2', 0.0)]
+    """
+    chain, sample = _chain_and_sample(robot_or_chain)
+    symbols = {s.name: s for s in _symbols(chain)}
+    given = {}
+    for key, value in (values or {}).items():
+        name = key.name if isinstance(key, sympy.Symbol) else str(key)
+        if name not in symbols:
+            raise UserError(f"{name} is not a symbol of this robot; its symbols are {', '.join(sorted(symbols))}")
+        given[name] = _number(value, name)
+    sample = {str(symbol): value for symbol, value in sample.items()}
+    variables = {v.name for v in chain.joint_variables}
+    resolved, missing = {}, []
+    for name, symbol in symbols.items():
+        if name in given:
+            resolved[symbol] = given[name]
+        elif name in variables:
+            resolved[symbol] = 0.0
+        elif name in sample:
+            resolved[symbol] = _number(sample[name], name)
+        else:
+            missing.append(name)
+    if missing:
+        raise UserError(f"no value for {', '.join(sorted(missing))}; give a number for each "
+                        "(the robot file's sample does not have one)")
+    return resolved
+
+
+def _chain_and_sample(robot_or_chain) -> tuple[Chain, dict]:
+    if isinstance(robot_or_chain, Robot):
+        return robot_or_chain.chain, robot_or_chain.sample
+    if isinstance(robot_or_chain, Chain):
+        return robot_or_chain, {}
+    raise TypeError(f"expected a Robot or a Chain, not {type(robot_or_chain).__name__}")
+
+
+def _symbols(chain: Chain) -> set:
+    fields = [e for row in chain.rows for e in (row.theta, row.d, row.a, row.alpha)]
+    fields += [step.value for step in chain.base + chain.tool]
+    return set().union(*(sympy.sympify(e).free_symbols for e in fields)) | set(chain.joint_variables)
+
+
+def _number(value, name: str) -> float:
+    if isinstance(value, str):
+        value = parse_expression(value)
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise UserError(f"value of {name} must be a number, not {value}") from None
+    if not np.isfinite(number):
+        raise UserError(f"value of {name} must be a finite number")
+    return number
+
+
+def _step_matrix(kind: str, value: float) -> np.ndarray:
+    matrix = np.eye(4)
+    axis = "xyz".index(kind[1])
+    if kind[0] == "T":
+        matrix[axis, 3] = value
+        return matrix
+    i, j = ((1, 2), (2, 0), (0, 1))[axis]  # the plane turned by a rotation about x, y, z
+    c, s = np.cos(value), np.sin(value)
+    matrix[i, i], matrix[i, j], matrix[j, i], matrix[j, j] = c, -s, s, c
+    return matrix
+
+
+@dataclass
+class _Skeleton:
+    """What a picture needs: frame poses, the link polyline and where the joints are."""
+
+    poses: list  # (frame, 4×4 pose)
+    ground: list  # points from the first frame to frame 0 (the fixed base steps)
+    links: list  # points from frame 0 to the last frame, through the corner between d and a
+    joints: list  # (kind "R" or "P", point)
+
+
+def _skeleton(robot_or_chain, values) -> _Skeleton:
+    chain, _ = _chain_and_sample(robot_or_chain)
+    numbers = resolve_values(robot_or_chain, values)
+    pose = np.eye(4)
+
+    def move(steps) -> list:
+        nonlocal pose
+        points = []
+        for step in steps:
+            pose = pose @ _step_matrix(step.kind, float(sympy.sympify(step.value).xreplace(numbers)))
+            points.append(pose[:3, 3].copy())
+        return points
+
+    poses, ground, links, joints = [], [pose[:3, 3].copy()], [], []
+    if chain.base:
+        poses.append(("base", pose.copy()))
+        move(chain.base)
+        ground.append(pose[:3, 3].copy())
+    poses.append((0, pose.copy()))
+    links.append(pose[:3, 3].copy())
+    for number, row in enumerate(chain.rows, 1):
+        if chain.convention == "standard":  # joint i turns about z_{i-1}
+            joints.append((row.joint, pose[:3, 3].copy()))
+        # the corner after Tz(d) (standard) or Tx(a) (modified): a row with both d and a bends there
+        corner = move(row.steps(chain.convention))[1]
+        links.extend([corner, pose[:3, 3].copy()])
+        if chain.convention == "modified":  # joint i turns about z_i
+            joints.append((row.joint, pose[:3, 3].copy()))
+        poses.append((number, pose.copy()))
+    if chain.tool:
+        move(chain.tool)
+        links.append(pose[:3, 3].copy())
+        poses.append(("tool", pose.copy()))
+    return _Skeleton(poses, ground if chain.base else [], _without_repeats(links), joints)
+
+
+def _without_repeats(points: list) -> list:
+    kept = [points[0]]
+    for point in points[1:]:
+        if np.linalg.norm(point - kept[-1]) > 1e-12:
+            kept.append(point)
+    return kept
+
+
+def is_planar(robot_or_chain, values=None) -> bool:
+    """True when every z axis is parallel to the first frame's z, all points lie in one plane
+    normal to it, and no joint is prismatic (a prismatic joint would leave the plane).
+
+    >>> from dhsym.library import load
+    >>> is_planar(load("planar3r")), is_planar(load("scara")), is_planar(load("puma560"))
+    (True, False, False)
+    """
+    return _planar([_skeleton(robot_or_chain, values)])
+
+
+def _planar(skeletons) -> bool:
+    points = np.array([p for s in skeletons for p in s.ground + s.links])
+    tolerance = 1e-9 * max(1.0, _extent(points))
+    return all(
+        abs(abs(pose[2, 2]) - 1) < 1e-9 for s in skeletons for _, pose in s.poses
+    ) and np.ptp(points[:, 2]) < tolerance and all(kind == "R" for s in skeletons for kind, _ in s.joints)
+
+
+def _extent(points: np.ndarray) -> float:
+    return float(np.max(np.ptp(points, axis=0))) if len(points) else 0.0
