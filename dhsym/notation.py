@@ -158,6 +158,7 @@ def display_name(name: str, style: str) -> str:
 
 def _latex_base(base: str) -> str:
     name = _GREEK_NAME.get(base, base)
+    name = {"lamda": "lambda", "Lamda": "Lambda"}.get(name, name)  # SymPy's spelling, not TeX's
     if name in greek_unicode and name.lower() not in ("omicron",):
         return "\\" + name if name not in ("Alpha", "Beta", "Epsilon", "Zeta", "Eta", "Iota", "Kappa", "Mu",
                                            "Nu", "Omicron", "Rho", "Tau", "Chi") else name[0]
