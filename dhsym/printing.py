@@ -41,19 +41,22 @@ class _TextbookMixin:
         name = display_name(expr.name, self.style)
         return self._mark(name) if expr in self.marked else name
 
-    def _trig(self, expr):
+    def _trig(self, expr, exp=None):
+        """c12 for a joint-angle sum, else cos(...); LaTeX's Pow printing passes `exp` for sin²."""
         found = self.notation.abbreviation(expr)
         if not found:
-            return self._plain_trig(expr)
+            text = self._plain_trig(expr)
+            return text if exp is None else f"\\left({text}\\right)^{{{exp}}}"
         sign, abbreviation = found
         self.used.add(abbreviation)
-        return (self.minus.strip() if sign < 0 else "") + abbreviation.label(self.style)
+        text = abbreviation.label(self.style) + ("" if exp is None else f"^{{{exp}}}")
+        return (self.minus.strip() if sign < 0 else "") + text
 
-    def _print_cos(self, expr):
-        return self._trig(expr)
+    def _print_cos(self, expr, exp=None):
+        return self._trig(expr, exp)
 
-    def _print_sin(self, expr):
-        return self._trig(expr)
+    def _print_sin(self, expr, exp=None):
+        return self._trig(expr, exp)
 
     def _print_Add(self, expr, order=None):
         out = ""
@@ -129,6 +132,8 @@ class TextPrinter(_TextbookMixin, StrPrinter):
             return "√" + (base if expr.base.is_Atom else f"({base})")
         if expr.exp.is_Integer and expr.exp > 1:
             base = self._factor(expr.base) if not expr.base.is_Atom else self._print(expr.base)
+            if expr.base.is_Function and not self.notation.abbreviation(expr.base):
+                base = f"({base})"  # (sin α)², not sin α²
             return base + ("^" + str(expr.exp) if self.style == "ascii" else _superscript(str(expr.exp)))
         return super()._print_Pow(expr, rational)
 

@@ -56,3 +56,10 @@ def test_wide_matrices_become_element_lists():
     robot = load("puma560")
     text = text_matrix(robot.chain.fk(), TextPrinter(robot.chain.joint_variables), width=100)
     assert text.splitlines()[3] == "px  = c1(a2 c2 + a3 c23 − d4 s23) − d3 s1"
+
+
+def test_squares_of_sin_and_cos():
+    alpha = sympy.Symbol("alpha", real=True)
+    expr = sympy.sin(alpha) ** 2 + sympy.cos(t[0]) ** 2
+    assert LatexPrinter(t[:1]).doprint(expr) == "\\left(\\sin{\\alpha}\\right)^{2} + c_{1}^{2}"
+    assert TextPrinter(t[:1]).doprint(expr) == "(sin α)² + c1²"
