@@ -72,16 +72,23 @@ class Comparison:
             lines.append(line + (f" — {e.reason}" if e.reason else ""))
         return "\n".join(lines)
 
-    def markdown(self, joint_variables=()) -> str:
-        """A table for notebooks: every element with its verdict; errata in bold."""
+    def markdown(self, joint_variables=(), fold: bool = False) -> str:
+        """A table for notebooks: every element with its verdict; errata in bold.
+
+        With `fold`, a comparison that fully agrees shows only its verdict line and keeps the
+        table behind a click, so that the errata stand out in a long notebook.
+        """
         printer = LatexPrinter(joint_variables)
         icon = "✅" if self.ok else "❌"
-        rows = [f"**{icon} {self.summary()}**", "", "| element | printed | derived | verdict |", "|---|---|---|---|"]
+        table = ["| element | printed | derived | verdict |", "|---|---|---|---|"]
         for e in self.elements:
             verdict = "agrees" if e.ok else "**erratum**" + (f": {e.reason}" if e.reason else "")
-            rows.append(f"| ({e.row},{e.column}) | ${printer.doprint(e.printed)}$ | ${printer.doprint(e.derived)}$ "
-                        f"| {verdict} |")
-        return "\n".join(rows)
+            table.append(f"| ({e.row},{e.column}) | ${printer.doprint(e.printed)}$ | ${printer.doprint(e.derived)}$ "
+                         f"| {verdict} |")
+        headline = f"{icon} {self.summary()}"
+        if fold and self.ok:
+            return f"<details><summary>{headline}</summary>\n\n" + "\n".join(table) + "\n\n</details>"
+        return "\n".join([f"**{headline}**", ""] + table)
 
     def _repr_markdown_(self) -> str:
         return self.markdown()
