@@ -28,25 +28,31 @@ class Latex:
         return self.latex
 
 
+def _variables(robot_or_chain) -> list:
+    """Joint variables of a Robot or a Chain (for chains built in Python)."""
+    return getattr(robot_or_chain, "chain", robot_or_chain).joint_variables
+
+
 def table(robot) -> Latex:
     """The DH table in its convention's column order; joint variables starred."""
     return Latex(latex_table(robot))
 
 
 def matrix(robot, value, name: str = "", legend: bool = True) -> Latex:
-    """Any matrix of the robot in c/s notation, with its name and the legend below it."""
-    printer = LatexPrinter(robot.chain.joint_variables)
+    """Any matrix (or vector) of a robot or chain in c/s notation, with its name and legend."""
+    printer = LatexPrinter(_variables(robot))
     body = (f"{name} = " if name else "") + latex_matrix(value, printer)
     notes = latex_legend(printer) if legend else ""
     return Latex(body + (f"\\\\[4pt]\n\\scriptstyle {notes}" if notes else ""))
 
 
 def transform(robot, i, j, raw: bool = False) -> Latex:
-    """{i}T_{j} of the robot, simplified unless `raw`."""
-    return matrix(robot, robot.chain.transform(i, j, raw=raw), transform_title(i, j, "latex"))
+    """{i}T_{j} of a robot or chain, simplified unless `raw`."""
+    chain = getattr(robot, "chain", robot)
+    return matrix(chain, chain.transform(i, j, raw=raw), transform_title(i, j, "latex"))
 
 
 def expression(robot, value, name: str = "") -> Latex:
     """One expression in c/s notation, e.g. a position component."""
-    printer = LatexPrinter(robot.chain.joint_variables)
+    printer = LatexPrinter(_variables(robot))
     return Latex((f"{name} = " if name else "") + printer.doprint(value))

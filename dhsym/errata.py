@@ -13,6 +13,11 @@ what is correct, and (when the caller knows) why they differ.
 >>> print(result.report([t1]))
 slide 4: 3 of 4 elements agree; 1 erratum
   erratum at (2,2): printed l1 c1, correct l1 s1
+
+Only some elements printed? Pass them by position:
+
+>>> compare_printed({(1, 2): "l_1*cos(theta_1)"}, derived, "spoken").ok
+True
 """
 from __future__ import annotations
 
@@ -97,18 +102,26 @@ class Comparison:
 def compare_printed(printed, derived, title: str = "printed result", reasons=None) -> Comparison:
     """Compare a transcription with the derived matrix, vector or expression.
 
-    `printed` is a SymPy object or nested lists of strings/expressions of the derived shape;
-    strings are read with dhsym's safe parser. `reasons` maps (row, column), counted from 1,
+    `printed` is a SymPy object or nested lists of strings/expressions of the derived shape,
+    or a dict {(row, column): value} (counted from 1) when the lecture printed only some
+    elements; strings are read with dhsym's safe parser. `reasons` maps (row, column), counted from 1,
     to a sentence explaining an expected erratum (slip, OCR error, disagreement).
     """
     derived = sympy.Matrix(derived) if not isinstance(derived, sympy.Expr) else sympy.Matrix([[derived]])
+    reasons = reasons or {}
+    if isinstance(printed, dict):
+        result = Comparison(title)
+        for (r, c), value in sorted(printed.items()):
+            expr = _read(value)
+            result.elements.append(ElementCheck(r, c, expr, derived[r - 1, c - 1], check(expr, derived[r - 1, c - 1]),
+                                                reasons.get((r, c), "")))
+        return result
     printed = _as_matrix(printed)
     if printed.shape != derived.shape:
         if printed.shape == derived.T.shape and 1 in printed.shape:
             printed = printed.T
         else:
             raise ValueError(f"printed shape {printed.shape} differs from derived shape {derived.shape}")
-    reasons = reasons or {}
     result = Comparison(title)
     for r in range(derived.rows):
         for c in range(derived.cols):
