@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from dhsym import latexdoc
+from dhsym import latexdoc, texlayout, texwidth
 from dhsym.cli import main
 from dhsym.library import builtin_names, load
 from dhsym.printing import LatexPrinter
@@ -131,7 +131,7 @@ def test_width_estimate_matches_tex(compiled):
     assert len(measured) == len(elements)
     for number, element in enumerate(elements):
         if measured[number] > 20:  # 10 pt font: 1 em = 10 pt
-            ratio = latexdoc.math_width(element) * 10 / measured[number]
+            ratio = texwidth.math_width(element) * 10 / measured[number]
             assert 0.98 <= ratio <= 1.15, (element, ratio)
 
 
@@ -177,7 +177,7 @@ def test_elements_come_column_by_column_and_a_column_stays_on_one_frame():
         frames = _frames(latexdoc.document(load(name), "slides"))
         labels = [re.findall(r"^([rp]_\{\w+\}) &=", frame, re.MULTILINE) for frame in frames if "Result" in frame]
         order = [label for frame in labels for label in frame]
-        assert order == [latexdoc.element_name(r, c) for c in range(4) for r in range(3)]
+        assert order == [texlayout.element_name(r, c) for c in range(4) for r in range(3)]
         for frame in labels:
             assert len(frame) % 3 == 0, (name, frame)
 
@@ -186,23 +186,23 @@ def test_long_elements_break_before_a_sign_at_the_outermost_bracket():
     slides = latexdoc.document(load("iiwa7"), "slides")
     continuations = re.findall(r"^&\\quad \{\}([+-]) ", slides, re.MULTILINE)
     assert continuations, "the 7-axis arm's elements need more than one line"
-    page = latexdoc.PAGES["slides"]
+    page = texlayout.PAGES["slides"]
     line_pattern = r"^(?:[rp]_\{\w+\} &= |&\\quad \{\})(.*?)(?: \\\\(?:\[[\d.]+pt\])?)?$"
     for line in re.findall(line_pattern, slides, re.MULTILINE):
-        assert latexdoc.math_width(line) <= page.width
+        assert texwidth.math_width(line) <= page.width
 
 
 def test_break_lines_keeps_every_character_and_never_splits_a_group():
-    element = latexdoc.LatexPrinter(load("iiwa7").chain.joint_variables).doprint(load("iiwa7").chain.fk()[0, 0])
-    lines = latexdoc.break_lines(element, 12, 11)
+    element = LatexPrinter(load("iiwa7").chain.joint_variables).doprint(load("iiwa7").chain.fk()[0, 0])
+    lines = texlayout.break_lines(element, 12, 11)
     assert len(lines) > 2
     assert " ".join(lines) == element
     for line in lines:
         assert line.count("{") - line.count("\\{") == line.count("}") - line.count("\\}")
-        assert latexdoc.math_width("{}" + line) <= 12 or not latexdoc.break_points(line)
+        assert texwidth.math_width("{}" + line) <= 12 or not texlayout.break_points(line)
     # the outermost sign first, unless that leaves a line less than half full
-    assert latexdoc.break_lines("x_{1} x_{2} x_{3} + (b + c)", 5.5, 5.5) == ["x_{1} x_{2} x_{3}", "+ (b + c)"]
-    assert latexdoc.break_lines("a + (b + c)", 3.5, 3.5) == ["a + (b", "+ c)"]
+    assert texlayout.break_lines("x_{1} x_{2} x_{3} + (b + c)", 5.5, 5.5) == ["x_{1} x_{2} x_{3}", "+ (b + c)"]
+    assert texlayout.break_lines("a + (b + c)", 3.5, 3.5) == ["a + (b", "+ c)"]
 
 
 def test_steps_show_the_product_and_simplified_intermediate_results():

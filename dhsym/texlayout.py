@@ -1,0 +1,229 @@
+r"""Laying out LaTeX math on a page that never shrinks anything: a matrix as a ``bmatrix`` or
+as named elements, a long element broken over lines, rows of ``aligned``.
+
+Rules (widths come from `texwidth.math_width`; 3 % of every line is kept free):
+
+* A matrix is a ``bmatrix`` at the body size when it fits the line.
+* Otherwise the matrix is named, ``{}^0T_6 = [r_{11} … p_z; 0 0 0 1]``, and its elements
+  follow column by column as in Craig and Spong (r_{11}, r_{21}, r_{31}, r_{12}, …, p_z).
+* An element wider than the line breaks before a ``+`` or ``-``, at the outermost bracket
+  level that leaves the line at least half full; continuation lines are indented by a quad.
+* A step ``{}^0T_3 = {}^0T_2\,{}^2T_3`` writes its two factor matrices out only when both
+  factors and the product fit the line as matrices; otherwise it is laid out as its product.
+
+Pages: slides are beamer 16:9 at 11 pt (398 pt wide); the article is A4 at 11 pt with 25 mm
+margins (455 pt); a snippet fits a plain ``article`` at 10 pt (345 pt) with ``amsmath``.
+Heights are estimates in pt, measured once with pdflatex, so that slides can be packed.
+
+>>> rotation = [["c_{1}", "- s_{1}", "0", "0"], ["s_{1}", "c_{1}", "0", "0"], ["0", "0", "1", "0"],
+...             ["0", "0", "0", "1"]]
+>>> [type(item).__name__ for item in matrix_items("{}^{0}T_{1}", rotation, PAGES["snippet"])]  # one bmatrix
+['Block']
+>>> element = " + ".join(f"a_{{{k}}} c_{{{k}}}" for k in range(1, 30))  # wider than the line
+>>> named, elements = matrix_items("{}^{0}T_{6}", [[element] * 4] * 3 + [["0", "0", "0", "1"]], PAGES["snippet"])
+>>> named.latex.splitlines()[3:5]  # the matrix of names; the elements follow on lines of their own
+['r_{11} & r_{12} & r_{13} & p_{x} \\\\', 'r_{21} & r_{22} & r_{23} & p_{y} \\\\']
+>>> len(elements.columns[0][0])  # r_{11} = a_{1} c_{1} + …, broken into lines
+4
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .render import ELEMENT_NAMES
+from .texwidth import math_width
+
+# ---------------------------------------------------------------- pages and measured heights
+
+@dataclass(frozen=True)
+class Page:
+    """Line width and font size in pt; the height a frame offers under its title (None where
+    pages break by themselves)."""
+
+    width_pt: float
+    font_pt: float
+    height_pt: float | None = None
+
+    @property
+    def width(self) -> float:
+        """The line width in em that the layout may fill."""
+        return self.width_pt / self.font_pt * 0.97
+
+    def em(self, points: float) -> float:
+        return points / self.font_pt
+
+
+PAGES = {"slides": Page(398.3, 10.95, 222.0), "article": Page(455.2, 10.95), "snippet": Page(345.0, 10.0)}
+
+# Measured with pdflatex in a beamer frame at 11 pt (pt): a row of `aligned` and of a matrix
+# or array (taller with a \frac), a line of text, what a display adds (the first on a frame,
+# each further one), the space between element columns; both bmatrix brackets; the column gap.
+ALIGNED_ROW, ALIGNED_FRACTION_ROW, ARRAY_ROW, ARRAY_FRACTION_ROW = 16.6, 28.5, 13.6, 16.6
+TEXT_LINE, FIRST_DISPLAY, NEXT_DISPLAY, COLUMN_SKIP = 13.6, 16.0, 4.5, 4.0
+BRACKETS_PT, COLUMN_GAP_PT = 13.4, 10.0
+ALIGNED_EXTRA, LEGEND_GAP, TEXT_CHARACTER = 1.0, 2.0, 0.5  # em: around `&=`, between entries, per character
+
+
+# ---------------------------------------------------------------- blocks of a document
+
+@dataclass
+class Block:
+    """A display or a paragraph, with its estimated height in pt."""
+
+    latex: str
+    height: float
+    is_display: bool = True
+    keep_with_next: bool = False
+    alone: tuple[str, str] | None = None  # (frame title, latex) when this block starts a frame
+
+
+@dataclass
+class Rows:
+    """Rows of `aligned`: columns of elements of lines, each line (latex, height). A frame
+    breaks between columns if it can, else between elements, else between lines."""
+
+    columns: list
+    keep_with_next: bool = False
+
+    @property
+    def height(self) -> float:
+        return sum(height for column in self.columns for element in column for _, height in element)
+
+
+def display(body: str, height: float) -> Block:
+    """`body` as displayed math, \\[ … \\]."""
+    return Block(f"\\[\n{body}\n\\]", height)
+
+
+def paragraph(latex: str, page: Page) -> Block:
+    """A paragraph of text, its height estimated from its length."""
+    return Block(latex, (int(len(latex) * TEXT_CHARACTER / page.width) + 1) * TEXT_LINE, is_display=False)
+
+
+def row_height(cells, array: bool) -> float:
+    """The height in pt of a row of a matrix or array (`array`) or of `aligned`."""
+    fraction = any("\\frac" in cell for cell in cells)
+    if array:
+        return ARRAY_FRACTION_ROW if fraction else ARRAY_ROW
+    return ALIGNED_FRACTION_ROW if fraction else ALIGNED_ROW
+
+
+def lines_under(node, level: int) -> list[tuple[str, float, str]]:
+    """(latex, height, what it starts: "line", "element" or "column") for each line under `node`
+    of a `Rows` (level 0: all its columns, 1: a column, 2: an element, 3: a line)."""
+    if level == 3:
+        return [(*node, "line")]
+    if level == 2:
+        return [(*line, "element" if n == 0 else "line") for n, line in enumerate(node)]
+    if level == 1:
+        lines = [line for element in node for line in lines_under(element, 2)]
+        return [(lines[0][0], lines[0][1] + COLUMN_SKIP, "column")] + lines[1:]
+    return [line for column in node for line in lines_under(column, 1)]
+
+
+def aligned_display(lines, environment: str = "aligned") -> Block:
+    """Lines as one display, a little space before each new column. In `align*` (article,
+    snippet) a page may break between elements."""
+    body = lines[0][0]
+    for latex, _, starts in lines[1:]:
+        allow_break = "\\displaybreak[0]" if environment == "align*" and starts != "line" else ""
+        body += f"{allow_break} \\\\" + (f"[{COLUMN_SKIP:g}pt]" if starts == "column" else "") + "\n" + latex
+    latex = f"\\begin{{{environment}}}\n{body}\n\\end{{{environment}}}"
+    return Block(f"\\[\n{latex}\n\\]" if environment == "aligned" else latex, sum(line[1] for line in lines))
+
+
+# ---------------------------------------------------------------- matrices
+
+def bmatrix(cells) -> str:
+    return "\\begin{bmatrix}\n" + " \\\\\n".join(" & ".join(row) for row in cells) + "\n\\end{bmatrix}"
+
+
+def bmatrix_width(cells, page: Page) -> float:
+    columns = [max(math_width(row[c]) for row in cells) for c in range(len(cells[0]))]
+    return sum(columns) + page.em(BRACKETS_PT + COLUMN_GAP_PT * (len(columns) - 1))
+
+
+def matrix_height(cells) -> float:
+    return 3.0 + sum(row_height(row, array=True) for row in cells)
+
+
+def element_name(row: int, column: int) -> str:
+    """r_{11} … r_{33}, p_{x} p_{y} p_{z}."""
+    name = ELEMENT_NAMES[row][column]
+    return f"{name[0]}_{{{name[1:]}}}"
+
+
+def matrix_items(lhs: str, cells, page: Page, short_lhs: str | None = None) -> list:
+    """`lhs = [matrix]` as one display when it fits the line, else the named matrix and its
+    elements column by column. `short_lhs` replaces `lhs` where the full one is too wide."""
+    if math_width(lhs + " =") + bmatrix_width(cells, page) <= page.width:
+        return [display(f"{lhs} =\n{bmatrix(cells)}", matrix_height(cells))]
+    names = [[element_name(r, c) for c in range(4)] for r in range(3)] + [cells[3]]
+    if short_lhs and math_width(lhs + " =") + bmatrix_width(names, page) > page.width:
+        lhs = short_lhs
+    columns = [[element_rows(names[r][c], cells[r][c], page) for r in range(3)] for c in range(4)]
+    return [display(f"{lhs} =\n{bmatrix(names)}", matrix_height(names)), Rows(columns)]
+
+
+def element_rows(label: str, tex: str, page: Page) -> list[tuple[str, float]]:
+    """`label &= tex` as lines of an aligned block, broken when wider than the page."""
+    first = page.width - math_width(label + " =") - ALIGNED_EXTRA
+    lines = break_lines(tex, first, first - 1.0)
+    rows = [f"{label} &= {lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]
+    return [(row, row_height([row], array=False)) for row in rows]
+
+
+def step_items(name: str, product: str, factors, result, page: Page) -> list:
+    """`name = product = [A][B] = [C]` when all three matrices fit, else `matrix_items`."""
+    first = math_width(f"{name} = {product} =") + sum(bmatrix_width(f, page) for f in factors) + ALIGNED_EXTRA
+    second = math_width(f"{name} =") + bmatrix_width(result, page) + ALIGNED_EXTRA
+    if first > page.width or second > page.width:
+        return matrix_items(f"{name} = {product}", result, page, short_lhs=name)
+    body = (f"\\begin{{aligned}}\n{name} &= {product} =\n" + "\n".join(bmatrix(f) for f in factors)
+            + f" \\\\\n&= {bmatrix(result)}\n\\end{{aligned}}")
+    return [display(body, max(matrix_height(f) for f in factors) + matrix_height(result) + 3.0)]
+
+
+# ---------------------------------------------------------------- breaking a long element
+
+def break_points(tex: str) -> list[tuple[int, int]]:
+    """(position, bracket depth) of each ' + ' / ' - ' outside any {…} group.
+
+    >>> break_points("c_{1}[a + b] - s_{2}")
+    [(7, 1), (12, 0)]
+    """
+    points, braces, brackets, i = [], 0, 0, 0
+    while i < len(tex):
+        if tex.startswith(("\\{", "\\}"), i):  # brackets that print, not TeX groups
+            brackets += 1 if tex[i + 1] == "{" else -1
+            i += 2
+            continue
+        braces += (tex[i] == "{") - (tex[i] == "}")
+        brackets += (tex[i] in "([") - (tex[i] in ")]")
+        if braces == 0 and tex.startswith((" + ", " - "), i):
+            points.append((i, brackets))
+        i += 1
+    return points
+
+
+def break_lines(tex: str, first: float, rest: float) -> list[str]:
+    """Split `tex` before '+'/'-' into lines of at most `first`, then `rest` em; the later
+    lines start with their sign (TeX does not mind brackets left open on a line).
+
+    >>> break_lines("a + b + c", 3, 3)
+    ['a + b', '+ c']
+    """
+    points, lines, start, width = break_points(tex), [], 0, first
+    while math_width(("{}" if lines else "") + tex[start:]) > width:
+        prefix = "{}" if lines else ""
+        later = [(i, depth) for i, depth in points if i > start]
+        if not later:
+            break  # one term wider than the line: nothing left to break
+        fitting = [(i, depth) for i, depth in later if math_width(prefix + tex[start:i]) <= width] or later[:1]
+        outermost = min(depth for _, depth in fitting)
+        cut = max(i for i, depth in fitting if depth == outermost)
+        if math_width(prefix + tex[start:cut]) < width / 2:  # too short a line: fill it instead
+            cut = max(i for i, _ in fitting)
+        lines.append(tex[start:cut])
+        start, width = cut + 1, rest
+    return lines + [tex[start:]]
