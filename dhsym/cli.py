@@ -13,11 +13,9 @@ import os
 import sys
 import warnings
 
-from . import latexdoc
-from . import plot_cli
-from . import render
-from .errors import UserError
+from . import latexdoc, plot_cli, render
 from .budget import CommandTooSlow, SimplificationTimeout, time_budget
+from .errors import UserError
 from .library import builtin_names, load
 from .printing import LatexPrinter
 
@@ -51,7 +49,8 @@ def build_parser() -> argparse.ArgumentParser:
     def robot_command(name, help_text, description):
         sub = commands.add_parser(name, help=help_text, description=description)
         sub.add_argument("robot", metavar="ROBOT", help="built-in robot name or path to a robot YAML file")
-        sub.add_argument("--format", choices=("text", "latex", "json"), default="text", help="output format (default text)")
+        sub.add_argument("--format", choices=("text", "latex", "json"), default="text",
+                         help="output format (default text)")
         sub.add_argument("--ascii", action="store_true", help="plain ASCII text instead of Unicode")
         sub.add_argument("--width", type=int, default=100, metavar="N",
                          help="text width; wider matrices are printed element by element (default 100)")
@@ -195,8 +194,8 @@ def _table(robot, args) -> str:
         return json.dumps({"robot": robot.name, "convention": robot.chain.convention, "rows": rows}, indent=2)
     if args.format == "latex":
         return "\\[\n" + render.latex_table(robot) + "\n\\]"
-    note = render.CONVENTION_NOTES[robot.chain.convention] + "; * marks joint variables"
-    return _header(robot, "DH table", args.ascii) + "\n" + (note.encode("ascii", "replace").decode() if args.ascii else note) \
+    note = render.convention_note(robot.chain.convention, ascii=args.ascii) + "; * marks joint variables"
+    return _header(robot, "DH table", args.ascii) + "\n" + note \
         + "\n\n" + render.text_table(robot, ascii=args.ascii)
 
 
@@ -217,7 +216,8 @@ def _results(robot, results, args) -> str:
         return json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False)
     if args.format == "latex":
         printer = LatexPrinter(robot.chain.joint_variables)
-        blocks = [f"{render.transform_title(i, j, 'latex')} =\n{render.latex_matrix(m, printer)}" for i, j, m in results]
+        blocks = [f"{render.transform_title(i, j, 'latex')} =\n{render.latex_matrix(m, printer)}"
+                  for i, j, m in results]
         legend = render.latex_legend(printer)
         return "\n\n".join(f"\\[\n{b}\n\\]" for b in blocks) + (f"\n\nwhere ${legend}$" if legend else "")
     printer = render.text_printer(robot, ascii=args.ascii)

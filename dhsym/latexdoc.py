@@ -16,10 +16,9 @@ from __future__ import annotations
 
 import unicodedata
 
-from sympy.printing.pretty.pretty_symbology import greek_unicode
-
 from .errors import UserError
 from .latexsections import Section, sections
+from .notation import GREEK_NAMES, greek_latex
 from .output import write_atomic
 from .printing import LatexPrinter
 from .slidepacking import pack
@@ -135,9 +134,6 @@ _TEXT_ESCAPES = {"\\": "\\textbackslash{}", "&": "\\&", "%": "\\%", "$": "\\$", 
                  "−": "$-$", "→": "$\\to$", "×": "$\\times$", "±": "$\\pm$", "≤": "$\\leq$", "≥": "$\\geq$",
                  "≈": "$\\approx$", "°": "\\textdegree{}", "…": "\\dots{}", "–": "--", "—": "---",
                  "‘": "`", "’": "'", "“": "``", "”": "''"}
-_GREEK_LETTERS = {letter: name for name, letter in greek_unicode.items()}
-_GREEK_COMMANDS = {name for name in greek_unicode if name.islower() and name not in ("omicron", "lamda")} | {
-    "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega"}
 
 
 def tex_text(text: str) -> str:
@@ -150,9 +146,9 @@ def tex_text(text: str) -> str:
     for ch in text:
         if ch in _TEXT_ESCAPES:
             out.append(_TEXT_ESCAPES[ch])
-        elif ch in _GREEK_LETTERS:
-            name = _GREEK_LETTERS[ch]
-            out.append(f"$\\{name}$" if name in _GREEK_COMMANDS else name[0])
+        elif ch in GREEK_NAMES:
+            tex = greek_latex(GREEK_NAMES[ch])
+            out.append(f"${tex}$" if tex.startswith("\\") else tex)
         elif ch.isascii() or unicodedata.name(ch, "").startswith("LATIN"):
             out.append(ch if ch.isprintable() else " ")
         else:

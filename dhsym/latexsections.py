@@ -142,7 +142,7 @@ def legend_items(printer: LatexPrinter, page: Page) -> list:
     notes = []
     if any(sign < 0 for a in used for _, sign in a.indices):
         notes.append("a bar over a joint number marks an angle that is subtracted")
-    if any(number >= 10 for a in used for number, _ in a.indices):
+    if any(a.wide for a in used):
         notes.append("commas separate the joint numbers when one of them has two digits")
     remark = f" ({'; '.join(notes)})" if notes else ""
     items: list = [Block(f"where{remark}", TEXT_LINE * (1 + len(notes)), is_display=False, keep_with_next=True,

@@ -16,48 +16,65 @@ separated by commas, so ``c_{1,10}`` cannot be misread as joint 110.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy
 from sympy.printing.conventions import split_super_sub
 from sympy.printing.pretty.pretty_symbology import greek_unicode
 
-_GREEK_NAME = {letter: name for name, letter in greek_unicode.items()}
+GREEK_NAMES = {letter: name for name, letter in greek_unicode.items()}  # 'θ' -> 'theta'
+_GREEK_WITHOUT_COMMAND = {"Alpha", "Beta", "Epsilon", "Zeta", "Eta", "Iota", "Kappa", "Mu", "Nu", "Omicron",
+                          "omicron", "Rho", "Tau", "Chi"}  # written as Latin letters in TeX
 _COMBINING_BAR = "\u0305"
 
 
-@dataclass(frozen=True, order=True)
+@dataclass(frozen=True)
 class Abbreviation:
     """``c`` or ``s`` of a signed sum of joint angles, e.g. ('c', ((1, 1), (2, 1)))."""
 
     function: str
-    indices: tuple  # ((joint number, +1 or -1), ...), ascending, the first one positive
+    indices: tuple  # ((joint label, +1 or -1), ...) in joint order, the first one positive
+    order: tuple = field(default=(), repr=False, compare=False)  # joint positions, for sorting
+
+    @property
+    def wide(self) -> bool:
+        """Whether some label has more than one character, so labels need commas: c_{1,10}."""
+        return any(len(str(label)) > 1 for label, _ in self.indices)
 
     def label(self, style: str) -> str:
         """c12 (unicode/ascii), c_{12} (latex); c(12-4) in ascii when a joint is subtracted."""
-        wide = any(number >= 10 for number, _ in self.indices)
-        joined = ("," if wide else "").join(_index_text(n, s, style) for n, s in self.indices)
+        joined = ("," if self.wide else "").join(_index_text(n, s, style) for n, s in self.indices)
         if style == "latex":
             return f"{self.function}_{{{joined}}}"
-        if style == "ascii" and (wide or any(s < 0 for _, s in self.indices)):
+        if style == "ascii" and (self.wide or any(s < 0 for _, s in self.indices)):
             joined = f"({joined})"
         return self.function + joined
 
     def sort_key(self) -> tuple:
-        return (self.indices[0][0], len(self.indices), self.indices, self.function != "c")
+        order = self.order or tuple(range(len(self.indices)))
+        return (order[0], len(self.indices), order, self.function != "c")
 
 
 class Notation:
     """Knows the joint variables of one chain, in joint order."""
 
     def __init__(self, joint_variables):
-        """Joint numbers come from the names' subscripts (θ4, θ5, θ6 of a wrist give c4, c5,
-        c6) when every name has a distinct numeric one, else from the row order."""
+        """Joint labels come from the names' subscripts when every joint variable has a
+        distinct one: θ4, θ5, θ6 of a wrist give c4, c5, c6, and a general row in θ_i gives c_i.
+        Otherwise joints are numbered by row."""
         joint_variables = list(joint_variables)
-        numbers = [_subscript_number(s.name) for s in joint_variables]
-        if None in numbers or len(set(numbers)) != len(numbers):
-            numbers = range(1, len(joint_variables) + 1)
-        self.index = dict(zip(joint_variables, numbers))
+        labels = [_subscript(s.name) for s in joint_variables]
+        if None in labels or len(set(labels)) != len(labels):
+            labels = list(range(1, len(joint_variables) + 1))
+        elif all(label.isdigit() for label in labels):
+            labels = [int(label) for label in labels]
+        self.label = dict(zip(joint_variables, labels))
+        self.position = {symbol: k for k, symbol in enumerate(joint_variables, 1)}
+
+    @property
+    def index(self) -> dict:
+        """Joint variable -> its label (a number, or a subscript such as 'i')."""
+        return self.label
 
     def abbreviation(self, expr: sympy.Expr) -> tuple[int, Abbreviation] | None:
         """(sign, abbreviation) if expr is cos/sin of a signed sum of joint angles, else None."""
@@ -66,23 +83,24 @@ class Notation:
         terms = []
         for term in sympy.Add.make_args(expr.args[0]):
             coefficient, rest = term.as_coeff_Mul()
-            if rest not in self.index or coefficient not in (1, -1):
+            if rest not in self.position or coefficient not in (1, -1):
                 return None
-            terms.append((self.index[rest], int(coefficient)))
-        terms.sort()
+            terms.append((self.position[rest], self.label[rest], int(coefficient)))
+        terms.sort(key=lambda t: t[0])
         sign = 1
-        if terms[0][1] < 0:
-            terms = [(i, -s) for i, s in terms]
+        if terms[0][2] < 0:
+            terms = [(p, label, -s) for p, label, s in terms]
             sign = 1 if isinstance(expr, sympy.cos) else -1
-        return sign, Abbreviation("c" if isinstance(expr, sympy.cos) else "s", tuple(terms))
+        function = "c" if isinstance(expr, sympy.cos) else "s"
+        return sign, Abbreviation(function, tuple((label, s) for _, label, s in terms), tuple(p for p, _, _ in terms))
 
-    def name_of(self, number: int) -> str:
-        """The symbol name of joint `number`, as the robot file spells it."""
-        return next(symbol.name for symbol, n in self.index.items() if n == number)
+    def name_of(self, label) -> str:
+        """The symbol name of the joint with this label, as the robot file spells it."""
+        return next(symbol.name for symbol, own in self.label.items() if own == label)
 
     def meaning(self, abbreviation: Abbreviation, style: str) -> str:
         """What an abbreviation stands for: 'cos θ1' or 'sin(θ2 + θ3)'."""
-        names = {number: symbol for symbol, number in self.index.items()}
+        names = {label: symbol for symbol, label in self.label.items()}
         angle = ""
         for position, (number, sign) in enumerate(abbreviation.indices):
             name = display_name(names[number].name, style)
@@ -106,8 +124,8 @@ class Notation:
             found = self.abbreviation(base)
             if found:
                 yield found[1].sort_key()
-            elif base in self.index:
-                yield (self.index[base], 0, (), False)
+            elif base in self.position:
+                yield (self.position[base], 0, (), False)
             elif base.is_Add:
                 inner = [min(self._atom_keys(t), default=None) for t in base.args]
                 inner = [k for k in inner if k is not None]
@@ -115,27 +133,29 @@ class Notation:
                     yield tuple(min(inner)[:1]) + (99, (), True)
 
     def factor_key(self, factor: sympy.Expr) -> tuple:
-        """Within a product: plain constants, then joint cos/sin in joint order, then brackets."""
+        """Within a product: lengths, then joint cos/sin in joint order, then other functions
+        (cos α of a symbolic twist), then brackets: a_i c_i, −s_i cos α_i, c1(…)."""
         base = factor.base if factor.is_Pow else factor
         found = self.abbreviation(base)
         if found:
             return (1, found[1].sort_key(), sympy.default_sort_key(factor))
-        if base.is_Add:
-            return (2, (), sympy.default_sort_key(factor))
-        return (0, (), sympy.default_sort_key(factor))
+        rank = 3 if base.is_Add else 2 if base.is_Function else 0
+        return (rank, (), sympy.default_sort_key(factor))
 
 
-def _subscript_number(name: str) -> int | None:
+def _subscript(name: str) -> str | None:
     _, _, subs = split_super_sub(name)
     text = subs[0].strip("{}") if len(subs) == 1 else ""
-    return int(text) if text.isdigit() else None
+    return text if text.isalnum() else None
 
 
-def _index_text(number: int, sign: int, style: str) -> str:
-    text = str(number)
+def _index_text(label, sign: int, style: str) -> str:
+    text = str(label)
     if sign > 0:
         return text
-    return {"latex": f"\\bar{{{text}}}", "unicode": _COMBINING_BAR.join(text) + _COMBINING_BAR, "ascii": f"-{text}"}[style]
+    if style == "latex":
+        return f"\\bar{{{text}}}"
+    return _COMBINING_BAR.join(text) + _COMBINING_BAR if style == "unicode" else f"-{text}"
 
 
 def display_name(name: str, style: str) -> str:
@@ -152,16 +172,26 @@ def display_name(name: str, style: str) -> str:
     if style == "unicode":
         base = greek_unicode.get(base, base)
     else:
-        base = _GREEK_NAME.get(base, base)
+        base = GREEK_NAMES.get(base, base)
     return base + "".join(subs) + "".join("^" + s for s in supers)
 
 
+def greek_latex(name: str) -> str | None:
+    """The TeX for a Greek letter's name, or None if it is no Greek letter.
+
+    >>> greek_latex("theta"), greek_latex("lamda"), greek_latex("Alpha"), greek_latex("l")
+    ('\\\\theta', '\\\\lambda', 'A', None)
+    """
+    if name not in greek_unicode:
+        return None
+    if name in _GREEK_WITHOUT_COMMAND:
+        return name[0].upper() if name[0].isupper() else "o"
+    return "\\" + {"lamda": "lambda", "Lamda": "Lambda"}.get(name, name)  # SymPy spells it lamda
+
+
 def _latex_base(base: str) -> str:
-    name = _GREEK_NAME.get(base, base)
-    name = {"lamda": "lambda", "Lamda": "Lambda"}.get(name, name)  # SymPy's spelling, not TeX's
-    if name in greek_unicode and name.lower() not in ("omicron",):
-        return "\\" + name if name not in ("Alpha", "Beta", "Epsilon", "Zeta", "Eta", "Iota", "Kappa", "Mu",
-                                           "Nu", "Omicron", "Rho", "Tau", "Chi") else name[0]
-    if len(name) > 1:
-        return f"\\mathrm{{{name}}}"
-    return name
+    name = GREEK_NAMES.get(base, base)
+    greek = greek_latex(name)
+    if greek:
+        return greek
+    return f"\\mathrm{{{name}}}" if len(name) > 1 else name

@@ -20,7 +20,9 @@ import numpy as np
 import sympy
 
 from .errors import UserError
+from .loops import close_loop  # noqa: F401 - re-exported for notebooks
 from .output import write_atomic
+from .poses import _extent, _planar, _Skeleton, _skeleton, frame_poses, is_planar, resolve_values  # noqa: F401
 from .robotfile import Robot
 
 AXIS_COLOURS = ("#d62728", "#2ca02c", "#1f77b4")  # x red, y green, z blue, as in most textbooks
@@ -31,10 +33,6 @@ TRIAD_FRACTION = 0.14  # triad length as a part of the arm's extent
 STAGGER = 0.45  # frames sharing an origin get triads 1, 1.45, 1.9 ... times longer, so their tips differ
 VIEW = {"elev": 25, "azim": -60}
 FORMATS = ("png", "pdf", "svg")
-
-
-from .loops import close_loop  # noqa: F401 - re-exported for notebooks
-from .poses import _extent, _planar, _skeleton, _Skeleton, frame_poses, is_planar, resolve_values  # noqa: F401
 
 
 # ---------------------------------------------------------------- pictures

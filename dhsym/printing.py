@@ -61,8 +61,7 @@ class _TextbookMixin:
     def _print_Add(self, expr, order=None):
         out = ""
         for position, term in enumerate(sorted(expr.args, key=self.notation.term_key)):
-            negative = term.could_extract_minus_sign()
-            body = self._print(-term if negative else term)
+            negative, body = self._signed(term)
             if position == 0:
                 out = (self.minus.strip() if negative else "") + body
             else:
@@ -70,10 +69,26 @@ class _TextbookMixin:
         return out
 
     def _print_Mul(self, expr):
-        if expr.could_extract_minus_sign():
-            return self.minus.strip() + self._print(-expr)
-        coefficient, rest = expr.as_coeff_Mul()
-        factors = sorted(sympy.Mul.make_args(rest), key=self.notation.factor_key)
+        negative, body = self._signed(expr)
+        return (self.minus.strip() if negative else "") + body
+
+    def _signed(self, term) -> tuple[bool, str]:
+        """(is negative, text of its magnitude). A bracket never starts with a minus: the sign
+        moves in front of the product, so s23(−c4 c5 c6 + s4 s6) prints −s23(c4 c5 c6 − s4 s6)."""
+        if not term.is_Mul:
+            negative = term.could_extract_minus_sign()
+            return negative, self._print(-term if negative else term)
+        coefficient, rest = term.as_coeff_Mul()
+        negative = bool(coefficient.is_negative)
+        factors = []
+        for factor in sympy.Mul.make_args(rest):
+            if factor.is_Add and min(factor.args, key=self.notation.term_key).could_extract_minus_sign():
+                factor, negative = -factor, not negative
+            factors.append(factor)
+        return negative, self._product(abs(coefficient), factors)
+
+    def _product(self, coefficient, factors) -> str:
+        factors = sorted(factors, key=self.notation.factor_key)
         upper = [f for f in factors if not (f.is_Pow and f.exp.is_negative)]
         lower = [1 / f for f in factors if f.is_Pow and f.exp.is_negative]
         if coefficient.is_Rational and coefficient != 1:

@@ -20,6 +20,13 @@ CONVENTION_NOTES = {
     "standard": "standard (distal) DH: A_i = Rz(θi) Tz(di) Tx(ai) Rx(αi)",
     "modified": "modified (proximal, Craig) DH: T_i = Rx(αi−1) Tx(ai−1) Rz(θi) Tz(di)",
 }
+_ASCII = str.maketrans({"θ": "theta", "α": "alpha", "−": "-"})
+
+
+def convention_note(convention: str, ascii: bool = False) -> str:
+    """One line naming the convention and its product of steps."""
+    note = CONVENTION_NOTES[convention]
+    return note.translate(_ASCII) if ascii else note
 
 
 def text_printer(robot: Robot, ascii: bool = False, marked=()) -> TextPrinter:
@@ -81,7 +88,8 @@ def text_legend(printer: TextPrinter, width: int = 100) -> str:
 def table_columns(robot: Robot) -> list[tuple[str, str, str]]:
     """(row field, unicode header, LaTeX header) in the order the convention's books use."""
     if robot.chain.convention == "modified":
-        return [("alpha", "αᵢ₋₁", "\\alpha_{i-1}"), ("a", "aᵢ₋₁", "a_{i-1}"), ("d", "dᵢ", "d_i"), ("theta", "θᵢ", "\\theta_i")]
+        return [("alpha", "αᵢ₋₁", "\\alpha_{i-1}"), ("a", "aᵢ₋₁", "a_{i-1}"), ("d", "dᵢ", "d_i"),
+                ("theta", "θᵢ", "\\theta_i")]
     return [("theta", "θᵢ", "\\theta_i"), ("d", "dᵢ", "d_i"), ("a", "aᵢ", "a_i"), ("alpha", "αᵢ", "\\alpha_i")]
 
 

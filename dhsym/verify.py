@@ -40,8 +40,13 @@ def trig_canonical(expr: sympy.Expr) -> sympy.Expr:
                    if isinstance(p.base, sympy.sin) and p.exp.is_Integer and p.exp >= 2}
         if not squares:
             return expr
-        expr = sympy.expand(expr.xreplace({p: (1 - sympy.cos(p.base.args[0])**2) * sympy.sin(p.base.args[0])**(p.exp - 2)
-                                           for p in squares}))
+        expr = sympy.expand(expr.xreplace({p: _without_sin_squared(p) for p in squares}))
+
+
+def _without_sin_squared(power: sympy.Pow) -> sympy.Expr:
+    """sin(u)**k as (1 − cos(u)²)·sin(u)**(k−2)."""
+    angle = power.base.args[0]
+    return (1 - sympy.cos(angle) ** 2) * sympy.sin(angle) ** (power.exp - 2)
 
 
 def algebraically_equal(a, b) -> bool:

@@ -75,9 +75,9 @@ def test_products_compose():
 
 def test_base_and_tool_steps_are_applied():
     t = sympy.Symbol("theta_1", real=True)
-    h, l = sympy.symbols("h l", real=True)
-    chain = Chain([DHRow.revolute(t)], "standard", base=[Step("Tz", h)], tool=[Step("Tx", l)])
-    assert chain.fk()[:3, 3] == sympy.Matrix([l * sympy.cos(t), l * sympy.sin(t), h])
+    h, length = sympy.symbols("h l", real=True)
+    chain = Chain([DHRow.revolute(t)], "standard", base=[Step("Tz", h)], tool=[Step("Tx", length)])
+    assert chain.fk()[:3, 3] == sympy.Matrix([length * sympy.cos(t), length * sympy.sin(t), h])
 
 
 def test_any_twist_angle_is_exact():
@@ -106,6 +106,6 @@ def test_lecture_planar3r_in_standard_convention_gives_the_same_tool_pose():
     modified = load("planar3r").chain
     thetas = modified.joint_variables
     lengths = sympy.symbols("l_1 l_2 l_3", real=True)
-    standard = Chain([DHRow.revolute(t, a=l) for t, l in zip(thetas, lengths)], "standard")
+    standard = Chain([DHRow.revolute(t, a=length) for t, length in zip(thetas, lengths)], "standard")
     assert check(standard.fk(), modified.fk())
     assert standard.fk() == modified.fk()  # the same textbook form, not only the same value

@@ -63,3 +63,18 @@ def test_squares_of_sin_and_cos():
     expr = sympy.sin(alpha) ** 2 + sympy.cos(t[0]) ** 2
     assert LatexPrinter(t[:1]).doprint(expr) == "\\left(\\sin{\\alpha}\\right)^{2} + c_{1}^{2}"
     assert TextPrinter(t[:1]).doprint(expr) == "(sin α)² + c1²"
+
+
+def test_general_row_prints_with_its_own_subscript():
+    theta_i, d_i, a_i, alpha_i = sympy.symbols("theta_i d_i a_i alpha_i", real=True)
+    from dhsym import Chain, DHRow
+    link = Chain([DHRow.revolute(theta_i, d_i, a_i, alpha_i)], "standard").link(1)
+    printer = LatexPrinter([theta_i])
+    assert printer.doprint(link[0, 3]) == "a_{i} c_{i}"
+    assert TextPrinter([theta_i]).doprint(link[0, 1]) == "−si cos αi"
+
+
+def test_a_bracket_never_starts_with_a_minus():
+    robot = load("puma560")
+    printer = TextPrinter(robot.chain.joint_variables)
+    assert printer.doprint(robot.chain.fk()[2, 0]) == "−c23 s5 c6 − s23(c4 c5 c6 − s4 s6)"

@@ -34,7 +34,8 @@ def test_the_issue_example_loads_with_every_field():
 @pytest.mark.parametrize("text, expected", [
     ("90deg", sympy.pi / 2), ("90°", sympy.pi / 2), ("-pi/2", -sympy.pi / 2), ("1/3", sympy.Rational(1, 3)),
     ("0.1", sympy.Rational(1, 10)), ("l_1^2", real_symbol("l_1") ** 2), ("l_1**2", real_symbol("l_1") ** 2),
-    ("sqrt(2)/2", sympy.sqrt(2) / 2), ("cos(pi/3)", sympy.Rational(1, 2)), ("θ1 + α", real_symbol("θ1") + real_symbol("α")),
+    ("sqrt(2)/2", sympy.sqrt(2) / 2), ("cos(pi/3)", sympy.Rational(1, 2)),
+    ("θ1 + α", real_symbol("θ1") + real_symbol("α")),
     ("theta_2 - pi/2", real_symbol("theta_2") - sympy.pi / 2), ("2*(a+b)", 2 * (real_symbol("a") + real_symbol("b"))),
 ])
 def test_expressions(text, expected):
@@ -66,7 +67,8 @@ def test_two_symbols_in_theta_need_var():
 def test_degree_looking_twist_warns():
     text = "convention: standard\njoints:\n  - {joint: R, alpha: 90, a: 0, d: 0, theta: q}\n"
     robot = load_robot_text(text, "w.yaml")
-    assert robot.warnings == ["w.yaml:3:23: joint row 1 alpha: 90 is taken as radians; write 90deg if you meant degrees"]
+    assert robot.warnings == [
+        "w.yaml:3:23: joint row 1 alpha: 90 is taken as radians; write 90deg if you meant degrees"]
 
 
 def test_every_builtin_robot_loads_and_cites_a_source():
