@@ -10,12 +10,11 @@ l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2)
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
 import sympy
-
-import warnings
 
 from .budget import BudgetExceeded, SimplificationTimeout, time_budget
 from .errors import UserError
