@@ -52,6 +52,8 @@ class Comparison:
 
     title: str
     elements: list[ElementCheck] = field(default_factory=list)
+    joint_variables: tuple = ()  # for the c/s notation of reports and tables
+    fold: bool = False  # in a notebook, keep the table of a fully agreeing comparison folded
 
     @property
     def ok(self) -> bool:
@@ -67,9 +69,9 @@ class Comparison:
         tail = "all agree" if not errata else f"{errata} errat{'um' if errata == 1 else 'a'}"
         return f"{self.title}: {agree} of {len(self.elements)} elements agree; {tail}"
 
-    def report(self, joint_variables=()) -> str:
+    def report(self, joint_variables=None) -> str:
         """Plain-text verdict, one line per erratum, in the c/s notation."""
-        printer = TextPrinter(joint_variables)
+        printer = TextPrinter(self.joint_variables if joint_variables is None else joint_variables)
         lines = [self.summary()]
         for e in self.errata:
             line = (f"  erratum at ({e.row},{e.column}): printed {printer.doprint(e.printed)}, "
@@ -77,13 +79,13 @@ class Comparison:
             lines.append(line + (f" — {e.reason}" if e.reason else ""))
         return "\n".join(lines)
 
-    def markdown(self, joint_variables=(), fold: bool = False) -> str:
+    def markdown(self, joint_variables=None, fold: bool = False) -> str:
         """A table for notebooks: every element with its verdict; errata in bold.
 
         With `fold`, a comparison that fully agrees shows only its verdict line and keeps the
         table behind a click, so that the errata stand out in a long notebook.
         """
-        printer = LatexPrinter(joint_variables)
+        printer = LatexPrinter(self.joint_variables if joint_variables is None else joint_variables)
         icon = "✅" if self.ok else "❌"
         table = ["| element | printed | derived | verdict |", "|---|---|---|---|"]
         for e in self.elements:
@@ -96,33 +98,36 @@ class Comparison:
         return "\n".join([f"**{headline}**", ""] + table)
 
     def _repr_markdown_(self) -> str:
-        return self.markdown()
+        return self.markdown(fold=self.fold)
 
 
-def compare_printed(printed, derived, title: str = "printed result", reasons=None) -> Comparison:
+def compare_printed(printed, derived, title: str = "printed result", reasons=None, joint_variables=(),
+                    fold: bool = False) -> Comparison:
     """Compare a transcription with the derived matrix, vector or expression.
 
     `printed` is a SymPy object or nested lists of strings/expressions of the derived shape,
     or a dict {(row, column): value} (counted from 1) when the lecture printed only some
     elements; strings are read with dhsym's safe parser. `reasons` maps (row, column), counted from 1,
     to a sentence explaining an expected erratum (slip, OCR error, disagreement).
+    `joint_variables` (e.g. robot.chain.joint_variables) makes reports use c1, s23; with `fold`
+    the notebook table of a fully agreeing comparison stays folded.
     """
     derived = sympy.Matrix(derived) if not isinstance(derived, sympy.Expr) else sympy.Matrix([[derived]])
     reasons = reasons or {}
     if isinstance(printed, dict):
-        result = Comparison(title)
+        result = Comparison(title, joint_variables=tuple(joint_variables), fold=fold)
         for (r, c), value in sorted(printed.items()):
             expr = _read(value)
             result.elements.append(ElementCheck(r, c, expr, derived[r - 1, c - 1], check(expr, derived[r - 1, c - 1]),
                                                 reasons.get((r, c), "")))
         return result
-    printed = _as_matrix(printed)
+    printed = transcribe(printed)
     if printed.shape != derived.shape:
         if printed.shape == derived.T.shape and 1 in printed.shape:
             printed = printed.T
         else:
             raise ValueError(f"printed shape {printed.shape} differs from derived shape {derived.shape}")
-    result = Comparison(title)
+    result = Comparison(title, joint_variables=tuple(joint_variables), fold=fold)
     for r in range(derived.rows):
         for c in range(derived.cols):
             verdict = check(printed[r, c], derived[r, c])
@@ -131,7 +136,15 @@ def compare_printed(printed, derived, title: str = "printed result", reasons=Non
     return result
 
 
-def _as_matrix(printed) -> sympy.Matrix:
+def transcribe(printed) -> sympy.Matrix:
+    """A printed matrix (nested lists of text or expressions) as SymPy, read by the safe parser,
+    so that printed matrices can be multiplied as the lecture multiplies them.
+
+    >>> transcribe([["cos(theta_1)", "0"], ["0", "1"]])
+    Matrix([
+    [cos(theta_1), 0],
+    [           0, 1]])
+    """
     if isinstance(printed, sympy.MatrixBase):
         return sympy.Matrix(printed)
     if isinstance(printed, (str, sympy.Expr, int)):

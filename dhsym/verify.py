@@ -31,6 +31,13 @@ class Verdict:
     def __bool__(self) -> bool:
         return self.algebraic and self.numeric
 
+    def __str__(self) -> str:
+        """What a notebook prints: 'equal: by algebra, and numerically (max error 4e-16)'."""
+        if self:
+            return f"equal: by algebra, and numerically (max error {self.max_error:.1g})"
+        return (f"NOT equal: algebra says {'equal' if self.algebraic else 'different'}, "
+                f"numbers differ by up to {self.max_error:.3g}")
+
 
 def trig_canonical(expr: sympy.Expr) -> sympy.Expr:
     """A form in which a trigonometric polynomial is zero exactly when it is identically zero."""
