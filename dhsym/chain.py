@@ -101,6 +101,23 @@ class Chain:
     def last_frame(self) -> Frame:
         return self.frames[-1]
 
+    def frame(self, text: str) -> Frame:
+        """The frame a user names: "3", "03" and "+3" are frame 3; "base"/"tool" where present.
+
+        >>> import sympy
+        >>> Chain([DHRow.revolute(sympy.Symbol("q", real=True))], "standard").frame(" 01")
+        1
+        """
+        wanted = text.strip().lower()
+        if wanted.isascii() and wanted.lstrip("+").isdigit() and len(wanted) < 6:
+            wanted = str(int(wanted))
+        for frame in self.frames:
+            if wanted == str(frame):
+                return frame
+        shown = text if len(text) <= 20 else text[:20] + "..."
+        shown = shown if shown.lstrip("-").isascii() and shown.lstrip("-").isdigit() else repr(shown)
+        raise UserError(f"no frame {shown} in this robot; frames are {', '.join(map(str, self.frames))}")
+
     def link(self, i: int, raw: bool = False) -> sympy.Matrix:
         """The link matrix {i-1}T_i."""
         return self.transform(i - 1, i, raw=raw)

@@ -169,17 +169,7 @@ def _print_list() -> None:
 
 def _frame(text, chain, default):
     """The frame a --from/--to value names (0..n, base, tool), or a UserError listing the frames."""
-    if text is None:
-        return default
-    wanted = text.strip().lower()
-    if wanted.isascii() and wanted.lstrip("+").isdigit() and len(wanted) < 6:
-        wanted = str(int(wanted))  # "03" and "+3" are frame 3
-    for frame in chain.frames:
-        if wanted == str(frame):
-            return frame
-    shown = text if len(text) <= 20 else text[:20] + "..."
-    shown = shown if shown.lstrip("-").isascii() and shown.lstrip("-").isdigit() else repr(shown)
-    raise UserError(f"no frame {shown} in this robot; frames are {', '.join(map(str, chain.frames))}")
+    return default if text is None else chain.frame(text)
 
 
 def _header(robot, what: str, ascii: bool) -> str:

@@ -44,12 +44,12 @@ def document(robot, kind: str = "slides", steps: bool = False, start=None, end=N
 
 
 def _check_frame(chain, frame, option: str):
-    if isinstance(frame, str) and frame.lstrip("-").isdigit():
-        frame = int(frame)
-    if frame not in chain.frames:
-        raise UserError(f"{option}: no frame {frame!r} in this robot; frames are "
-                        + ", ".join(str(f) for f in chain.frames))
-    return frame
+    if frame in chain.frames:
+        return frame
+    try:
+        return chain.frame(str(frame))
+    except UserError as error:
+        raise UserError(f"{option}: {error.message}") from None
 
 
 def _subtitle(robot) -> str:

@@ -111,8 +111,12 @@ def _ascii_header(field: str) -> str:
 
 
 def latex_matrix(matrix: sympy.Matrix, printer: LatexPrinter) -> str:
-    rows = [" & ".join(printer.doprint(matrix[r, c]) for c in range(matrix.cols)) for r in range(matrix.rows)]
-    return "\\begin{bmatrix}\n" + " \\\\\n".join(rows) + "\n\\end{bmatrix}"
+    return bmatrix([[printer.doprint(matrix[r, c]) for c in range(matrix.cols)] for r in range(matrix.rows)])
+
+
+def bmatrix(cells) -> str:
+    """A bmatrix of cells that are already LaTeX (element names or printed expressions)."""
+    return "\\begin{bmatrix}\n" + " \\\\\n".join(" & ".join(row) for row in cells) + "\n\\end{bmatrix}"
 
 
 def latex_legend(printer: LatexPrinter) -> str:

@@ -30,7 +30,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .render import ELEMENT_NAMES
+from .render import ELEMENT_NAMES, bmatrix
 from .texwidth import math_width
 
 # ---------------------------------------------------------------- pages and measured heights
@@ -133,10 +133,6 @@ def aligned_display(lines, environment: str = "aligned") -> Block:
 
 
 # ---------------------------------------------------------------- matrices
-
-def bmatrix(cells) -> str:
-    return "\\begin{bmatrix}\n" + " \\\\\n".join(" & ".join(row) for row in cells) + "\n\\end{bmatrix}"
-
 
 def bmatrix_width(cells, page: Page) -> float:
     columns = [max(math_width(row[c]) for row in cells) for c in range(len(cells[0]))]
