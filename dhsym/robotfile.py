@@ -1,10 +1,8 @@
 """Robot files: YAML in, a validated `Robot` out, with every mistake placed at FILE:LINE:COL.
 
-The YAML is composed (never constructed) with the safe loader into nodes, which keep their
-line and column, and read by hand: no Python object is ever built from a tag. Tags, aliases,
-more than one document, deep nesting and huge node counts are refused while composing, so
-a hostile file costs little. Limits: 1 MiB per file, 24 joints, 10 levels of nesting,
-20,000 YAML values, 200 characters per expression (see dhsym.expr).
+The YAML comes from dhsym.yamlsafe as nodes that keep their line and column, and is read
+by hand: no Python object is ever built from a tag. Limits: 24 joints, 200 characters per
+expression (see dhsym.expr) and those of dhsym.yamlsafe (1 MiB, nesting 10, 20,000 values).
 
 >>> robot = load_robot_text('''
 ... name: two-link arm
@@ -32,16 +30,13 @@ from .chain import Chain, DHRow
 from .errors import Location, UserError
 from .expr import parse_expression
 from .transforms import CONVENTIONS, STEP_KINDS, Step
+from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
 
-MAX_FILE_BYTES = 1 << 20
 MAX_JOINTS = 24
-MAX_YAML_DEPTH = 10  # a robot file needs 3 (file, joints list, row)
-MAX_YAML_NODES = 20_000  # a 24-joint robot with notes needs a few hundred
 TOP_KEYS = ("name", "source", "convention", "joints", "base", "tool", "sample", "notes")
 ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 _DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
-_YAML_TAG = "tag:yaml.org,2002:"
 
 
 @dataclass
@@ -60,116 +55,11 @@ class Robot:
 
 def load_robot_file(path: str | Path) -> Robot:
     """Read a robot file from disk, refusing huge or non-UTF-8 files."""
-    path = Path(path)
-    where = Location(str(path))
-    try:
-        if path.is_dir():
-            raise UserError("is a folder, not a robot file", where)
-        with path.open("rb") as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)  # never more than the limit, whatever stat says
-    except OSError as exc:
-        raise UserError(f"cannot read file: {exc.strerror or exc}", where) from None
-    if len(data) > MAX_FILE_BYTES:
-        raise UserError(f"file is larger than {MAX_FILE_BYTES // (1 << 20)} MiB, the limit for robot files",
-                        Location(str(path), 1, 1))
-    return load_robot_text(decode_utf8(data, str(path)), str(path))
-
-
-def decode_utf8(data: bytes, filename: str) -> str:
-    """The text of a file, or a UserError at the line and column of the first bad byte."""
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        before = data[:exc.start].decode("utf-8", errors="replace")
-        line = before.count("\n") + 1
-        column = len(before) - (before.rfind("\n") + 1) + 1
-        hint = "it looks like UTF-16; " if data[:2] in (b"\xff\xfe", b"\xfe\xff") else ""
-        raise UserError(f"file is not UTF-8 text (byte 0x{data[exc.start]:02X}); {hint}save it as UTF-8",
-                        Location(filename, line, column)) from None
+    return load_robot_text(read_text_file(path), str(path))
 
 
 def load_robot_text(text: str, filename: str = "<robot>") -> Robot:
-    return _Reader(filename).robot(_compose(text, filename))
-
-
-def _compose(text: str, filename: str) -> yaml.Node:
-    loader = None
-    try:
-        loader = _GuardedLoader(text, filename)
-        node = loader.single_node()
-    except yaml.reader.ReaderError as exc:
-        line = text.count("\n", 0, exc.position) + 1
-        column = exc.position - (text.rfind("\n", 0, exc.position) + 1) + 1
-        character = exc.character if isinstance(exc.character, str) else chr(exc.character)
-        raise UserError(f"character U+{ord(character):04X} is not allowed in a robot file",
-                        Location(filename, line, column)) from None
-    except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        raise UserError(f"YAML syntax error: {_yaml_problem(exc)}", _mark(filename, mark)) from None
-    except yaml.YAMLError as exc:
-        raise UserError(f"YAML error: {_one_line(str(exc))}", Location(filename, 1, 1)) from None
-    finally:
-        if loader is not None:
-            loader.dispose()
-    if node is None:
-        raise UserError("file is empty; expected a robot description", Location(filename, 1, 1))
-    return node
-
-
-def _yaml_problem(exc: yaml.MarkedYAMLError) -> str:
-    problem = _one_line(exc.problem or exc.context or "unreadable YAML")
-    if "'\\t'" in problem:
-        return "a tab character; YAML indentation must use spaces"
-    return problem
-
-
-def _one_line(message: str) -> str:
-    return " ".join(message.split())
-
-
-class _GuardedLoader(yaml.SafeLoader):
-    """The safe loader's composer, refusing aliases, tags, deep nesting and too many nodes.
-
-    The checks run as each node is composed, before any recursion into it, so a hostile
-    file is refused after reading only as much of it as the first offence.
-    """
-
-    def __init__(self, text: str, filename: str):
-        super().__init__(text)
-        self.filename, self.depth, self.count = filename, 0, 0
-
-    def single_node(self) -> yaml.Node | None:
-        """The one document's root node; a second document is a mistake, not ignored."""
-        self.get_event()  # stream start
-        root = None if self.check_event(yaml.StreamEndEvent) else self.compose_document()
-        if not self.check_event(yaml.StreamEndEvent):
-            raise UserError("a robot file holds one YAML document, but a second one starts here",
-                            _mark(self.filename, self.peek_event().start_mark))
-        return root
-
-    def compose_node(self, parent, index):
-        event = self.peek_event()
-        where = _mark(self.filename, event.start_mark)
-        if isinstance(event, yaml.AliasEvent):
-            raise UserError("YAML aliases (*name) are not allowed in robot files", where)
-        tag = getattr(event, "tag", None)
-        if tag is not None:
-            shown = "!!" + tag[len(_YAML_TAG):] if tag.startswith(_YAML_TAG) else tag
-            raise UserError(f"YAML tags ({shown}) are not allowed in robot files", where)
-        self.count += 1
-        if self.count > MAX_YAML_NODES:
-            raise UserError(f"more than {MAX_YAML_NODES} YAML values; this is not a robot file", where)
-        if self.depth >= MAX_YAML_DEPTH:
-            raise UserError(f"YAML nested deeper than {MAX_YAML_DEPTH} levels", where)
-        self.depth += 1
-        try:
-            return super().compose_node(parent, index)
-        finally:
-            self.depth -= 1
-
-
-def _mark(filename: str, mark) -> Location:
-    return Location(filename, mark.line + 1, mark.column + 1) if mark else Location(filename, 1, 1)
+    return _Reader(filename).robot(compose(text, filename))
 
 
 def _suggestion(key: str, allowed) -> str:
@@ -188,7 +78,7 @@ class _Reader:
         self.warnings: list[str] = []
 
     def where(self, node: yaml.Node) -> Location:
-        location = _mark(self.filename, node.start_mark)
+        location = mark_location(self.filename, node.start_mark)
         quoted = isinstance(node, yaml.ScalarNode) and node.style in ("'", '"')
         return location.shifted(1) if quoted else location
 
@@ -219,9 +109,9 @@ class _Reader:
     def expression(self, node: yaml.Node, what: str) -> sympy.Expr:
         """A field's value parsed as an expression; any mistake is reported with the field's name."""
         value = self.text(node, what)
-        if node.style is None and node.tag == _YAML_TAG + "null":
+        if node.style is None and node.tag == YAML_TAG + "null":
             raise UserError(f"{what} has no value", self.where(node))
-        if node.style is None and node.tag == _YAML_TAG + "bool":
+        if node.style is None and node.tag == YAML_TAG + "bool":
             raise UserError(f"{what}: {value!r} reads as a YAML true/false, not a number; quote it to "
                             f"use it as a name", self.where(node))
         try:
@@ -233,12 +123,12 @@ class _Reader:
         if key not in top:
             return default
         node = top[key][1]
-        if isinstance(node, yaml.ScalarNode) and node.style is None and node.tag == _YAML_TAG + "null":
+        if isinstance(node, yaml.ScalarNode) and node.style is None and node.tag == YAML_TAG + "null":
             return default
         return self.text(node, key)
 
     def sequence(self, node: yaml.Node, what: str) -> list:
-        if isinstance(node, yaml.ScalarNode) and node.tag == _YAML_TAG + "null":
+        if isinstance(node, yaml.ScalarNode) and node.tag == YAML_TAG + "null":
             return []
         if not isinstance(node, yaml.SequenceNode):
             raise UserError(f"{what} must be a list, not {_kind(node)}", self.where(node))

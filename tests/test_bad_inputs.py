@@ -24,7 +24,7 @@ from dhsym import cli
 from dhsym.errors import UserError
 from dhsym.library import builtin_names
 from dhsym.output import write_atomic
-from dhsym.robotfile import MAX_FILE_BYTES, MAX_YAML_NODES
+from dhsym.yamlsafe import MAX_FILE_BYTES, MAX_YAML_NODES
 
 CORPUS = Path(__file__).parent / "bad_inputs"
 CASES = sorted(path.stem for path in CORPUS.glob("*.expected"))
