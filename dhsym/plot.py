@@ -38,12 +38,14 @@ FORMATS = ("png", "pdf", "svg")
 
 # ---------------------------------------------------------------- pictures
 
-def draw(robot, values=None, ax=None, planar=None, show_frames=True, triad_scale=None, title=None):
+def draw(robot, values=None, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
+         frame_offset=0):
     """Draw one arm: links, joints (○ revolute, □ prismatic) and every frame's x/y/z triad.
 
     `ax` is an Axes to draw into (a 2D Axes gives the view from above), a Figure to add one
     to, or None for a new pyplot figure. `planar` None decides from the numbers; False forces
-    3D. Returns the Axes.
+    3D. `frame_offset` renumbers the frames in the picture: a wrist that a lecture numbers
+    3..6 is drawn with frame_offset=3. Returns the Axes.
 
     >>> from dhsym.library import load
     >>> from matplotlib.figure import Figure
@@ -52,11 +54,12 @@ def draw(robot, values=None, ax=None, planar=None, show_frames=True, triad_scale
     """
     if title is None and isinstance(robot, Robot):
         title = robot.name + "\n" + _joint_line(robot, values)
-    return draw_closed([(robot, values, LINK_COLOUR, None)], ax=ax, planar=planar,
-                       show_frames=show_frames, triad_scale=triad_scale, title=title)
+    return draw_closed([(robot, values, LINK_COLOUR, None)], ax=ax, planar=planar, show_frames=show_frames,
+                       triad_scale=triad_scale, title=title, frame_offset=frame_offset)
 
 
-def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, triad_scale=None, title=None):
+def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
+                frame_offset=0):
     """Draw several chains in one world frame, e.g. the two halves of a parallel mechanism.
 
     Each item is (robot, values, colour, label); colour and label may be left off or None.
@@ -83,7 +86,7 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
         triads = _Triads(triad_scale or TRIAD_FRACTION * extent, extent)
         for skeleton, prefix in zip(skeletons, _prefixes([label for _, _, _, label in items]), strict=True):
             for frame, pose in skeleton.poses:
-                triads.add(prefix + _frame_name(frame), pose)
+                triads.add(prefix + _frame_name(frame, frame_offset), pose)
         arrows = triads.draw(ax, flat)
     _set_limits(ax, np.vstack([points] + [[a.origin, a.tip] for a in arrows]), flat, extent, skeletons)
     if title:
@@ -197,8 +200,8 @@ def _draw_joints(ax, joints: list, colour: str, flat: bool, extent: float) -> No
                 mfc="white", mec=colour, mew=2, ls="none", zorder=3 - 0.1 * inside, gid=f"{kind} joint")
 
 
-def _frame_name(frame) -> str:
-    return {"base": "B", "tool": "T"}.get(frame, str(frame))
+def _frame_name(frame, offset: int = 0) -> str:
+    return {"base": "B", "tool": "T"}.get(frame, str(frame + offset) if isinstance(frame, int) else str(frame))
 
 
 @dataclass

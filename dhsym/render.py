@@ -85,9 +85,9 @@ def text_legend(printer: TextPrinter, width: int = 100) -> str:
     return "\n".join(lines + [line])
 
 
-def table_columns(robot: Robot) -> list[tuple[str, str, str]]:
+def table_columns(robot) -> list[tuple[str, str, str]]:
     """(row field, unicode header, LaTeX header) in the order the convention's books use."""
-    if robot.chain.convention == "modified":
+    if getattr(robot, "chain", robot).convention == "modified":
         return [("alpha", "αᵢ₋₁", "\\alpha_{i-1}"), ("a", "aᵢ₋₁", "a_{i-1}"), ("d", "dᵢ", "d_i"),
                 ("theta", "θᵢ", "\\theta_i")]
     return [("theta", "θᵢ", "\\theta_i"), ("d", "dᵢ", "d_i"), ("a", "aᵢ", "a_i"), ("alpha", "αᵢ", "\\alpha_i")]
@@ -124,13 +124,14 @@ def latex_legend(printer: LatexPrinter) -> str:
     return ",\\quad ".join(f"{label} = {meaning}" for label, meaning in entries)
 
 
-def latex_table(robot: Robot) -> str:
-    """The DH table as a LaTeX array; joint variables carry a star."""
-    printer = LatexPrinter(robot.chain.joint_variables, marked=robot.chain.joint_variables)
+def latex_table(robot) -> str:
+    """The DH table of a Robot or a Chain as a LaTeX array; joint variables carry a star."""
+    chain = getattr(robot, "chain", robot)
+    printer = LatexPrinter(chain.joint_variables, marked=chain.joint_variables)
     columns = table_columns(robot)
     header = " & ".join(["i"] + [h for _, _, h in columns])
     body = [" & ".join([str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns])
-            for n, row in enumerate(robot.chain.rows, 1)]
+            for n, row in enumerate(chain.rows, 1)]
     return ("\\begin{array}{c|cccc}\n" + header + " \\\\\n\\hline\n" + " \\\\\n".join(body) + "\n\\end{array}")
 
 

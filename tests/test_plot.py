@@ -152,3 +152,12 @@ def test_cli_refuses_to_overwrite_the_robot_file(tmp_path, capsys):
     assert main(["plot", str(robot_file), "--3d", "-o", str(robot_file)]) == 2
     assert "refusing to overwrite" in capsys.readouterr().err
     assert robot_file.read_bytes() == before
+
+
+def test_frame_offset_renumbers_the_picture_only():
+    from matplotlib.figure import Figure
+
+    from dhsym.library import load
+    ax = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=3)
+    labels = " ".join(t.get_text() for t in ax.texts)
+    assert "6" in labels and "_{0" not in labels and "_0" not in labels
