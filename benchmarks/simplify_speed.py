@@ -15,8 +15,8 @@ import sympy
 from sympy.core.cache import clear_cache
 
 from dhsym import Chain, DHRow
-from dhsym.budget import BudgetExceeded, time_budget
-from dhsym.library import load
+from dhsym.core.budget import BudgetExceeded, time_budget
+from dhsym.io.library import load
 
 TRIGSIMP_BUDGET = 60.0  # seconds; past it the baseline is reported as "> budget"
 TARGETS = {"puma560": 0.3, "iiwa7": 1.0, "general-6": 10.0}

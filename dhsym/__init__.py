@@ -1,7 +1,31 @@
-"""dhsym: Denavit–Hartenberg tables to textbook-form symbolic kinematics."""
-from .chain import Chain, DHRow
-from .errors import Location, UserError
-from .expr import parse_expression, real_symbol
-from .transforms import Step
+"""dhsym: Denavit–Hartenberg tables to textbook-form symbolic kinematics.
 
-__all__ = ["Chain", "DHRow", "Location", "Step", "UserError", "parse_expression", "real_symbol"]
+A notebook starts with one import:
+
+>>> import dhsym
+>>> arm = dhsym.load("planar2r")
+>>> arm.fk()[0, 3]
+a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2)
+
+`dhsym.plot` (pictures) is imported on first use, so that the math and the command line
+never load numpy or matplotlib.
+"""
+from importlib import import_module
+
+from .checking import errata, verify
+from .checking.verify import check
+from .core.chain import Chain, DHRow
+from .core.transforms import Step
+from .errors import Location, UserError
+from .io.expr import parse_expression, real_symbol
+from .io.library import builtin_names, load
+from .printing import display
+
+__all__ = ["Chain", "DHRow", "Location", "Step", "UserError", "builtin_names", "check", "display", "errata",
+           "load", "parse_expression", "plot", "real_symbol", "verify"]
+
+
+def __getattr__(name):
+    if name == "plot":  # numpy and matplotlib only when pictures are wanted
+        return import_module(".plot", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -20,11 +20,11 @@ from pathlib import Path
 
 import pytest
 
-from dhsym import cli
+from dhsym.cli import app as cli
 from dhsym.errors import UserError
-from dhsym.library import builtin_names
-from dhsym.output import write_atomic
-from dhsym.yamlsafe import MAX_FILE_BYTES, MAX_YAML_NODES
+from dhsym.io.library import builtin_names
+from dhsym.io.output import write_atomic
+from dhsym.io.yamlsafe import MAX_FILE_BYTES, MAX_YAML_NODES
 
 CORPUS = Path(__file__).parent / "bad_inputs"
 CASES = sorted(path.stem for path in CORPUS.glob("*.expected"))
@@ -92,8 +92,8 @@ def test_case_through_subprocess(name, workdir):
     assert not (workdir / CANARY).exists()
 
 
-def _run_in_process(argv, capsys):
-    status = cli.main(argv)
+def _run_in_process(argv, capsys, **injected):
+    status = cli.main(argv, **injected)
     stdout, stderr = capsys.readouterr()
     return status, stdout, stderr
 
@@ -114,21 +114,19 @@ def test_too_many_yaml_values_are_refused(tmp_path, monkeypatch, capsys):
                         stderr)
 
 
-def test_an_internal_bug_asks_for_a_report_and_exits_70(monkeypatch, capsys):
-    def broken(args):
+def test_an_internal_bug_asks_for_a_report_and_exits_70(capsys):
+    def broken(name):
         raise KeyError("a bug")
-    monkeypatch.setattr(cli, "_dispatch", broken)
-    status, stdout, stderr = _run_in_process(["fk", "planar2r"], capsys)
+    status, stdout, stderr = _run_in_process(["fk", "planar2r"], capsys, read=broken)
     assert status == 70 and stdout == ""
     assert stderr.startswith("dhsym: internal error: KeyError: 'a bug'\n") and "report" in stderr
     assert "Traceback" not in stderr
 
 
-def test_a_closed_pipe_ends_quietly(monkeypatch, capsys):
-    def reader_left(args):
+def test_a_closed_pipe_ends_quietly(capsys):
+    def reader_left(name):
         raise BrokenPipeError()
-    monkeypatch.setattr(cli, "_dispatch", reader_left)
-    assert _run_in_process(["fk", "planar2r"], capsys) == (cli.EXIT_BROKEN_PIPE, "", "")
+    assert _run_in_process(["fk", "planar2r"], capsys, read=reader_left) == (cli.EXIT_BROKEN_PIPE, "", "")
 
 
 def test_an_ascii_terminal_gets_advice_not_a_traceback():

@@ -9,9 +9,10 @@ import time
 
 import pytest
 
-from dhsym import Chain, DHRow, cli, real_symbol
-from dhsym.budget import SimplificationTimeout, time_budget
-from dhsym.library import load
+from dhsym import Chain, DHRow, real_symbol
+from dhsym.cli import app as cli
+from dhsym.core.budget import SimplificationTimeout, time_budget
+from dhsym.io.library import read
 
 BUDGET = 0.5  # seconds
 MARGIN = 1.0  # seconds allowed on top of the budget: returning the raw product, a busy machine
@@ -40,22 +41,21 @@ def test_over_budget_gives_the_raw_product_with_a_warning_in_time():
     assert result == Chain(two_link_rows(), "standard").fk(raw=True)
 
 
-def test_the_cli_prints_the_raw_result_and_one_warning_line(monkeypatch, capsys):
+def test_the_cli_prints_the_raw_result_and_one_warning_line(capsys):
     expected = _cli(["fk", "planar2r", "--raw"], capsys)
-    robot = load("planar2r")
-    robot.chain = Chain(robot.chain.rows, robot.chain.convention, robot.chain.base, robot.chain.tool,
-                        simplifier=never_finishes)
-    monkeypatch.setattr(cli, "load", lambda name: robot)
-    status, stdout, stderr = _cli(["fk", "planar2r", "--timeout", "0.2"], capsys)
+    robot = read("planar2r")
+    chain = robot.chain
+    robot.chain = Chain(chain.rows, chain.convention, chain.base, chain.tool, simplifier=never_finishes,
+                        name=chain.name)
+    status, stdout, stderr = _cli(["fk", "planar2r", "--timeout", "0.2"], capsys, read=lambda name: robot)
     assert status == 0 and stdout == expected[1]
     assert stderr == "dhsym: warning: simplification took longer than 0.2 s; showing the unsimplified product\n"
 
 
-def test_a_command_that_cannot_finish_stops_with_one_error_line(monkeypatch, capsys):
-    def printing_forever(robot, results, args):
+def test_a_command_that_cannot_finish_stops_with_one_error_line(capsys):
+    def reading_forever(name):
         never_finishes(None, None)
-    monkeypatch.setattr(cli, "_results", printing_forever)
-    status, stdout, stderr = _cli(["fk", "planar2r", "--timeout", "0.1"], capsys)
+    status, stdout, stderr = _cli(["fk", "planar2r", "--timeout", "0.1"], capsys, read=reading_forever)
     assert (status, stdout) == (2, "")
     assert stderr.startswith("dhsym: error: planar2r: gave up after 0.5 s; the result is too large")
     assert stderr.count("\n") == 1
@@ -92,7 +92,7 @@ def test_no_budget_arms_no_timer_and_a_negative_one_is_refused():
             pass
 
 
-def _cli(argv, capsys):
-    status = cli.main(argv)
+def _cli(argv, capsys, **injected):
+    status = cli.main(argv, **injected)
     stdout, stderr = capsys.readouterr()
     return status, stdout, stderr

@@ -3,8 +3,8 @@ import pytest
 import sympy
 
 from dhsym import Chain, DHRow, Step, UserError
-from dhsym.library import load
-from dhsym.verify import check
+from dhsym.checking.verify import check
+from dhsym.io.library import load
 
 th, d, a, al = sympy.symbols("theta_1 d_1 a_1 alpha_1", real=True)
 c, s, ca, sa = sympy.cos(th), sympy.sin(th), sympy.cos(al), sympy.sin(al)
@@ -41,18 +41,18 @@ def test_row_with_two_symbols_needs_a_named_variable():
 
 
 def test_frames_include_base_and_tool_only_when_present():
-    assert load("planar2r").chain.frames == [0, 1, 2]
-    assert load("planar3r").chain.frames == [0, 1, 2, 3, "tool"]
-    assert load("fourbar_right").chain.frames == ["base", 0, 1, "tool"]
+    assert load("planar2r").frames == [0, 1, 2]
+    assert load("planar3r").frames == [0, 1, 2, 3, "tool"]
+    assert load("fourbar_right").frames == ["base", 0, 1, "tool"]
 
 
 def test_unknown_frame_is_a_user_error():
     with pytest.raises(UserError, match="no frame 7"):
-        load("planar2r").chain.transform(0, 7)
+        load("planar2r").transform(0, 7)
 
 
 def test_inverse_is_closed_form_and_exact():
-    chain = load("planar2r").chain
+    chain = load("planar2r")
     l1, l2 = sympy.symbols("a_1 a_2", real=True)
     t2 = chain.joint_variables[1]
     inverse = chain.transform(2, 0)
@@ -61,7 +61,7 @@ def test_inverse_is_closed_form_and_exact():
 
 
 def test_raw_inverse_is_rt_minus_rt_p():
-    chain = load("spatial3r").chain
+    chain = load("spatial3r")
     forward = chain.fk(raw=True)
     inverse = chain.transform(3, 0, raw=True)
     assert inverse[:3, :3] == forward[:3, :3].T
@@ -69,7 +69,7 @@ def test_raw_inverse_is_rt_minus_rt_p():
 
 
 def test_products_compose():
-    chain = load("puma560").chain
+    chain = load("puma560")
     assert check(chain.transform(0, 3) * chain.transform(3, 6), chain.fk())
 
 
@@ -92,7 +92,7 @@ def test_simplification_strategy_is_injectable():
 
     def plain(steps, variables):
         calls.append(len(steps))
-        from dhsym.transforms import product
+        from dhsym.core.transforms import product
         return product(steps)
 
     chain = Chain([DHRow.revolute(th, a=a)], "standard", simplifier=plain)
@@ -103,7 +103,7 @@ def test_simplification_strategy_is_injectable():
 def test_lecture_planar3r_in_standard_convention_gives_the_same_tool_pose():
     # Lecture 000 writes the planar 3R in Craig's modified convention with a tool frame Tx(l3);
     # Spong's standard table (θi, 0, li, 0) puts frame 3 at the tool point directly.
-    modified = load("planar3r").chain
+    modified = load("planar3r")
     thetas = modified.joint_variables
     lengths = sympy.symbols("l_1 l_2 l_3", real=True)
     standard = Chain([DHRow.revolute(t, a=length) for t, length in zip(thetas, lengths)], "standard")

@@ -7,8 +7,8 @@ import sys
 import pytest
 import sympy
 
-from dhsym.library import load
-from dhsym.verify import numeric_error
+from dhsym.checking.verify import numeric_error
+from dhsym.io.library import load
 
 
 def run(*args, env=None):
@@ -29,9 +29,9 @@ def test_json_reads_back_with_sympify():
     assert set(data) == {"robot", "convention", "from", "to", "joint_variables", "matrix", "abbreviations"}
     assert (data["from"], data["to"]) == (0, 6)
     matrix = sympy.Matrix(data["matrix"]).applyfunc(sympy.sympify)
-    real = {s.name: s for s in load("stanford").chain.fk(raw=True).free_symbols}
+    real = {s.name: s for s in load("stanford").fk(raw=True).free_symbols}
     matrix = matrix.subs({sympy.Symbol(n): s for n, s in real.items()})
-    assert numeric_error(matrix, load("stanford").chain.fk(raw=True)) < 1e-9
+    assert numeric_error(matrix, load("stanford").fk(raw=True)) < 1e-9
     assert data["abbreviations"]["c1"] == "cos(theta_1)"
 
 

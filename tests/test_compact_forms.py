@@ -3,9 +3,9 @@ import pytest
 import sympy
 import textbook
 
-from dhsym.library import load
-from dhsym.printing import TextPrinter
-from dhsym.verify import check
+from dhsym.checking.verify import check
+from dhsym.io.library import load
+from dhsym.printing.printers import TextPrinter
 
 TEXTBOOK_FORMS = {
     "puma560": textbook.craig_puma_0T6,
@@ -19,7 +19,7 @@ TEXTBOOK_FORMS = {
 
 @pytest.mark.parametrize("name", sorted(TEXTBOOK_FORMS))
 def test_equal_to_textbook_and_no_longer(name):
-    ours = load(name).chain.fk()
+    ours = load(name).fk()
     printed = TEXTBOOK_FORMS[name]()
     assert check(ours, printed)
     for k in range(12):
@@ -28,7 +28,7 @@ def test_equal_to_textbook_and_no_longer(name):
 
 def _text(name, row, column):
     robot = load(name)
-    return TextPrinter(robot.chain.joint_variables).doprint(robot.chain.fk()[row, column])
+    return TextPrinter(robot.joint_variables).doprint(robot.fk()[row, column])
 
 
 def test_planar3r_position_reads_like_the_lecture():
@@ -52,8 +52,8 @@ def test_puma_is_grouped_by_joint_order_like_craig():
 
 def test_scara_twist_of_pi_gives_an_angle_difference():
     robot = load("scara_spong")
-    t1, t2, _, t4 = robot.chain.joint_variables
-    assert robot.chain.fk()[0, 0] == sympy.cos(t1 + t2 - t4)
+    t1, t2, _, t4 = robot.joint_variables
+    assert robot.fk()[0, 0] == sympy.cos(t1 + t2 - t4)
     assert _text("scara_spong", 0, 0) == "c124\u0305"
 
 
@@ -65,6 +65,6 @@ def test_offsets_fold_into_sums():
 
 
 def test_no_floats_in_any_builtin_result():
-    from dhsym.library import builtin_names
+    from dhsym.io.library import builtin_names
     for name in builtin_names():
-        assert not load(name).chain.fk().atoms(sympy.Float), name
+        assert not load(name).fk().atoms(sympy.Float), name

@@ -13,10 +13,10 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from dhsym.budget import time_budget
+from dhsym.core.budget import time_budget
 from dhsym.errors import UserError
-from dhsym.expr import parse_expression
-from dhsym.robotfile import ROW_KEYS, TOP_KEYS, Robot, load_robot_text
+from dhsym.io.expr import parse_expression
+from dhsym.io.robotfile import ROW_KEYS, TOP_KEYS, RobotFile, load_robot_text
 
 EXAMPLE_SECONDS = 5.0  # generous: a hang is what we look for, not a slow machine
 FUZZ = settings(deadline=None, database=None, suppress_health_check=list(HealthCheck))
@@ -163,7 +163,7 @@ def assert_robot_outcome(text: str) -> None:
         except UserError as error:
             assert error.where.file == "fuzz.yaml" and error.where.line >= 1 and error.where.column >= 1, error
             return
-        assert isinstance(robot, Robot) and 1 <= robot.chain.n
+        assert isinstance(robot, RobotFile) and 1 <= robot.chain.n
         matrix = robot.chain.fk()  # a file that loads must also compute
     assert matrix.shape == (4, 4)
     assert all(symbol.is_real for symbol in matrix.free_symbols)

@@ -17,11 +17,13 @@ from pathlib import Path
 
 import pytest
 
-from dhsym import latexdoc, texlayout, texwidth
 from dhsym.cli import main
-from dhsym.library import builtin_names, load
-from dhsym.printing import LatexPrinter
-from dhsym.robotfile import load_robot_text
+from dhsym.io.library import builtin_names, load
+from dhsym.io.robotfile import load_robot_text
+from dhsym.latex import document as latexdoc
+from dhsym.latex import layout as texlayout
+from dhsym.latex import width as texwidth
+from dhsym.printing.printers import LatexPrinter
 
 GOLDEN = Path(__file__).parent / "golden"
 OVERFULL_TOLERANCE_PT = 1.0  # TeX's own \hfuzz is 0.1 pt; 1 pt is invisible on a slide
@@ -67,7 +69,7 @@ def _width_probe() -> str:
 def _all_elements() -> list[str]:
     elements = set()
     for name in builtin_names():
-        chain = load(name).chain
+        chain = load(name)
         printer = LatexPrinter(chain.joint_variables)
         for i, j in pairwise(chain.frames):
             for matrix in (chain.transform(chain.first_frame, j), chain.transform(i, j)):
@@ -80,8 +82,8 @@ def compiled(tmp_path_factory):
     """{job name: (exit status, log text, pdf path)} for every document, compiled once."""
     folder = tmp_path_factory.mktemp("latex")
     sources = {f"{name}-{variant}": _document(load(name), variant) for name in builtin_names() for variant in VARIANTS}
-    sources["ten-joints-slides"] = _document(load_robot_text(TEN_JOINTS, "ten.yaml"), "slides-steps")
-    sources["greek-article"] = _document(load_robot_text(GREEK_PRISMATIC, "greek.yaml"), "article-steps")
+    sources["ten-joints-slides"] = _document(load_robot_text(TEN_JOINTS, "ten.yaml").chain, "slides-steps")
+    sources["greek-article"] = _document(load_robot_text(GREEK_PRISMATIC, "greek.yaml").chain, "article-steps")
     sources["puma560-inverse-slides"] = _document(load("puma560"), "slides-steps", start="6", end="2")
     sources["width-probe"] = _width_probe()
     for job, text in sources.items():
@@ -193,7 +195,7 @@ def test_long_elements_break_before_a_sign_at_the_outermost_bracket():
 
 
 def test_break_lines_keeps_every_character_and_never_splits_a_group():
-    element = LatexPrinter(load("iiwa7").chain.joint_variables).doprint(load("iiwa7").chain.fk()[0, 0])
+    element = LatexPrinter(load("iiwa7").joint_variables).doprint(load("iiwa7").fk()[0, 0])
     lines = texlayout.break_lines(element, 12, 11)
     assert len(lines) > 2
     assert " ".join(lines) == element
@@ -245,12 +247,12 @@ def test_modified_table_order_and_base_tool_frames():
 
 
 def test_two_digit_joints_greek_names_and_angle_differences():
-    ten = latexdoc.document(load_robot_text(TEN_JOINTS, "ten.yaml"), "snippet")
+    ten = latexdoc.document(load_robot_text(TEN_JOINTS, "ten.yaml").chain, "snippet")
     assert "{}^{9}T_{10}" in ten and "c_{10}" in ten and "c_{1,2,3,4,5,6,7,8,9,10}" in ten
     assert "% where (commas separate the joint numbers when one of them has two digits)" in ten
     assert "Ten-link planar arm \\& co: 100\\% planar\\_test, $\\theta$" in latexdoc.document(
-        load_robot_text(TEN_JOINTS, "ten.yaml"), "slides")
-    greek = latexdoc.document(load_robot_text(GREEK_PRISMATIC, "greek.yaml"), "snippet")
+        load_robot_text(TEN_JOINTS, "ten.yaml").chain, "slides")
+    greek = latexdoc.document(load_robot_text(GREEK_PRISMATIC, "greek.yaml").chain, "snippet")
     assert "\\phi_{1}^{*}" in greek and "\\lambda_{1}" in greek and "d_{3}^{*}" in greek
     assert "\\bar{2}" in greek and "(a bar over a joint number marks an angle that is subtracted)" in greek
 

@@ -11,7 +11,7 @@ from matplotlib.figure import Figure
 from dhsym import Chain, DHRow, plot
 from dhsym.cli import main
 from dhsym.errors import UserError
-from dhsym.library import ROBOTS_DIR, load
+from dhsym.io.library import ROBOTS_DIR, load
 
 matplotlib.use("Agg")
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -33,10 +33,10 @@ def test_planar2r_origins_are_the_hand_computed_ones():
 def test_every_pose_equals_the_symbolic_transform(name):
     robot = load(name)
     rng = np.random.default_rng(7)
-    angles = {v: float(rng.uniform(-2, 2)) for v in robot.chain.joint_variables}
+    angles = {v: float(rng.uniform(-2, 2)) for v in robot.joint_variables}
     numbers = {**{s: float(v) for s, v in robot.sample.items()}, **angles}
     for frame, pose in plot.frame_poses(robot, angles):
-        exact = robot.chain.transform(robot.chain.first_frame, frame, raw=True).xreplace(numbers)
+        exact = robot.transform(robot.first_frame, frame, raw=True).xreplace(numbers)
         assert np.allclose(pose, np.array(exact.evalf(), dtype=float)), frame
 
 
@@ -157,7 +157,7 @@ def test_cli_refuses_to_overwrite_the_robot_file(tmp_path, capsys):
 def test_frame_offset_renumbers_the_picture_only():
     from matplotlib.figure import Figure
 
-    from dhsym.library import load
+    from dhsym.io.library import load
     ax = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=3)
     labels = " ".join(t.get_text() for t in ax.texts)
     assert "6" in labels and "_{0" not in labels and "_0" not in labels

@@ -1,9 +1,9 @@
 """Text and LaTeX printers: notation, legends, tables."""
 import sympy
 
-from dhsym.library import load
-from dhsym.printing import LatexPrinter, TextPrinter
-from dhsym.render import latex_matrix, latex_table, text_legend, text_matrix, text_table, transform_title
+from dhsym.io.library import load
+from dhsym.printing.printers import LatexPrinter, TextPrinter
+from dhsym.printing.render import latex_matrix, latex_table, text_legend, text_matrix, text_table, transform_title
 
 t = sympy.symbols("theta_1:13", real=True)
 
@@ -16,8 +16,8 @@ def test_legend_lists_only_used_abbreviations():
 
 def test_ascii_mode_has_no_unicode():
     robot = load("scara_spong")
-    printer = TextPrinter(robot.chain.joint_variables, ascii=True)
-    text = text_matrix(robot.chain.fk(), printer) + text_legend(printer)
+    printer = TextPrinter(robot.joint_variables, ascii=True)
+    text = text_matrix(robot.fk(), printer) + text_legend(printer)
     assert text.isascii()
     assert "c(12-4) = cos(theta1 + theta2 - theta4)" in text
 
@@ -36,8 +36,8 @@ def test_angle_difference_notation():
 
 def test_latex_symbols_and_matrix():
     robot = load("planar3r")
-    printer = LatexPrinter(robot.chain.joint_variables)
-    text = latex_matrix(robot.chain.fk(), printer)
+    printer = LatexPrinter(robot.joint_variables)
+    text = latex_matrix(robot.fk(), printer)
     assert text.startswith("\\begin{bmatrix}") and "l_{1} c_{1} + l_{2} c_{12} + l_{3} c_{123}" in text
     assert transform_title(0, 3, "latex") == "{}^{0}T_{3}"
     assert transform_title(0, "tool", "latex") == "{}^{0}T_{\\mathrm{tool}}"
@@ -54,7 +54,7 @@ def test_dh_table_marks_joint_variables_in_convention_order():
 
 def test_wide_matrices_become_element_lists():
     robot = load("puma560")
-    text = text_matrix(robot.chain.fk(), TextPrinter(robot.chain.joint_variables), width=100)
+    text = text_matrix(robot.fk(), TextPrinter(robot.joint_variables), width=100)
     assert text.splitlines()[3] == "px  = c1(a2 c2 + a3 c23 − d4 s23) − d3 s1"
 
 
@@ -76,5 +76,5 @@ def test_general_row_prints_with_its_own_subscript():
 
 def test_a_bracket_never_starts_with_a_minus():
     robot = load("puma560")
-    printer = TextPrinter(robot.chain.joint_variables)
-    assert printer.doprint(robot.chain.fk()[2, 0]) == "−c23 s5 c6 − s23(c4 c5 c6 − s4 s6)"
+    printer = TextPrinter(robot.joint_variables)
+    assert printer.doprint(robot.fk()[2, 0]) == "−c23 s5 c6 − s23(c4 c5 c6 − s4 s6)"

@@ -3,8 +3,8 @@ import pytest
 import sympy
 
 from dhsym import UserError, parse_expression, real_symbol
-from dhsym.library import builtin_names, load
-from dhsym.robotfile import load_robot_text
+from dhsym.io.library import builtin_names, load
+from dhsym.io.robotfile import load_robot_text
 
 PUMA_TEXT = """\
 name: PUMA 560
@@ -24,7 +24,7 @@ tool: [{Tx: l_3}, {Rz: pi/2}]
 
 def test_the_issue_example_loads_with_every_field():
     robot = load_robot_text(PUMA_TEXT, "puma.yaml")
-    assert robot.name == "PUMA 560" and robot.source.startswith("Craig")
+    assert robot.chain.name == "PUMA 560" and robot.chain.source.startswith("Craig")
     assert robot.chain.convention == "modified" and robot.chain.n == 6
     assert robot.chain.frames[-1] == "tool"
     assert robot.chain.rows[1].alpha == -sympy.pi / 2
@@ -73,6 +73,6 @@ def test_degree_looking_twist_warns():
 
 def test_every_builtin_robot_loads_and_cites_a_source():
     for name in builtin_names():
-        robot = load(name)
-        assert robot.source, name
-        assert set(robot.sample) >= robot.chain.fk().free_symbols - set(robot.chain.joint_variables), name
+        chain = load(name)
+        assert chain.source, name
+        assert set(chain.sample) >= chain.fk().free_symbols - set(chain.joint_variables), name

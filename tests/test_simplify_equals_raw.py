@@ -4,7 +4,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from dhsym import Chain, DHRow, Step
-from dhsym.verify import algebraically_equal, numeric_error
+from dhsym.checking.verify import algebraically_equal, numeric_error
 
 PI = sympy.pi
 TWISTS = [0, PI / 2, -PI / 2, PI, PI / 3, -PI / 4, "symbol"]

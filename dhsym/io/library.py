@@ -2,7 +2,7 @@
 
 >>> "puma560" in builtin_names()
 True
->>> load("puma560").chain.n
+>>> load("puma560").n
 6
 """
 from __future__ import annotations
@@ -10,20 +10,30 @@ from __future__ import annotations
 import difflib
 from pathlib import Path
 
-from .errors import UserError
-from .robotfile import Robot, load_robot_file
+from ..core.chain import Chain
+from ..errors import UserError
+from .robotfile import RobotFile, load_robot_file
 
-ROBOTS_DIR = Path(__file__).parent / "robots"
+ROBOTS_DIR = Path(__file__).parent.parent / "robots"
 
 
 def builtin_names() -> list[str]:
     return sorted(p.stem for p in ROBOTS_DIR.glob("*.yaml"))
 
 
-def load(name_or_path: str) -> Robot:
-    """A built-in robot by name, or a robot file by path.
+def load(name_or_path: str) -> Chain:
+    """The chain of a built-in robot by name, or of a robot file by path.
 
-    >>> load("puma")  # doctest: +ELLIPSIS
+    >>> load("planar2r")
+    Chain('Planar elbow manipulator (2R)', standard DH, 2 joints: RR)
+    """
+    return read(name_or_path).chain
+
+
+def read(name_or_path: str) -> RobotFile:
+    """A built-in robot by name, or a robot file by path, with the warnings of its reading.
+
+    >>> read("puma")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     dhsym.errors.UserError: unknown robot 'puma'; built-in robots are: ..., ur5; did you mean 'puma560'?
     """

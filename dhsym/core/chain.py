@@ -16,8 +16,8 @@ from typing import Callable, Sequence
 
 import sympy
 
+from ..errors import UserError
 from .budget import BudgetExceeded, SimplificationTimeout, time_budget
-from .errors import UserError
 from .simplify import contract
 from .transforms import CONVENTIONS, Step, as_expr, inverse_transform, link_steps, product
 
@@ -66,11 +66,17 @@ class Chain:
     """A serial chain: DH rows in one convention, with optional fixed base and tool steps.
 
     Frames are numbered 0..n; "base" (before the base steps) and "tool" (after the tool
-    steps) exist when the chain has such steps.
+    steps) exist when the chain has such steps. `name`, `source` and `notes` say what robot
+    this is and where its table comes from; `sample` gives numbers for its constants (pictures).
+
+    >>> import sympy
+    >>> Chain([DHRow.revolute(sympy.Symbol("theta_1", real=True), a=1)], "standard", name="pendulum")
+    Chain('pendulum', standard DH, 1 joint: R)
     """
 
     def __init__(self, rows: Sequence[DHRow], convention: str, base: Sequence[Step] = (),
-                 tool: Sequence[Step] = (), simplifier: Simplifier = contract, timeout: float | None = None):
+                 tool: Sequence[Step] = (), simplifier: Simplifier = contract, timeout: float | None = None, *,
+                 name: str = "", source: str = "", notes: str = "", sample: dict | None = None):
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {convention!r}; use standard or modified")
         if not rows:
@@ -79,7 +85,19 @@ class Chain:
         self.base, self.tool = tuple(base), tuple(tool)
         self.simplifier = simplifier
         self.timeout = timeout  # seconds of simplification per result; past it the raw product is returned
+        self.name, self.source, self.notes = name, source, notes
+        self.sample = dict(sample or {})  # symbol -> exact number
         self._cache: dict = {}
+
+    def __repr__(self) -> str:
+        joints = "".join(row.joint for row in self.rows)
+        return f"Chain({self.name!r}, {self.convention} DH, {self.n} joint{'s' if self.n > 1 else ''}: {joints})"
+
+    def _repr_latex_(self) -> str:
+        """Jupyter shows a chain as its DH table."""
+        from ..printing.render import latex_table  # printing sits above the math; only this display needs it
+
+        return f"$$\n{latex_table(self)}\n$$"
 
     @property
     def n(self) -> int:
@@ -88,6 +106,13 @@ class Chain:
     @property
     def joint_variables(self) -> list[sympy.Symbol]:
         return [row.variable for row in self.rows]
+
+    @property
+    def symbols(self) -> set[sympy.Symbol]:
+        """Every symbol of the rows and of the fixed steps: joint variables and constants."""
+        values = [x for row in self.rows for x in (row.theta, row.d, row.a, row.alpha)]
+        values += [step.value for step in self.base + self.tool]
+        return set().union(*(value.free_symbols for value in values)) | set(self.joint_variables)
 
     @property
     def frames(self) -> list[Frame]:

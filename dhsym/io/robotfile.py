@@ -1,4 +1,4 @@
-"""Robot files: YAML in, a validated `Robot` out, with every mistake placed at FILE:LINE:COL.
+"""Robot files: YAML in, a validated `RobotFile` out, with every mistake placed at FILE:LINE:COL.
 
 The YAML comes from dhsym.yamlsafe as nodes that keep their line and column, and is read
 by hand: no Python object is ever built from a tag. Limits: 24 joints, 200 characters per
@@ -26,10 +26,10 @@ from pathlib import Path
 import sympy
 import yaml
 
-from .chain import Chain, DHRow
-from .errors import Location, UserError
+from ..core.chain import Chain, DHRow
+from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
+from ..errors import Location, UserError
 from .expr import parse_expression
-from .transforms import CONVENTIONS, STEP_KINDS, Step
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
 
 MAX_JOINTS = 24
@@ -40,25 +40,21 @@ _DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
 
 
 @dataclass
-class Robot:
-    """A robot as its file describes it."""
+class RobotFile:
+    """A robot file read: its chain (with name, source, notes and sample values), where it
+    came from, and the warnings its reading raised."""
 
-    name: str
-    convention: str
     chain: Chain
-    source: str = ""
-    notes: str = ""
-    sample: dict = field(default_factory=dict)  # symbol -> exact number, for pictures
     path: str = "<robot>"
     warnings: list = field(default_factory=list)  # strings "FILE:LINE:COL: message"
 
 
-def load_robot_file(path: str | Path) -> Robot:
+def load_robot_file(path: str | Path) -> RobotFile:
     """Read a robot file from disk, refusing huge or non-UTF-8 files."""
     return load_robot_text(read_text_file(path), str(path))
 
 
-def load_robot_text(text: str, filename: str = "<robot>") -> Robot:
+def load_robot_text(text: str, filename: str = "<robot>") -> RobotFile:
     return _Reader(filename).robot(compose(text, filename))
 
 
@@ -71,7 +67,7 @@ def _suggestion(key: str, allowed) -> str:
 
 
 class _Reader:
-    """Walks the composed YAML nodes and builds the Robot, checking as it goes."""
+    """Walks the composed YAML nodes and builds the RobotFile, checking as it goes."""
 
     def __init__(self, filename: str):
         self.filename = filename
@@ -134,7 +130,7 @@ class _Reader:
             raise UserError(f"{what} must be a list, not {_kind(node)}", self.where(node))
         return node.value
 
-    def robot(self, root: yaml.Node) -> Robot:
+    def robot(self, root: yaml.Node) -> RobotFile:
         if not isinstance(root, yaml.MappingNode):
             raise UserError(f"a robot file must be a mapping of keys (convention, joints, ...) to values, "
                             f"not {_kind(root)}", self.where(root))
@@ -160,13 +156,11 @@ class _Reader:
         variables = {row.variable for row in dh_rows}
         base = self.steps(top["base"][1], "base", variables) if "base" in top else []
         tool = self.steps(top["tool"][1], "tool", variables) if "tool" in top else []
-        chain = Chain(dh_rows, convention, base, tool)
-        return Robot(
-            name=self.optional_text(top, "name", Path(self.filename).stem), convention=convention, chain=chain,
-            source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""),
-            sample=self.sample(top["sample"][1], _symbols_of(chain)) if "sample" in top else {},
-            path=self.filename, warnings=self.warnings,
-        )
+        chain = Chain(dh_rows, convention, base, tool, name=self.optional_text(top, "name", Path(self.filename).stem),
+                      source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""))
+        if "sample" in top:
+            chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
+        return RobotFile(chain, path=self.filename, warnings=self.warnings)
 
     def row(self, node: yaml.Node, number: int) -> "_Row":
         """One joint row, checked field by field."""
@@ -292,10 +286,3 @@ def _kind(node: yaml.Node) -> str:
     if isinstance(node, yaml.MappingNode):
         return "a mapping"
     return "a single value" if node.value else "an empty value"
-
-
-def _symbols_of(chain: Chain) -> dict:
-    """Every symbol a robot's rows and fixed steps use, by name."""
-    values = [x for row in chain.rows for x in (row.theta, row.d, row.a, row.alpha)]
-    values += [step.value for step in chain.base + chain.tool]
-    return {s.name: s for value in values for s in value.free_symbols}

@@ -7,23 +7,18 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from .errors import UserError
-from .expr import parse_expression
-from .plot import _format, draw, is_planar, save
-from .poses import _symbols
+from ..errors import UserError
+from ..io.expr import parse_expression
+from .options import robot_options
 
-NAME = "plot"
 _ASSIGNMENT = re.compile(r"\s*([^\W\d]\w*)\s*=(.*)\Z", re.DOTALL)
 
 
-def add_parser(commands) -> None:
-    from . import cli  # cli imports this module, so not at the top
-
-    sub = commands.add_parser(NAME, help="draw the arm (links, joints, frames) as a PNG",
+def add_parsers(commands) -> None:
+    sub = commands.add_parser("plot", parents=[robot_options()], help="draw the arm (links, joints, frames) as a PNG",
                               description="Draw the arm with every DH frame as an x/y/z triad (x red, y green, "
                               "z blue). Constants default to the robot file's sample values, joint variables to 0. "
                               "Planar arms are drawn in their plane, others in 3D.")
-    sub.add_argument("robot", metavar="ROBOT", help="built-in robot name or path to a robot YAML file")
     sub.add_argument("--set", dest="constants", metavar="NAME=EXPR", nargs="+", action="extend", default=[],
                      help="value of a constant, e.g. --set l_1=0.5 l_2=1/3")
     sub.add_argument("--q", dest="joints", metavar="NAME=EXPR", nargs="+", action="extend", default=[],
@@ -31,33 +26,36 @@ def add_parser(commands) -> None:
     sub.add_argument("-o", "--output", metavar="FILE", help="picture to write (.png, .pdf or .svg; default ROBOT.png)")
     sub.add_argument("--no-frames", action="store_true", help="draw links and joints only")
     sub.add_argument("--3d", dest="three_d", action="store_true", help="3D even when the arm is planar")
-    cli.add_common_options(sub)
+    sub.set_defaults(run=run)
 
 
 def run(robot, args) -> str:
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.backends.backend_agg import FigureCanvasAgg  # here: other commands need no matplotlib
     from matplotlib.figure import Figure
 
-    values = {**parse_assignments(robot, args.constants, "--set"), **parse_assignments(robot, args.joints, "--q")}
+    from ..plot import draw, is_planar, picture_format, save
+
+    values = {**parse_assignments(robot.chain, args.constants, "--set"),
+              **parse_assignments(robot.chain, args.joints, "--q")}
     path = args.output or f"{Path(args.robot).stem}.png"
-    _format(path)  # a wrong suffix is found before any drawing
+    picture_format(path)  # a wrong suffix is found before any drawing
     planar = False if args.three_d else None
-    figure = Figure(figsize=(6.4, 5.6) if (planar is None and is_planar(robot, values)) else (7.2, 6.8))
+    figure = Figure(figsize=(6.4, 5.6) if (planar is None and is_planar(robot.chain, values)) else (7.2, 6.8))
     FigureCanvasAgg(figure)
-    draw(robot, values, ax=figure, planar=planar, show_frames=not args.no_frames)
+    draw(robot.chain, values, ax=figure, planar=planar, show_frames=not args.no_frames)
     save(figure, path, inputs=[robot.path])
     return str(path)
 
 
-def parse_assignments(robot, texts, option: str) -> dict:
+def parse_assignments(chain, texts, option: str) -> dict:
     """`NAME=EXPR` texts to {name: exact value}; --q takes joint variables, --set constants.
 
-    >>> from dhsym.library import load
+    >>> from dhsym.io.library import load
     >>> parse_assignments(load("planar2r"), ["theta_1=30deg"], "--q")
     {'theta_1': pi/6}
     """
-    symbols = sorted(s.name for s in _symbols(robot.chain))
-    variables = {v.name for v in robot.chain.joint_variables}
+    symbols = sorted(s.name for s in chain.symbols)
+    variables = {v.name for v in chain.joint_variables}
     values = {}
     for text in texts:
         match = _ASSIGNMENT.match(text)
@@ -66,7 +64,7 @@ def parse_assignments(robot, texts, option: str) -> dict:
                             f"{'theta_1=30deg' if option == '--q' else 'l_1=0.5'}")
         name, expression = match.group(1), match.group(2)
         if name not in symbols:
-            raise UserError(f"{option} {text!r}: {robot.name} has no symbol {name}; its symbols are "
+            raise UserError(f"{option} {text!r}: {chain.name} has no symbol {name}; its symbols are "
                             f"{', '.join(symbols)}")
         wanted = option == "--q"
         if (name in variables) != wanted:

@@ -20,7 +20,7 @@ from fractions import Fraction
 
 import sympy
 
-from .errors import Location, UserError
+from ..errors import Location, UserError
 
 MAX_LENGTH = 200  # characters of one expression
 MAX_DEPTH = 24  # nesting of operators and calls

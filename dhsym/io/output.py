@@ -14,7 +14,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from .errors import Location, UserError
+from ..errors import Location, UserError
 
 
 def write_atomic(path, data: str | bytes, inputs=()) -> None:

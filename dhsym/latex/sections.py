@@ -6,10 +6,10 @@ Notation: c_{23} = cos(θ2 + θ3); a bar marks a subtracted angle, c_{12\\bar{4}
 number has two digits the indices are separated by commas, c_{1,10}, and frames are always
 braced, {}^{9}T_{10}. A step writes ``{}^0T_k = {}^0T_{k-1}\\,{}^{k-1}T_k``.
 
->>> from dhsym.library import load
->>> from dhsym.texlayout import PAGES
->>> robot = load("planar2r")
->>> parts = sections(robot, 0, 2, True, PAGES["article"], LatexPrinter(robot.chain.joint_variables))
+>>> from dhsym.io.library import load
+>>> from dhsym.latex.layout import PAGES
+>>> chain = load("planar2r")
+>>> parts = sections(chain, 0, 2, True, PAGES["article"], LatexPrinter(chain.joint_variables))
 >>> [section.title for section in parts]
 ['DH table', 'Link 1: ${}^{0}T_{1}$', 'Link 2: ${}^{1}T_{2}$', 'Step 1: ${}^{0}T_{2}$', 'Result: ${}^{0}T_{2}$']
 """
@@ -18,9 +18,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from itertools import pairwise
 
-from .printing import LatexPrinter
-from .render import table_columns, transform_title
-from .texlayout import (
+from ..printing.printers import LatexPrinter
+from ..printing.render import latex_array, latex_table_cells, transform_title
+from .layout import (
     ALIGNED_EXTRA,
     ALIGNED_ROW,
     ARRAY_ROW,
@@ -38,7 +38,7 @@ from .texlayout import (
     row_height,
     step_items,
 )
-from .texwidth import math_width
+from .width import math_width
 
 
 @dataclass
@@ -50,9 +50,8 @@ class Section:
     items: list = field(default_factory=list)  # Blocks and Rows
 
 
-def sections(robot, start, end, steps: bool, page: Page, printer: LatexPrinter) -> list[Section]:
+def sections(chain, start, end, steps: bool, page: Page, printer: LatexPrinter) -> list[Section]:
     """Everything but the title, in order: table, links, steps, result with its legend."""
-    chain = robot.chain
     path = _frame_path(chain.frames, start, end)
 
     def cells(i, j):
@@ -62,7 +61,7 @@ def sections(robot, start, end, steps: bool, page: Page, printer: LatexPrinter) 
     def title(i, j):
         return transform_title(i, j, "latex")
 
-    out = [_table_section(robot, page)]
+    out = [_table_section(chain, page)]
     for i, j in pairwise(path):
         out.append(Section("Link matrices", f"{_link_label(i, j)}: ${title(i, j)}$",
                            matrix_items(title(i, j), cells(i, j), page)))
@@ -91,13 +90,10 @@ def _link_label(i, j) -> str:
     return f"Link {max(i, j)}" + (" (inverse)" if i > j else "")
 
 
-def _table_section(robot, page: Page) -> Section:
+def _table_section(chain, page: Page) -> Section:
     """The DH table in the convention's column order, the convention, base and tool steps."""
-    chain = robot.chain
     printer = _InlineFractions(chain.joint_variables, marked=chain.joint_variables)
-    columns = table_columns(robot)
-    header = " & ".join(["i"] + [latex for _, _, latex in columns])
-    rows = [[str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns] for n, row in enumerate(chain.rows, 1)]
+    header, rows = latex_table_cells(chain, printer)
     notes = [paragraph(CONVENTION_LATEX[chain.convention], page),
              paragraph("${}^{*}$ marks the joint variable of each row.", page)]
     for which, steps, i, j in (("base", chain.base, "base", 0), ("tool", chain.tool, chain.n, "tool")):
@@ -111,8 +107,7 @@ def _table_section(robot, page: Page) -> Section:
     items = []
     for first in range(0, len(rows), per_block):
         chunk = rows[first:first + per_block]
-        body = header + " \\\\\n\\hline\n" + " \\\\\n".join(" & ".join(r) for r in chunk)
-        items.append(display("\\begin{array}{c|cccc}\n" + body + "\n\\end{array}",
+        items.append(display(latex_array(header, chunk),
                              3.0 + ARRAY_ROW + sum(row_height(r, array=True) for r in chunk)))
     return Section("DH table", "DH table", items + notes)
 

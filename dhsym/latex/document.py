@@ -1,13 +1,12 @@
 """`dhsym latex`: the DH table, the link matrices, the derivation and the result as beamer
 slides, an article or a snippet of math, laid out so that everything fits its page.
 
-This module assembles the three documents and defines the subcommand. The parts:
-`latexsections` decides what is shown, `texlayout` how math is set on a line (a matrix, or
-its named elements with long ones broken), `texwidth` how wide the math prints, and
-`slidepacking` how the blocks of a section fill beamer frames (a full frame continues on the
-next, titled "(cont.)"). Nothing is ever shrunk.
+This module assembles the three documents. The parts: `sections` decides what is shown,
+`layout` how math is set on a line (a matrix, or its named elements with long ones broken),
+`width` how wide the math prints, and `packing` how the blocks of a section fill beamer
+frames (a full frame continues on the next, titled "(cont.)"). Nothing is ever shrunk.
 
->>> from dhsym.library import load
+>>> from dhsym.io.library import load
 >>> tex = document(load("planar2r"), "snippet")
 >>> "{}^{0}T_{2} = {}^{0}T_{1}\\\\,{}^{1}T_{2} =" in tex and "a_{1} c_{1} + a_{2} c_{12}" in tex
 True
@@ -16,31 +15,28 @@ from __future__ import annotations
 
 import unicodedata
 
-from .errors import UserError
-from .latexsections import Section, sections
-from .notation import GREEK_NAMES, greek_latex
-from .output import write_atomic
-from .printing import LatexPrinter
-from .slidepacking import pack
-from .texlayout import PAGES, Block, Page, aligned_display, lines_under
+from ..errors import UserError
+from ..printing.notation import GREEK_NAMES, greek_latex
+from ..printing.printers import LatexPrinter
+from .layout import PAGES, Block, Page, aligned_display, lines_under
+from .packing import pack
+from .sections import Section, sections
 
-NAME = "latex"
 DOCUMENTS = ("slides", "article", "snippet")
 
 
 # ---------------------------------------------------------------- the three documents
 
-def document(robot, kind: str = "slides", steps: bool = False, start=None, end=None) -> str:
-    """The LaTeX text of a document of `kind` for `robot`, about the transform from frame
+def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None) -> str:
+    """The LaTeX text of a document of `kind` for `chain`, about the transform from frame
     `start` (default: the first) to `end` (default: the last)."""
-    chain = robot.chain
     start = _check_frame(chain, chain.first_frame if start is None else start, "--from")
     end = _check_frame(chain, chain.last_frame if end is None else end, "--to")
     if start == end:
         raise UserError(f"--from and --to name the same frame ({start}); choose two different frames")
     page = PAGES[kind]
-    content = sections(robot, start, end, steps, page, LatexPrinter(chain.joint_variables))
-    return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](robot, content, page)
+    content = sections(chain, start, end, steps, page, LatexPrinter(chain.joint_variables))
+    return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
 
 
 def _check_frame(chain, frame, option: str):
@@ -52,15 +48,15 @@ def _check_frame(chain, frame, option: str):
         raise UserError(f"{option}: {error.message}") from None
 
 
-def _subtitle(robot) -> str:
-    return f"Forward kinematics, {robot.chain.convention} DH convention"
+def _subtitle(chain) -> str:
+    return f"Forward kinematics, {chain.convention} DH convention"
 
 
-def _slides(robot, content: list[Section], page: Page) -> str:
+def _slides(chain, content: list[Section], page: Page) -> str:
     out = [SLIDES_PREAMBLE, "\\begin{document}\n",
            "\\begin{frame}[plain]\n\\centering\n{\\usebeamerfont{title}\\usebeamercolor[fg]{title}"
-           f"{tex_text(robot.name)}\\par}}\n\\bigskip\n{tex_text(_subtitle(robot))}\\par\n"
-           f"\\vfill\n{{\\small\\raggedright Source: {tex_text(robot.source or 'not given')}\\par}}\n"
+           f"{tex_text(chain.name)}\\par}}\n\\bigskip\n{tex_text(_subtitle(chain))}\\par\n"
+           f"\\vfill\n{{\\small\\raggedright Source: {tex_text(chain.source or 'not given')}\\par}}\n"
            "\\end{frame}\n"]
     for section in content:
         title = section.title
@@ -72,11 +68,11 @@ def _slides(robot, content: list[Section], page: Page) -> str:
     return "\n".join(out)
 
 
-def _article(robot, content: list[Section], page: Page) -> str:
-    out = [ARTICLE_PREAMBLE, "\\begin{document}\n", f"\\section*{{{tex_text(robot.name)}}}\n",
-           f"{tex_text(_subtitle(robot))}.\n\nSource: {tex_text(robot.source or 'not given')}\n"]
-    if robot.notes:
-        out.append(f"Notes: {tex_text(robot.notes)}\n")
+def _article(chain, content: list[Section], page: Page) -> str:
+    out = [ARTICLE_PREAMBLE, "\\begin{document}\n", f"\\section*{{{tex_text(chain.name)}}}\n",
+           f"{tex_text(_subtitle(chain))}.\n\nSource: {tex_text(chain.source or 'not given')}\n"]
+    if chain.notes:
+        out.append(f"Notes: {tex_text(chain.notes)}\n")
     part = None
     for section in content:
         if section.part != part:
@@ -87,10 +83,10 @@ def _article(robot, content: list[Section], page: Page) -> str:
     return "\n".join(out)
 
 
-def _snippet(robot, content: list[Section], page: Page) -> str:
+def _snippet(chain, content: list[Section], page: Page) -> str:
     """Only the math; titles and text become comments."""
-    out = [f"% dhsym latex: {_comment(robot.name)} ({robot.chain.convention} DH); needs \\usepackage{{amsmath}}",
-           f"% Source: {_comment(robot.source or 'not given')}"]
+    out = [f"% dhsym latex: {_comment(chain.name)} ({chain.convention} DH); needs \\usepackage{{amsmath}}",
+           f"% Source: {_comment(chain.source or 'not given')}"]
     for section in content:
         out.append(f"\n% {_comment(section.title)}")
         out.extend(block.latex if block.is_display else f"% {_comment(block.latex)}" for block in _flat(section.items))
@@ -127,7 +123,7 @@ ARTICLE_PREAMBLE = r"""% Made by dhsym latex. Compile with pdflatex.
 """
 
 
-# ---------------------------------------------------------------- text from robot files
+# ---------------------------------------------------------------- text from chain files
 
 _TEXT_ESCAPES = {"\\": "\\textbackslash{}", "&": "\\&", "%": "\\%", "$": "\\$", "#": "\\#", "_": "\\_",
                  "{": "\\{", "}": "\\}", "~": "\\textasciitilde{}", "^": "\\textasciicircum{}",
@@ -137,7 +133,7 @@ _TEXT_ESCAPES = {"\\": "\\textbackslash{}", "&": "\\&", "%": "\\%", "$": "\\$", 
 
 
 def tex_text(text: str) -> str:
-    """Free text of a robot file (name, source, notes) as LaTeX text that always compiles.
+    """Free text of a chain file (name, source, notes) as LaTeX text that always compiles.
 
     >>> tex_text("θ1 & 50% of a_2 — Craig")
     '$\\\\theta$1 \\\\& 50\\\\% of a\\\\_2 --- Craig'
@@ -159,31 +155,3 @@ def tex_text(text: str) -> str:
 def _comment(text: str) -> str:
     """Text for a LaTeX comment: one line (a newline would end the comment)."""
     return " ".join(text.split())
-
-
-# ---------------------------------------------------------------- the command
-
-def add_parser(commands) -> None:
-    from .cli import add_common_options  # here, not at the top: cli imports this module
-
-    sub = commands.add_parser(NAME, help="write LaTeX: beamer slides, an article or a snippet",
-                              description="Write the DH table, every link matrix and the result as LaTeX that "
-                              "compiles with pdflatex: beamer slides (16:9), an article, or a snippet of math "
-                              "for a document with amsmath. Matrices too wide for the page are written "
-                              "element by element (r_11 ... p_z), never shrunk.")
-    sub.add_argument("robot", metavar="ROBOT", help="built-in robot name or path to a robot YAML file")
-    sub.add_argument("--document", choices=DOCUMENTS, default="slides", help="what to write (default slides)")
-    sub.add_argument("--steps", action="store_true",
-                     help="derive the result step by step: 0T2 = 0T1 1T2, then 0T3 = 0T2 2T3, ...")
-    sub.add_argument("--from", dest="start", metavar="F", help="start frame (default: base, else 0)")
-    sub.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else n)")
-    sub.add_argument("-o", "--output", metavar="FILE", help="write to FILE (atomically) instead of standard output")
-    add_common_options(sub)
-
-
-def run(robot, args) -> str | None:
-    text = document(robot, args.document, steps=args.steps, start=args.start, end=args.end)
-    if args.output is None:
-        return text
-    write_atomic(args.output, text, inputs=[robot.path])
-    return None

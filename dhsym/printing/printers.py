@@ -19,7 +19,7 @@ import sympy
 from sympy.printing.latex import LatexPrinter as _SympyLatex
 from sympy.printing.str import StrPrinter
 
-from .notation import Notation, display_name
+from .notation import Notation, display_name, superscript
 
 _BRACKETS = {"text": [("(", ")"), ("[", "]"), ("{", "}")],
              "latex": [("(", ")"), ("[", "]"), ("\\{", "\\}")]}
@@ -149,7 +149,7 @@ class TextPrinter(_TextbookMixin, StrPrinter):
             base = self._factor(expr.base) if not expr.base.is_Atom else self._print(expr.base)
             if expr.base.is_Function and not self.notation.abbreviation(expr.base):
                 base = f"({base})"  # (sin α)², not sin α²
-            return base + ("^" + str(expr.exp) if self.style == "ascii" else _superscript(str(expr.exp)))
+            return base + ("^" + str(expr.exp) if self.style == "ascii" else superscript(str(expr.exp)))
         return super()._print_Pow(expr, rational)
 
     def _print_Integer(self, expr):
@@ -194,15 +194,3 @@ def _nesting(expr) -> int:
             if factor.is_Add:
                 deepest = max(deepest, 1 + _nesting(factor))
     return deepest
-
-
-_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-_SUBSCRIPT = str.maketrans("0123456789-", "₀₁₂₃₄₅₆₇₈₉₋")
-
-
-def _superscript(text: str) -> str:
-    return text.translate(_SUPERSCRIPT)
-
-
-def _subscript(text: str) -> str:
-    return text.translate(_SUBSCRIPT)

@@ -2,7 +2,7 @@
 
 Objects here only carry LaTeX text and expose `_repr_latex_`, so the package needs no IPython.
 
->>> from dhsym.library import load
+>>> from dhsym.io.library import load
 >>> arm = load("planar2r")
 >>> print(transform(arm, 0, 2).latex.splitlines()[0])
 {}^{0}T_{2} = \\begin{bmatrix}
@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .printing import LatexPrinter
+from .printers import LatexPrinter
 from .render import latex_legend, latex_matrix, latex_table, transform_title
 
 
@@ -28,31 +28,25 @@ class Latex:
         return self.latex
 
 
-def _variables(robot_or_chain) -> list:
-    """Joint variables of a Robot or a Chain (for chains built in Python)."""
-    return getattr(robot_or_chain, "chain", robot_or_chain).joint_variables
-
-
-def table(robot) -> Latex:
+def table(chain) -> Latex:
     """The DH table in its convention's column order; joint variables starred."""
-    return Latex(latex_table(robot))
+    return Latex(latex_table(chain))
 
 
-def matrix(robot, value, name: str = "", legend: bool = True) -> Latex:
-    """Any matrix (or vector) of a robot or chain in c/s notation, with its name and legend."""
-    printer = LatexPrinter(_variables(robot))
+def matrix(chain, value, name: str = "", legend: bool = True) -> Latex:
+    """Any matrix (or vector) of a chain in c/s notation, with its name and legend."""
+    printer = LatexPrinter(chain.joint_variables)
     body = (f"{name} = " if name else "") + latex_matrix(value, printer)
     notes = latex_legend(printer) if legend else ""
     return Latex(body + (f"\\\\[4pt]\n\\scriptstyle {notes}" if notes else ""))
 
 
-def transform(robot, i, j, raw: bool = False) -> Latex:
-    """{i}T_{j} of a robot or chain, simplified unless `raw`."""
-    chain = getattr(robot, "chain", robot)
+def transform(chain, i, j, raw: bool = False) -> Latex:
+    """{i}T_{j} of a chain, simplified unless `raw`."""
     return matrix(chain, chain.transform(i, j, raw=raw), transform_title(i, j, "latex"))
 
 
-def expression(robot, value, name: str = "") -> Latex:
+def expression(chain, value, name: str = "") -> Latex:
     """One expression in c/s notation, e.g. a position component."""
-    printer = LatexPrinter(_variables(robot))
+    printer = LatexPrinter(chain.joint_variables)
     return Latex((f"{name} = " if name else "") + printer.doprint(value))

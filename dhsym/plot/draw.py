@@ -1,10 +1,9 @@
 """Pictures of DH chains: links, joints and the x/y/z triad of every frame, drawn with matplotlib.
 
 Planar arms are drawn in their plane, spatial arms in 3D with equal axis scaling. The numeric
-poses come from dhsym.poses; frame_poses, resolve_values, is_planar and close_loop are
-re-exported here so that one import serves a notebook.
+poses come from dhsym.plot.poses; the package dhsym.plot gathers what a notebook needs.
 
->>> from dhsym.library import load
+>>> from dhsym.io.library import load
 >>> ax = draw(load("planar2r"), {"theta_1": "30deg"})
 >>> ax.name
 'rectilinear'
@@ -19,12 +18,10 @@ from pathlib import Path
 import numpy as np
 import sympy
 
-from .errors import UserError
-from .loops import close_loop  # noqa: F401 - re-exported for notebooks
-from .output import write_atomic
-from .plotlabels import Label, place_labels
-from .poses import _extent, _planar, _Skeleton, _skeleton, frame_poses, is_planar, resolve_values  # noqa: F401
-from .robotfile import Robot
+from ..errors import UserError
+from ..io.output import write_atomic
+from .labels import Label, place_labels
+from .poses import Skeleton, extent, planar_skeletons, resolve_values, skeleton
 
 AXIS_COLOURS = ("#d62728", "#2ca02c", "#1f77b4")  # x red, y green, z blue, as in most textbooks
 LINK_COLOUR = "#404040"
@@ -38,7 +35,7 @@ FORMATS = ("png", "pdf", "svg")
 
 # ---------------------------------------------------------------- pictures
 
-def draw(robot, values=None, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
+def draw(chain, values=None, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
          frame_offset=0):
     """Draw one arm: links, joints (○ revolute, □ prismatic) and every frame's x/y/z triad.
 
@@ -47,14 +44,14 @@ def draw(robot, values=None, ax=None, planar=None, show_frames=True, triad_scale
     3D. `frame_offset` renumbers the frames in the picture: a wrist that a lecture numbers
     3..6 is drawn with frame_offset=3. Returns the Axes.
 
-    >>> from dhsym.library import load
+    >>> from dhsym.io.library import load
     >>> from matplotlib.figure import Figure
     >>> draw(load("planar3r"), {"theta_2": "30deg"}, ax=Figure()).name
     'rectilinear'
     """
-    if title is None and isinstance(robot, Robot):
-        title = robot.name + "\n" + _joint_line(robot, values)
-    return draw_closed([(robot, values, LINK_COLOUR, None)], ax=ax, planar=planar, show_frames=show_frames,
+    if title is None and chain.name:
+        title = chain.name + "\n" + _joint_line(chain, values)
+    return draw_closed([(chain, values, LINK_COLOUR, None)], ax=ax, planar=planar, show_frames=show_frames,
                        triad_scale=triad_scale, title=title, frame_offset=frame_offset)
 
 
@@ -62,7 +59,7 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
                 frame_offset=0):
     """Draw several chains in one world frame, e.g. the two halves of a parallel mechanism.
 
-    Each item is (robot, values, colour, label); colour and label may be left off or None.
+    Each item is (chain, values, colour, label); colour and label may be left off or None.
     Every chain starts in the same world frame; its base steps place it. Where the last frames
     of two chains meet (the cut joint) a joint is drawn. With several chains, frame labels
     carry the first letter of the chain's label (x_L1, x_R1).
@@ -70,25 +67,25 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
     items = [_item(item, k) for k, item in enumerate(chains_with_values)]
     if not items:
         raise UserError("nothing to draw")
-    skeletons = [_skeleton(robot, values) for robot, values, _, _ in items]
+    skeletons = [skeleton(chain, values) for chain, values, _, _ in items]
     points = np.array([p for s in skeletons for p in s.ground + s.links])
-    extent = _extent(points) or 1.0
-    ax = _axes(ax, planar if planar is not None else _planar(skeletons))
+    size = extent(points) or 1.0
+    ax = _axes(ax, planar if planar is not None else planar_skeletons(skeletons))
     flat = ax.name != "3d"
-    for skeleton, (_, _, colour, label) in zip(skeletons, items, strict=True):
-        _draw_links(ax, skeleton, colour, label, flat)
-        _draw_joints(ax, skeleton.joints, colour, flat, extent)
-    cuts = _cut_points(skeletons, extent)
-    _draw_joints(ax, [("R", point) for point in cuts], "black", flat, extent)
-    _draw_ground(ax, _fixed_points(skeletons, extent), flat)
+    for picture, (_, _, colour, label) in zip(skeletons, items, strict=True):
+        _draw_links(ax, picture, colour, label, flat)
+        _draw_joints(ax, picture.joints, colour, flat, size)
+    cuts = _cut_points(skeletons, size)
+    _draw_joints(ax, [("R", point) for point in cuts], "black", flat, size)
+    _draw_ground(ax, _fixed_points(skeletons, size), flat)
     arrows = []
     if show_frames:
-        triads = _Triads(triad_scale or TRIAD_FRACTION * extent, extent)
-        for skeleton, prefix in zip(skeletons, _prefixes([label for _, _, _, label in items]), strict=True):
-            for frame, pose in skeleton.poses:
+        triads = _Triads(triad_scale or TRIAD_FRACTION * size, size)
+        for picture, prefix in zip(skeletons, _prefixes([label for _, _, _, label in items]), strict=True):
+            for frame, pose in picture.poses:
                 triads.add(prefix + _frame_name(frame, frame_offset), pose)
         arrows = triads.draw(ax, flat)
-    _set_limits(ax, np.vstack([points] + [[a.origin, a.tip] for a in arrows]), flat, extent, skeletons)
+    _set_limits(ax, np.vstack([points] + [[a.origin, a.tip] for a in arrows]), flat, size, skeletons)
     if title:
         ax.set_title(title, fontsize=10)
     _legend(ax, skeletons, items, bool(cuts), flat)
@@ -102,11 +99,16 @@ def save(fig_or_ax, path, inputs=()) -> None:
     """Write the picture (PNG, or PDF/SVG by the file's suffix) atomically; never over `inputs`."""
     figure = fig_or_ax if hasattr(fig_or_ax, "savefig") else fig_or_ax.figure
     buffer = io.BytesIO()
-    figure.savefig(buffer, format=_format(path), dpi=150, bbox_inches="tight", facecolor="white")
+    figure.savefig(buffer, format=picture_format(path), dpi=150, bbox_inches="tight", facecolor="white")
     write_atomic(path, buffer.getvalue(), inputs=inputs)
 
 
-def _format(path) -> str:
+def picture_format(path) -> str:
+    """The picture format a file name asks for (png, pdf or svg), or a UserError.
+
+    >>> picture_format("arm.svg")
+    'svg'
+    """
     suffix = Path(path).suffix.lower().lstrip(".") or "png"
     if suffix not in FORMATS:
         raise UserError(f"cannot write .{suffix} pictures; use one of {', '.join('.' + f for f in FORMATS)}")
@@ -114,8 +116,8 @@ def _format(path) -> str:
 
 
 def _item(item, number: int) -> tuple:
-    robot, values, colour, label = (tuple(item) + (None, None))[:4]
-    return robot, values, colour or CHAIN_COLOURS[number % len(CHAIN_COLOURS)], label
+    chain, values, colour, label = (tuple(item) + (None, None))[:4]
+    return chain, values, colour or CHAIN_COLOURS[number % len(CHAIN_COLOURS)], label
 
 
 def _prefixes(labels: list) -> list[str]:
@@ -127,10 +129,10 @@ def _prefixes(labels: list) -> list[str]:
     return [chr(ord("a") + k) for k in range(len(labels))]
 
 
-def _joint_line(robot, values) -> str:
-    numbers = resolve_values(robot, values)
+def _joint_line(chain, values) -> str:
+    numbers = resolve_values(chain, values)
     parts = []
-    for row in robot.chain.rows:
+    for row in chain.rows:
         value = numbers[row.variable]
         shown = f"{np.degrees(value):.4g}°" if row.joint == "R" else f"{value:.4g}"
         parts.append(f"${sympy.latex(row.variable)}$ = {shown.replace('-', '−')}")
@@ -173,7 +175,7 @@ def _fixed_points(skeletons, extent: float) -> list:
     return _distinct([p for s in skeletons for p in s.ground + s.links[:1]], extent)
 
 
-def _draw_links(ax, skeleton: _Skeleton, colour: str, label, flat: bool) -> None:
+def _draw_links(ax, skeleton: Skeleton, colour: str, label, flat: bool) -> None:
     if skeleton.ground:
         ax.plot(*_coordinates(skeleton.ground, flat), color=GROUND_COLOUR, lw=4, ls=(0, (2, 1.5)),
                 zorder=1, gid="ground")

@@ -1,6 +1,6 @@
 """Closing a loop: the joint values that make two serial chains of a cut mechanism meet.
 
->>> from dhsym.library import load
+>>> from dhsym.io.library import load
 >>> left, right = close_loop(load("fourbar_left"), load("fourbar_right"), {"phi_1": sympy.pi / 2},
 ...                          ["theta_1", "phi_2"])
 >>> round(float(np.degrees(left[sympy.Symbol("theta_1", real=True)])), 1)  # the other branch: 59.9
@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 import sympy
 
-from .errors import UserError
-from .poses import _chain_and_sample, _number, _symbols, frame_poses, resolve_values
+from ..errors import UserError
+from .poses import as_number, frame_poses, resolve_values
 
 
 def close_loop(first, second, known: dict, unknowns, guess=None, tolerance=1e-10) -> tuple[dict, dict]:
@@ -23,10 +23,10 @@ def close_loop(first, second, known: dict, unknowns, guess=None, tolerance=1e-10
     `guess` (default 0.5 for every unknown; another guess finds another assembly branch).
     Returns the full values of each chain, ready for `draw_closed`.
     """
-    names = [u.name if isinstance(u, sympy.Symbol) else str(u) for u in unknowns]
-    guess = {(k.name if isinstance(k, sympy.Symbol) else str(k)): _number(v, str(k)) for k, v in (guess or {}).items()}
-    known = {(k.name if isinstance(k, sympy.Symbol) else str(k)): v for k, v in known.items()}
-    own = [{s.name for s in _symbols(_chain_and_sample(c)[0])} for c in (first, second)]
+    names = [_name(u) for u in unknowns]
+    guess = {_name(k): as_number(v, str(k)) for k, v in (guess or {}).items()}
+    known = {_name(k): v for k, v in known.items()}
+    own = [{s.name for s in chain.symbols} for chain in (first, second)]
     strangers = [n for n in list(known) + names if not any(n in symbols for symbols in own)]
     if strangers:
         raise UserError(f"{', '.join(strangers)} belong to neither chain")
@@ -52,3 +52,7 @@ def close_loop(first, second, known: dict, unknowns, guess=None, tolerance=1e-10
     solved = {**known, **dict(zip(names, unknown_values.tolist(), strict=True))}
     return tuple(resolve_values(chain, {n: v for n, v in solved.items() if n in symbols})
                  for chain, symbols in zip((first, second), own, strict=True))
+
+
+def _name(key) -> str:
+    return key.name if isinstance(key, sympy.Symbol) else str(key)

@@ -30,8 +30,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .render import ELEMENT_NAMES, bmatrix
-from .texwidth import math_width
+from ..printing.render import ELEMENT_NAMES, bmatrix
+from .width import math_width
 
 # ---------------------------------------------------------------- pages and measured heights
 

@@ -16,7 +16,7 @@ No step expands or searches, so the cost grows linearly with the chain, and the 
 equals the plain product by construction (the tests prove it on random chains anyway).
 
 >>> import sympy
->>> from dhsym.transforms import Step
+>>> from dhsym.core.transforms import Step
 >>> t1, t2, l1, l2 = sympy.symbols("theta_1 theta_2 l_1 l_2", real=True)
 >>> m = contract([Step("Rz", t1), Step("Tx", l1), Step("Rz", t2), Step("Tx", l2)], {t1, t2})
 >>> m[0, 3]

@@ -7,7 +7,7 @@ hanging, and one for a whole command, so that nothing (printing included) runs f
 ...     while True:
 ...         pass
 Traceback (most recent call last):
-dhsym.budget.CommandTooSlow
+dhsym.core.budget.CommandTooSlow
 """
 from __future__ import annotations
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import sympy
 from sympy.printing.conventions import split_super_sub
-from sympy.printing.pretty.pretty_symbology import greek_unicode
+from sympy.printing.pretty.pretty_symbology import greek_unicode, sub, sup
 
 GREEK_NAMES = {letter: name for name, letter in greek_unicode.items()}  # 'θ' -> 'theta'
 _GREEK_WITHOUT_COMMAND = {"Alpha", "Beta", "Epsilon", "Zeta", "Eta", "Iota", "Kappa", "Mu", "Nu", "Omicron",
@@ -195,3 +195,17 @@ def _latex_base(base: str) -> str:
     if greek:
         return greek
     return f"\\mathrm{{{name}}}" if len(name) > 1 else name
+
+
+def superscript(text: str) -> str:
+    """Digits and minus signs raised, as in ⁰T₆; SymPy's own table of Unicode superscripts.
+
+    >>> superscript("-12") + subscript("3")
+    '⁻¹²₃'
+    """
+    return "".join(sup.get(ch, ch) for ch in text)
+
+
+def subscript(text: str) -> str:
+    """Digits and minus signs lowered (₀₁₂…)."""
+    return "".join(sub.get(ch, ch) for ch in text)

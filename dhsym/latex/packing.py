@@ -6,7 +6,7 @@ on one frame when it fits one; the rows that share a frame form one ``aligned`` 
 block marked `keep_with_next` ("where" before the legend) moves to the next frame with what
 follows it. A frame after the first may start with a block's `alone` form (its own title).
 
->>> from dhsym.texlayout import Block, Rows
+>>> from dhsym.latex.layout import Block, Rows
 >>> columns = [[[("r &= x", 16.6)]] * 3] * 4  # 4 columns of 3 elements, each one line high
 >>> frames = pack([Block("a display", 40.0), Rows(columns)], capacity=140.0)
 >>> [len(frame) for frame in frames], frames[1][0].latex.count("&=")
@@ -14,7 +14,7 @@ follows it. A frame after the first may start with a block's `alone` form (its o
 """
 from __future__ import annotations
 
-from .texlayout import ALIGNED_ROW, FIRST_DISPLAY, NEXT_DISPLAY, Block, Rows, aligned_display, lines_under
+from .layout import ALIGNED_ROW, FIRST_DISPLAY, NEXT_DISPLAY, Block, Rows, aligned_display, lines_under
 
 
 def pack(items: list, capacity: float) -> list[list[Block]]:

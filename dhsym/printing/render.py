@@ -1,8 +1,7 @@
 """Whole results for people: matrices, DH tables, legends and JSON, built on the printers.
 
->>> from dhsym.library import load
->>> robot = load("planar3r")
->>> print(text_table(robot))  # doctest: +NORMALIZE_WHITESPACE
+>>> from dhsym.io.library import load
+>>> print(text_table(load("planar3r")))  # doctest: +NORMALIZE_WHITESPACE
 i │ αᵢ₋₁ │ aᵢ₋₁ │ dᵢ │ θᵢ
 1 │ 0    │ 0    │ 0  │ θ1*
 2 │ 0    │ l1   │ 0  │ θ2*
@@ -12,8 +11,8 @@ from __future__ import annotations
 
 import sympy
 
-from .printing import LatexPrinter, TextPrinter, _subscript, _superscript
-from .robotfile import Robot
+from .notation import subscript, superscript
+from .printers import LatexPrinter, TextPrinter
 
 ELEMENT_NAMES = [["r11", "r12", "r13", "px"], ["r21", "r22", "r23", "py"], ["r31", "r32", "r33", "pz"]]
 CONVENTION_NOTES = {
@@ -29,8 +28,8 @@ def convention_note(convention: str, ascii: bool = False) -> str:
     return note.translate(_ASCII) if ascii else note
 
 
-def text_printer(robot: Robot, ascii: bool = False, marked=()) -> TextPrinter:
-    return TextPrinter(robot.chain.joint_variables, marked=marked, ascii=ascii)
+def text_printer(chain, ascii: bool = False, marked=()) -> TextPrinter:
+    return TextPrinter(chain.joint_variables, marked=marked, ascii=ascii)
 
 
 def transform_title(i, j, style: str = "unicode") -> str:
@@ -39,7 +38,7 @@ def transform_title(i, j, style: str = "unicode") -> str:
         name = lambda f: f"\\mathrm{{{f}}}" if isinstance(f, str) else str(f)  # noqa: E731
         return f"{{}}^{{{name(i)}}}T_{{{name(j)}}}"
     if style == "unicode" and isinstance(i, int) and isinstance(j, int):
-        return f"{_superscript(str(i))}T{_subscript(str(j))}"
+        return f"{superscript(str(i))}T{subscript(str(j))}"
     if isinstance(i, int) and isinstance(j, int):
         return f"{i}T{j}"
     return f"T({i} -> {j})" if style == "ascii" else f"T({i} → {j})"
@@ -85,21 +84,21 @@ def text_legend(printer: TextPrinter, width: int = 100) -> str:
     return "\n".join(lines + [line])
 
 
-def table_columns(robot) -> list[tuple[str, str, str]]:
+def table_columns(convention: str) -> list[tuple[str, str, str]]:
     """(row field, unicode header, LaTeX header) in the order the convention's books use."""
-    if getattr(robot, "chain", robot).convention == "modified":
+    if convention == "modified":
         return [("alpha", "αᵢ₋₁", "\\alpha_{i-1}"), ("a", "aᵢ₋₁", "a_{i-1}"), ("d", "dᵢ", "d_i"),
                 ("theta", "θᵢ", "\\theta_i")]
     return [("theta", "θᵢ", "\\theta_i"), ("d", "dᵢ", "d_i"), ("a", "aᵢ", "a_i"), ("alpha", "αᵢ", "\\alpha_i")]
 
 
-def text_table(robot: Robot, ascii: bool = False) -> str:
+def text_table(chain, ascii: bool = False) -> str:
     """The DH table in the convention's column order; * marks each joint variable."""
-    printer = text_printer(robot, ascii=ascii, marked=robot.chain.joint_variables)
-    columns = table_columns(robot)
+    printer = text_printer(chain, ascii=ascii, marked=chain.joint_variables)
+    columns = table_columns(chain.convention)
     headers = ["i"] + [_ascii_header(field) if ascii else header for field, header, _ in columns]
     body = [[str(n)] + [printer.doprint(getattr(row, field)) for field, _, _ in columns]
-            for n, row in enumerate(robot.chain.rows, 1)]
+            for n, row in enumerate(chain.rows, 1)]
     widths = [max(len(r[k]) for r in [headers] + body) for k in range(len(headers))]
     separator = " | " if ascii else " │ "
     lines = [separator.join(cell.ljust(w) for cell, w in zip(line, widths)).rstrip() for line in [headers] + body]
@@ -124,28 +123,36 @@ def latex_legend(printer: LatexPrinter) -> str:
     return ",\\quad ".join(f"{label} = {meaning}" for label, meaning in entries)
 
 
-def latex_table(robot) -> str:
-    """The DH table of a Robot or a Chain as a LaTeX array; joint variables carry a star."""
-    chain = getattr(robot, "chain", robot)
-    printer = LatexPrinter(chain.joint_variables, marked=chain.joint_variables)
-    columns = table_columns(robot)
-    header = " & ".join(["i"] + [h for _, _, h in columns])
-    body = [" & ".join([str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns])
-            for n, row in enumerate(chain.rows, 1)]
-    return ("\\begin{array}{c|cccc}\n" + header + " \\\\\n\\hline\n" + " \\\\\n".join(body) + "\n\\end{array}")
+def latex_table(chain) -> str:
+    """The DH table of a chain as a LaTeX array; joint variables carry a star."""
+    return latex_array(*latex_table_cells(chain, LatexPrinter(chain.joint_variables, marked=chain.joint_variables)))
 
 
-def json_result(robot: Robot, i, j, matrix: sympy.Matrix) -> dict:
+def latex_table_cells(chain, printer: LatexPrinter) -> tuple[list[str], list[list[str]]]:
+    """The header and the rows of the DH table as LaTeX cells, written by `printer`."""
+    columns = table_columns(chain.convention)
+    header = ["i"] + [latex for _, _, latex in columns]
+    rows = [[str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns] for n, row in enumerate(chain.rows, 1)]
+    return header, rows
+
+
+def latex_array(header: list[str], rows: list[list[str]]) -> str:
+    """A DH table (or part of one) as an array with a rule under its header."""
+    body = " & ".join(header) + " \\\\\n\\hline\n" + " \\\\\n".join(" & ".join(row) for row in rows)
+    return "\\begin{array}{c|cccc}\n" + body + "\n\\end{array}"
+
+
+def json_result(chain, i, j, matrix: sympy.Matrix) -> dict:
     """A result any SymPy user can read back: full cos/sin, the robot file's symbol names."""
-    printer = text_printer(robot, ascii=True)
+    printer = text_printer(chain, ascii=True)
     for element in matrix:
         printer.doprint(element)  # collects the abbreviations the text form uses
     return {
-        "robot": robot.name,
-        "convention": robot.chain.convention,
+        "robot": chain.name,
+        "convention": chain.convention,
         "from": i,
         "to": j,
-        "joint_variables": [s.name for s in robot.chain.joint_variables],
+        "joint_variables": [s.name for s in chain.joint_variables],
         "matrix": [[sympy.sstr(matrix[r, c]) for c in range(4)] for r in range(4)],
         "abbreviations": {label: meaning for label, meaning in _json_legend(printer)},
     }

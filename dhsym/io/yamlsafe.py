@@ -17,7 +17,7 @@ from pathlib import Path
 
 import yaml
 
-from .errors import Location, UserError
+from ..errors import Location, UserError
 
 MAX_FILE_BYTES = 1 << 20
 MAX_YAML_DEPTH = 10  # a robot file needs 3 (file, joints list, row)

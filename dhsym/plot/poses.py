@@ -2,7 +2,7 @@
 
 The numbers come from the same DH steps the algebra uses, so a picture is the formula evaluated.
 
->>> from dhsym.library import load
+>>> from dhsym.io.library import load
 >>> poses = frame_poses(load("planar2r"), {"theta_1": 0, "theta_2": sympy.pi / 2})
 >>> [(frame, pose[:2, 3].round(3).tolist()) for frame, pose in poses]
 [(0, [0.0, 0.0]), (1, [0.5, 0.0]), (2, [0.5, 0.4])]
@@ -14,41 +14,40 @@ from dataclasses import dataclass
 import numpy as np
 import sympy
 
-from .chain import Chain
-from .errors import UserError
-from .expr import parse_expression
-from .robotfile import Robot
+from ..core.chain import Chain
+from ..errors import UserError
+from ..io.expr import parse_expression
 
 
-def frame_poses(robot_or_chain, values=None) -> list[tuple]:
+def frame_poses(chain, values=None) -> list[tuple]:
     """The numeric 4×4 pose of every frame (base, 0..n, tool as present) in the first frame.
 
     `values` maps symbols or their names to numbers (or to expression text such as "30deg").
     Missing constants come from the robot file's `sample`, missing joint variables are 0.
 
-    >>> from dhsym.library import load
+    >>> from dhsym.io.library import load
     >>> [f for f, _ in frame_poses(load("fourbar_right"), {"phi_1": 0})]
     ['base', 0, 1, 'tool']
     """
-    return _skeleton(robot_or_chain, values).poses
+    return skeleton(chain, values).poses
 
 
-def resolve_values(robot_or_chain, values=None) -> dict:
+def resolve_values(chain, values=None) -> dict:
     """Every symbol of the chain mapped to a float: given, else sample (constants) or 0 (joints).
 
-    >>> from dhsym.library import load
+    >>> from dhsym.io.library import load
     >>> sorted((s.name, v) for s, v in resolve_values(load("planar2r"), {"theta_1": "90deg"}).items())
     [('a_1', 0.5), ('a_2', 0.4), ('theta_1', 1.5707963267948966), ('theta_2', 0.0)]
     """
-    chain, sample = _chain_and_sample(robot_or_chain)
-    symbols = {s.name: s for s in _symbols(chain)}
+    chain = _checked(chain)
+    symbols = {s.name: s for s in chain.symbols}
     given = {}
     for key, value in (values or {}).items():
         name = key.name if isinstance(key, sympy.Symbol) else str(key)
         if name not in symbols:
             raise UserError(f"{name} is not a symbol of this robot; its symbols are {', '.join(sorted(symbols))}")
-        given[name] = _number(value, name)
-    sample = {str(symbol): value for symbol, value in sample.items()}
+        given[name] = as_number(value, name)
+    sample = {str(symbol): value for symbol, value in chain.sample.items()}
     variables = {v.name for v in chain.joint_variables}
     resolved, missing = {}, []
     for name, symbol in symbols.items():
@@ -57,7 +56,7 @@ def resolve_values(robot_or_chain, values=None) -> dict:
         elif name in variables:
             resolved[symbol] = 0.0
         elif name in sample:
-            resolved[symbol] = _number(sample[name], name)
+            resolved[symbol] = as_number(sample[name], name)
         else:
             missing.append(name)
     if missing:
@@ -66,21 +65,18 @@ def resolve_values(robot_or_chain, values=None) -> dict:
     return resolved
 
 
-def _chain_and_sample(robot_or_chain) -> tuple[Chain, dict]:
-    if isinstance(robot_or_chain, Robot):
-        return robot_or_chain.chain, robot_or_chain.sample
-    if isinstance(robot_or_chain, Chain):
-        return robot_or_chain, {}
-    raise TypeError(f"expected a Robot or a Chain, not {type(robot_or_chain).__name__}")
+def _checked(chain) -> Chain:
+    if not isinstance(chain, Chain):
+        raise TypeError(f"expected a Chain, not {type(chain).__name__}")
+    return chain
 
 
-def _symbols(chain: Chain) -> set:
-    fields = [e for row in chain.rows for e in (row.theta, row.d, row.a, row.alpha)]
-    fields += [step.value for step in chain.base + chain.tool]
-    return set().union(*(sympy.sympify(e).free_symbols for e in fields)) | set(chain.joint_variables)
+def as_number(value, name: str) -> float:
+    """A float from a number or from expression text ("30deg"); `name` is for the error message.
 
-
-def _number(value, name: str) -> float:
+    >>> as_number("90deg", "theta_1")
+    1.5707963267948966
+    """
     if isinstance(value, str):
         value = parse_expression(value)
     try:
@@ -105,7 +101,7 @@ def _step_matrix(kind: str, value: float) -> np.ndarray:
 
 
 @dataclass
-class _Skeleton:
+class Skeleton:
     """What a picture needs: frame poses, the link polyline and where the joints are."""
 
     poses: list  # (frame, 4×4 pose)
@@ -114,9 +110,9 @@ class _Skeleton:
     joints: list  # (kind "R" or "P", point)
 
 
-def _skeleton(robot_or_chain, values) -> _Skeleton:
-    chain, _ = _chain_and_sample(robot_or_chain)
-    numbers = resolve_values(robot_or_chain, values)
+def skeleton(chain, values) -> Skeleton:
+    """The numeric picture of `chain` at `values` (see resolve_values)."""
+    numbers = resolve_values(chain, values)
     pose = np.eye(4)
 
     def move(steps) -> list:
@@ -147,7 +143,7 @@ def _skeleton(robot_or_chain, values) -> _Skeleton:
         move(chain.tool)
         links.append(pose[:3, 3].copy())
         poses.append(("tool", pose.copy()))
-    return _Skeleton(poses, ground if chain.base else [], _without_repeats(links), joints)
+    return Skeleton(poses, ground if chain.base else [], _without_repeats(links), joints)
 
 
 def _without_repeats(points: list) -> list:
@@ -158,24 +154,26 @@ def _without_repeats(points: list) -> list:
     return kept
 
 
-def is_planar(robot_or_chain, values=None) -> bool:
+def is_planar(chain, values=None) -> bool:
     """True when every z axis is parallel to the first frame's z, all points lie in one plane
     normal to it, and no joint is prismatic (a prismatic joint would leave the plane).
 
-    >>> from dhsym.library import load
+    >>> from dhsym.io.library import load
     >>> is_planar(load("planar3r")), is_planar(load("scara")), is_planar(load("puma560"))
     (True, False, False)
     """
-    return _planar([_skeleton(robot_or_chain, values)])
+    return planar_skeletons([skeleton(chain, values)])
 
 
-def _planar(skeletons) -> bool:
+def planar_skeletons(skeletons) -> bool:
+    """True when the skeletons (one picture may hold several chains) all lie in one plane."""
     points = np.array([p for s in skeletons for p in s.ground + s.links])
-    tolerance = 1e-9 * max(1.0, _extent(points))
+    tolerance = 1e-9 * max(1.0, extent(points))
     return all(
         abs(abs(pose[2, 2]) - 1) < 1e-9 for s in skeletons for _, pose in s.poses
     ) and np.ptp(points[:, 2]) < tolerance and all(kind == "R" for s in skeletons for kind, _ in s.joints)
 
 
-def _extent(points: np.ndarray) -> float:
+def extent(points: np.ndarray) -> float:
+    """The largest side of the points' bounding box, the scale a picture is drawn to."""
     return float(np.max(np.ptp(points, axis=0))) if len(points) else 0.0

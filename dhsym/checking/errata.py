@@ -25,8 +25,8 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from .expr import parse_expression
-from .printing import LatexPrinter, TextPrinter
+from ..io.expr import parse_expression
+from ..printing.printers import LatexPrinter, TextPrinter
 from .verify import Verdict, check
 
 

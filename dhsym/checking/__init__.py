@@ -1,0 +1,2 @@
+"""Checking: equality by algebra and by numbers (`verify`), and comparison with what a lecture
+printed (`errata`)."""

@@ -1,0 +1,115 @@
+"""The `dhsym` command: parse, load the robot, run the command, report every failure in one line.
+
+    dhsym list
+    dhsym table puma560
+    dhsym fk puma560 --from 3 --to 6 --format latex
+
+Each command lives in its own module (listing, kinematics, latex, plot) with
+`add_parsers(commands)`, which registers its subcommands and their `run(robot, args)`.
+"""
+from __future__ import annotations
+
+import os
+import sys
+import warnings
+
+from ..core.budget import CommandTooSlow, SimplificationTimeout, time_budget
+from ..errors import UserError
+from ..io import library
+from . import kinematics, latex, listing, plot
+from .options import COMMAND_BUDGET_FACTOR, Parser
+
+COMMAND_MODULES = (listing, kinematics, latex, plot)
+
+EXIT_USER_ERROR = 2
+EXIT_INTERNAL_ERROR = 70
+EXIT_BROKEN_PIPE = 141  # what a shell reports for a tool stopped by SIGPIPE
+ISSUE_URL = "the dhsym issue tracker"
+
+
+def build_parser() -> Parser:
+    parser = Parser(prog="dhsym", description="Denavit–Hartenberg tables to textbook-form kinematics: "
+                    "link matrices, products iTj and 0Tn in c1/s23/c123 notation, as text, LaTeX or JSON.",
+                    epilog="ROBOT is a built-in name (see 'dhsym list') or a path to a robot YAML file.")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
+    commands.required = True
+    for module in COMMAND_MODULES:
+        module.add_parsers(commands)
+    return parser
+
+
+def main(argv=None, read=library.read) -> int:
+    """Run one command; `read` turns ROBOT into a RobotFile (tests pass their own)."""
+    args = None
+    try:
+        args = build_parser().parse_args(argv)
+        with warnings.catch_warnings(record=True) as caught, time_budget(_command_budget(args), CommandTooSlow):
+            warnings.simplefilter("always", SimplificationTimeout)
+            status = _dispatch(args, read)
+        for warning in caught:
+            if issubclass(warning.category, SimplificationTimeout):
+                print(f"dhsym: warning: {printable(str(warning.message))}", file=sys.stderr)
+        return status
+    except UserError as error:
+        print(f"dhsym: error: {printable(str(error))}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except CommandTooSlow:
+        print(f"dhsym: error: {printable(args.robot)}: gave up after {_command_budget(args):g} s; the result is "
+              f"too large to work out and print (ask for part of the chain with --from/--to, or raise --timeout)",
+              file=sys.stderr)
+        return EXIT_USER_ERROR
+    except KeyboardInterrupt:
+        print("dhsym: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # `dhsym fk puma560 | head`: the reader left; stop quietly, like a shell tool
+        _silence_stdout()
+        return EXIT_BROKEN_PIPE
+    except UnicodeEncodeError as error:
+        print(f"dhsym: error: the output cannot be written as {error.encoding}; use --ascii, or set "
+              f"PYTHONIOENCODING=utf-8", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except Exception as error:  # a bug in dhsym, not the user's fault
+        print(f"dhsym: internal error: {type(error).__name__}: {printable(str(error))[:300]}\n"
+              f"This is a bug in dhsym, not a mistake in your input. Please report it on {ISSUE_URL} "
+              f"with the command you ran and the robot file.", file=sys.stderr)
+        return EXIT_INTERNAL_ERROR
+
+
+def _command_budget(args) -> float | None:
+    """A whole command may take this long; simplification alone gets --timeout per result."""
+    timeout = getattr(args, "timeout", None)
+    return COMMAND_BUDGET_FACTOR * timeout if timeout else None
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null, so that Python's final flush does not complain about the pipe again."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except (OSError, ValueError):  # stdout without a file descriptor (tests, notebooks): nothing to do
+        pass
+
+
+def printable(message: str) -> str:
+    """One line whatever the message quotes: line breaks and control characters are escaped.
+
+    >>> printable("bad\\nname")
+    'bad\\\\nname'
+    """
+    return "".join(ch if ch.isprintable() else ascii(ch)[1:-1] for ch in message)
+
+
+def _dispatch(args, read) -> int:
+    robot = None
+    if hasattr(args, "robot"):
+        robot = read(args.robot)
+        robot.chain.timeout = args.timeout
+        for warning in robot.warnings:
+            print(f"dhsym: warning: {printable(warning)}", file=sys.stderr)
+    output = args.run(robot, args)
+    if output is not None:
+        sys.stdout.write(output if output.endswith("\n") else output + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,81 @@
+"""`dhsym table`, `dhsym links` and `dhsym fk`: the DH table, the link matrices and any
+transform, as text, LaTeX or JSON.
+
+    dhsym table puma560
+    dhsym links planar3r --ascii
+    dhsym fk puma560 --from 3 --to 6 --format latex
+"""
+from __future__ import annotations
+
+import json
+
+from ..printing import render
+from ..printing.printers import LatexPrinter
+from .options import format_options, frame_options, robot_options
+
+
+def add_parsers(commands) -> None:
+    parents = [robot_options(), format_options()]
+    table = commands.add_parser("table", parents=parents, help="print the DH table",
+                                description="Print the robot's DH table in its convention's column order; "
+                                "* marks the joint variables.")
+    table.set_defaults(run=run_table)
+    links = commands.add_parser("links", parents=parents, help="print every link matrix",
+                                description="Print every link matrix {i-1}T_i, simplified.")
+    links.add_argument("--raw", action="store_true", help="plain products, without simplification")
+    links.set_defaults(run=run_links)
+    fk = commands.add_parser("fk", parents=parents, help="print the transform between two frames "
+                             "(default: whole chain)", description="Print {FROM}T_{TO}. Frames are 0..n, plus "
+                             "base and tool when the robot has them. FROM after TO gives the inverse transform.")
+    frame_options(fk)
+    fk.add_argument("--raw", action="store_true", help="the plain product, without simplification")
+    fk.set_defaults(run=run_fk)
+
+
+def run_table(robot, args) -> str:
+    chain = robot.chain
+    if args.format == "json":
+        rows = [{"joint": r.joint, "theta": str(r.theta), "d": str(r.d), "a": str(r.a), "alpha": str(r.alpha),
+                 "variable": r.variable.name} for r in chain.rows]
+        return json.dumps({"robot": chain.name, "convention": chain.convention, "rows": rows}, indent=2)
+    if args.format == "latex":
+        return "\\[\n" + render.latex_table(chain) + "\n\\]"
+    note = render.convention_note(chain.convention, ascii=args.ascii) + "; * marks joint variables"
+    return _header(chain, "DH table", args.ascii) + "\n" + note + "\n\n" + render.text_table(chain, ascii=args.ascii)
+
+
+def run_links(robot, args) -> str:
+    chain = robot.chain
+    return _results(chain, [(i - 1, i, chain.link(i, raw=args.raw)) for i in range(1, chain.n + 1)], args)
+
+
+def run_fk(robot, args) -> str:
+    chain = robot.chain
+    start = chain.first_frame if args.start is None else chain.frame(args.start)
+    end = chain.last_frame if args.end is None else chain.frame(args.end)
+    return _results(chain, [(start, end, chain.transform(start, end, raw=args.raw))], args)
+
+
+def _header(chain, what: str, ascii: bool) -> str:
+    title = f"{chain.name}: {what}  ({chain.convention} DH)"
+    return title.replace("−", "-") if ascii else title
+
+
+def _results(chain, results, args) -> str:
+    if args.format == "json":
+        data = [render.json_result(chain, i, j, m) for i, j, m in results]
+        return json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False)
+    if args.format == "latex":
+        printer = LatexPrinter(chain.joint_variables)
+        blocks = [f"{render.transform_title(i, j, 'latex')} =\n{render.latex_matrix(m, printer)}"
+                  for i, j, m in results]
+        legend = render.latex_legend(printer)
+        return "\n\n".join(f"\\[\n{b}\n\\]" for b in blocks) + (f"\n\nwhere ${legend}$" if legend else "")
+    printer = render.text_printer(chain, ascii=args.ascii)
+    style = "ascii" if args.ascii else "unicode"
+    blocks = []
+    for i, j, matrix in results:
+        title = _header(chain, render.transform_title(i, j, style), args.ascii)
+        blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, args.width))
+    legend = render.text_legend(printer, args.width)
+    return "\n\n".join(blocks) + ("\n\n" + legend if legend else "")

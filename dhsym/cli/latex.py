@@ -1,0 +1,32 @@
+"""`dhsym latex`: beamer slides, an article or a snippet of math, written atomically.
+
+    dhsym latex puma560 --document article --steps -o puma.tex
+"""
+from __future__ import annotations
+
+from ..io.output import write_atomic
+from ..latex.document import DOCUMENTS, document
+from .options import frame_options, robot_options
+
+
+def add_parsers(commands) -> None:
+    sub = commands.add_parser("latex", parents=[robot_options()],
+                              help="write LaTeX: beamer slides, an article or a snippet",
+                              description="Write the DH table, every link matrix and the result as LaTeX that "
+                              "compiles with pdflatex: beamer slides (16:9), an article, or a snippet of math "
+                              "for a document with amsmath. Matrices too wide for the page are written "
+                              "element by element (r_11 ... p_z), never shrunk.")
+    sub.add_argument("--document", choices=DOCUMENTS, default="slides", help="what to write (default slides)")
+    sub.add_argument("--steps", action="store_true",
+                     help="derive the result step by step: 0T2 = 0T1 1T2, then 0T3 = 0T2 2T3, ...")
+    frame_options(sub)
+    sub.add_argument("-o", "--output", metavar="FILE", help="write to FILE (atomically) instead of standard output")
+    sub.set_defaults(run=run)
+
+
+def run(robot, args) -> str | None:
+    text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end)
+    if args.output is None:
+        return text
+    write_atomic(args.output, text, inputs=[robot.path])
+    return None

@@ -1,0 +1,59 @@
+"""Options shared by the commands, as argparse parent parsers, and the parser class that turns
+a usage mistake into one line on stderr.
+
+>>> parser = Parser(prog="demo", parents=[robot_options()])
+>>> parser.parse_args(["puma560", "--timeout", "5"]).timeout
+5.0
+"""
+from __future__ import annotations
+
+import argparse
+
+from ..errors import UserError
+
+COMMAND_BUDGET_FACTOR = 5  # times --timeout, for everything a command does (printing too)
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse, but a usage mistake is a UserError: one line on stderr and exit status 2."""
+
+    def error(self, message):
+        raise UserError(f"{message} (see '{self.prog} --help')")
+
+
+def robot_options() -> argparse.ArgumentParser:
+    """ROBOT and --timeout: every command that reads a robot takes them."""
+    parent = argparse.ArgumentParser(add_help=False)
+    parent.add_argument("robot", metavar="ROBOT", help="built-in robot name or path to a robot YAML file")
+    parent.add_argument("--timeout", type=seconds, default=60.0, metavar="SECONDS",
+                        help="simplification budget per result; past it the raw product is printed (default 60). "
+                             f"A whole command stops with an error after {COMMAND_BUDGET_FACTOR} times this")
+    return parent
+
+
+def format_options() -> argparse.ArgumentParser:
+    """--format, --ascii and --width: the commands that print matrices or tables."""
+    parent = argparse.ArgumentParser(add_help=False)
+    parent.add_argument("--format", choices=("text", "latex", "json"), default="text",
+                        help="output format (default text)")
+    parent.add_argument("--ascii", action="store_true", help="plain ASCII text instead of Unicode")
+    parent.add_argument("--width", type=int, default=100, metavar="N",
+                        help="text width; wider matrices are printed element by element (default 100)")
+    return parent
+
+
+def frame_options(parser: argparse.ArgumentParser) -> None:
+    """--from and --to: the two frames of a transform."""
+    parser.add_argument("--from", dest="start", metavar="F", help="start frame (default: base, else 0)")
+    parser.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else n)")
+
+
+def seconds(text: str) -> float:
+    """A positive number of seconds, for --timeout."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of seconds") from None
+    if not 0 < value < 1e6:
+        raise argparse.ArgumentTypeError("the timeout must be a positive number of seconds")
+    return value
