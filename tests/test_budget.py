@@ -52,13 +52,21 @@ def test_the_cli_prints_the_raw_result_and_one_warning_line(capsys):
     assert stderr == "dhsym: warning: simplification took longer than 0.2 s; showing the unsimplified product\n"
 
 
-def test_a_command_that_cannot_finish_stops_with_one_error_line(capsys):
+def test_a_command_that_cannot_finish_stops_with_one_error_line(capsys, monkeypatch):
     def reading_forever(name):
         never_finishes(None, None)
+    monkeypatch.setattr(cli, "COMMAND_BUDGET_FLOOR", 0)  # the factor alone, so the test is quick
     status, stdout, stderr = _cli(["fk", "planar2r", "--timeout", "0.1"], capsys, read=reading_forever)
     assert (status, stdout) == (2, "")
     assert stderr.startswith("dhsym: error: planar2r: gave up after 0.5 s; the result is too large")
     assert stderr.count("\n") == 1
+
+
+def test_a_tiny_timeout_still_prints_the_raw_product(capsys):
+    expected = _cli(["fk", "puma560", "--raw"], capsys)[1]
+    status, stdout, stderr = _cli(["fk", "puma560", "--timeout", "0.0001"], capsys)
+    assert (status, stdout) == (0, expected)
+    assert stderr == "dhsym: warning: simplification took longer than 0.0001 s; showing the unsimplified product\n"
 
 
 class OuterDeadline(BaseException):

@@ -6,6 +6,8 @@ example may run longer than EXAMPLE_SECONDS. The example counts are set here, no
 profile, so that every run (CI included) tries at least 2,000 inputs.
 """
 import os
+import re
+from decimal import Decimal
 
 import pytest
 import sympy
@@ -13,10 +15,14 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from dhsym import Chain, DHRow
+from dhsym.checking.verify import numeric_error
 from dhsym.core.budget import time_budget
 from dhsym.errors import UserError
-from dhsym.io.expr import parse_expression
+from dhsym.io.expr import Reading, parse_expression
 from dhsym.io.robotfile import ROW_KEYS, TOP_KEYS, RobotFile, load_robot_text
+from dhsym.printing.notation import written_offsets
+from dhsym.printing.printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
 EXAMPLE_SECONDS = 5.0  # generous: a hang is what we look for, not a slow machine
 FUZZ = settings(deadline=None, database=None, suppress_health_check=list(HealthCheck))
@@ -192,3 +198,149 @@ def test_fuzz_robot_files(text):
 def test_fuzz_robot_file_garbage(text):
     assert_robot_outcome(text)
 
+
+
+
+# --- numbers and angles as written: what is printed reads back to the exact value --------------
+
+ROUND_TRIPS = 150
+decimals = st.from_regex(r"-?[0-9]{1,3}\.[0-9]{1,6}", fullmatch=True)
+pi_multiples = st.tuples(st.integers(-24, 24), st.sampled_from([1, 2, 3, 4, 6, 12])).map(lambda t: f"{t[0]}*pi/{t[1]}")
+constant_angles = st.one_of(decimals, pi_multiples, st.sampled_from(["beta", "-beta", "1/3", "2/7", "0"]))
+JOINTS = sympy.symbols("q1:4", real=True)
+BETA = sympy.Symbol("beta", real=True)
+
+
+def _plain(text: str) -> str:
+    """Printed text (ASCII or Unicode) in the parser's syntax: − to -, a table's stars dropped,
+    brackets made round, `cos q1` called, and juxtaposed factors (`0.5 l1`, `2(…)`) multiplied."""
+    text = re.sub(r"\*(?!\*)", "", text.replace("**", "^")).replace("−", "-")
+    text = text.translate(str.maketrans("[]{}", "()()"))
+    text = re.sub(r"\b(cos|sin|sqrt) ([\w.]+)", r"\1(\2)", text)
+    text = re.sub(r"(?<=[\w.)])\s+(?=[\w(])", "*", text)
+    return re.sub(r"(?<=[\d)])(?=\()", "*", text)
+
+
+@settings(FUZZ, max_examples=ROUND_TRIPS)
+@given(st.one_of(st.lists(decimals, min_size=1, max_size=3).map(lambda x: (x, "+")),
+                 st.lists(decimals, min_size=2, max_size=2).map(lambda x: (x, "*"))))
+def test_decimals_print_as_decimals_that_read_back_exactly(case):
+    literals, operator = case
+    reading = Reading()
+    value = parse_expression(f" {operator} ".join(f"({x})" for x in literals), reading=reading)
+    for printer in (TextPrinter([], numbers=reading.numbers), TextPrinter([], numbers=reading.numbers, ascii=True),
+                    LatexPrinter([], numbers=reading.numbers), ExactPrinter([], numbers=reading.numbers)):
+        text = printer.doprint(value)
+        assert "/" not in text and "frac" not in text, (literals, text)  # 0.81725, never 3269/4000
+        assert parse_expression(_plain(text)) == value, (literals, text)
+        assert sympy.sympify(_plain(text), rational=True) == value, (literals, text)
+    if len(literals) == 1:  # a single literal prints as it was written, less its trailing zeros
+        shown = TextPrinter([], numbers=reading.numbers, ascii=True).doprint(value)
+        assert shown == ("0" if value == 0 else format(Decimal(literals[0]).normalize(), "f")), (literals, shown)
+
+
+@settings(FUZZ, max_examples=ROUND_TRIPS)
+@given(decimals, st.sampled_from(["l_1", "a_2", "d_3"]))
+def test_a_decimal_stays_a_factor(literal, name):
+    reading = Reading()
+    value = parse_expression(f"{literal}*{name}", reading=reading)
+    text = TextPrinter([], numbers=reading.numbers).doprint(value)
+    assert value == 0 or "/" not in text, (literal, text)  # 0.425 l1, not (17 l1)/40
+    exact = ExactPrinter([], numbers=reading.numbers).doprint(value)
+    assert parse_expression(exact) == value
+    assert sympy.sympify(exact, locals={name: sympy.Symbol(name, real=True)}, rational=True) == value
+
+
+@settings(FUZZ, max_examples=ROUND_TRIPS)
+@given(st.lists(constant_angles, min_size=1, max_size=3), st.sampled_from([sympy.cos, sympy.sin]),
+       st.lists(st.sampled_from([1, -1]), min_size=3, max_size=3))
+def test_offsets_print_as_written_and_mean_the_same(offsets, function, signs):
+    """cos/sin of a signed sum of joint angles with offsets: SymPy may rewrite the angle (cos(x − π/4)
+    becomes sin(x + π/4)); the printers give it back as written, and the text means the same value."""
+    reading = Reading()
+    written = [parse_expression(o, reading=reading) for o in offsets]
+    chain = Chain([DHRow.revolute(q + o, variable=q) for q, o in zip(JOINTS, written)], "standard",
+                  numbers=reading.numbers)
+    settings_ = chain_settings(chain)
+    value = function(sympy.Add(*(sign * (q + o) for sign, q, o in zip(signs, JOINTS, written))))
+    printer = TextPrinter(settings_, ascii=True)
+    shown = printer.doprint(value)
+    # each abbreviation's meaning, read back, is the angle the table wrote (offsets that are
+    # multiples of π/2 folded into the notation); substituted into the text it gives the value
+    text = shown
+    for abbreviation in sorted(printer.used, key=lambda a: -len(a.label("ascii"))):
+        meaning = printer.notation.meaning(abbreviation, "ascii")
+        read = parse_expression(_plain(meaning))
+        expected = (sympy.cos if abbreviation.function == "c" else sympy.sin)(printer.notation.angle(abbreviation))
+        assert read == expected, (offsets, meaning)
+        text = re.sub(rf"(?<![\w(]){re.escape(abbreviation.label('ascii'))}(?![\w])", f"({meaning})", text)
+    assert _numerically_equal(parse_expression(_plain(text)), value), (offsets, shown, text)
+    exact = ExactPrinter(settings_).doprint(value)
+    names = {s.name: s for s in (*JOINTS, BETA)}
+    assert _numerically_equal(sympy.sympify(exact, locals=names, rational=True), value), (offsets, exact)
+    kept = written_offsets(chain.rows)  # an offset that is no multiple of π/2 shows, as written
+    for abbreviation in printer.used:
+        offset = printer.notation.offset(abbreviation)
+        assert offset == sympy.Add(*(sign * kept.get(JOINTS[int(label) - 1], 0) for label, sign in
+                                     abbreviation.indices)), (offsets, abbreviation)
+
+
+@st.composite
+def robots_as_written(draw):
+    rows = []
+    for k in range(1, draw(st.integers(1, 3)) + 1):
+        offset = draw(st.sampled_from(["", " - pi/4", " + pi/6", " - pi/2", " + 0.1", " - 1/3"]))
+        rows.append(f"  - {{joint: R, alpha: {draw(constant_angles)}, a: {draw(decimals)}, "
+                    f"d: {draw(st.one_of(decimals, st.sampled_from(['l1', '0', '1/2'])))}, theta: q{k}{offset}}}")
+    return "convention: standard\njoints:\n" + "\n".join(rows) + "\n"
+
+
+@settings(FUZZ, max_examples=60)
+@given(robots_as_written())
+def test_robot_files_with_decimals_and_offsets_read_back_from_every_output(text):
+    """The table (text and JSON) reads back to the file's exact values; the JSON matrix to the product."""
+    import json
+
+    from dhsym.cli.app import main
+
+    robot = load_robot_text(text, "arm.yaml")
+    chain = robot.chain
+    names = {s.name: s for s in chain.symbols}
+    commands = (["table", "-", "--ascii", "--width", "200"], ["table", "-", "--format", "json"],
+                ["fk", "-", "--format", "json"])
+    table, rows, fk = (_run_in_process(main, argv, text) for argv in commands)
+    cells = [line.split(" | ")[1:] for line in table.splitlines()[4:]]
+    assert len(cells) == chain.n
+    for row, line in zip(chain.rows, cells):
+        for field, cell in zip(("theta", "d", "a", "alpha"), line):
+            assert parse_expression(_plain(cell.strip())) == getattr(row, field), (text, cell)
+    for row, data in zip(chain.rows, json.loads(rows)["rows"]):
+        for field in ("theta", "d", "a", "alpha"):
+            assert sympy.sympify(data[field], locals=names, rational=True) == getattr(row, field), (text, data)
+    matrix = sympy.Matrix([[sympy.sympify(element, locals=names, rational=True) for element in row]
+                           for row in json.loads(fk)["matrix"]])
+    assert numeric_error(matrix, chain.fk(raw=True)) < 1e-9, text
+
+
+def _run_in_process(main, argv, text) -> str:
+    import contextlib
+    import io
+    import sys
+
+    stdin, stdout = sys.stdin, io.StringIO()
+    sys.stdin = io.TextIOWrapper(io.BytesIO(text.encode("utf-8")), encoding="utf-8")
+    try:
+        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(io.StringIO()):
+            assert main(argv) == 0
+    finally:
+        sys.stdin = stdin
+    return stdout.getvalue()
+
+
+def _numerically_equal(a: sympy.Expr, b: sympy.Expr) -> bool:
+    symbols = sorted(a.free_symbols | b.free_symbols, key=str)
+    for seed in range(3):
+        point = {s: 0.37 + 0.61 * k - 0.9 * seed for k, s in enumerate(symbols)}
+        if abs(complex(a.evalf(subs=point)) - complex(b.evalf(subs=point))) > 1e-9:
+            return False
+    return True

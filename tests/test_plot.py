@@ -129,7 +129,7 @@ def test_cli_writes_png_to_the_robot_name_by_default(tmp_path, monkeypatch, caps
 
 
 @pytest.mark.parametrize("arguments, message", [
-    (["--q", "theta_1=30dg"], "--q 'theta_1=30dg': cannot read expression"),
+    (["--q", "theta_1=30dg"], "--q 'theta_1=30dg': write 30deg (or 30°) for degrees"),
     (["--q", "l_9=1"], "no symbol l_9; its symbols are a_1, a_2, theta_1, theta_2"),
     (["--set", "theta_1=1"], "theta_1 is a joint variable; use --q"),
     (["--q", "theta_1"], "expected NAME=EXPR"),

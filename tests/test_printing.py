@@ -1,4 +1,5 @@
 """Text and LaTeX printers: notation, legends, tables."""
+import pytest
 import sympy
 
 from dhsym.io.library import load
@@ -78,3 +79,106 @@ def test_a_bracket_never_starts_with_a_minus():
     robot = load("puma560")
     printer = TextPrinter(robot.joint_variables)
     assert printer.doprint(robot.fk()[2, 0]) == "−c23 s5 c6 − s23(c4 c5 c6 − s4 s6)"
+
+
+# --- SymPy's printer conventions --------------------------------------------------------------
+
+def test_settings_by_keyword_or_as_a_dict_like_sympy():
+    expr = sympy.cos(t[0] - t[1])
+    assert TextPrinter(joint_variables=t[:2], ascii=True).doprint(expr) == "c(1-2)"
+    assert TextPrinter({"joint_variables": t[:2], "ascii": True}).doprint(expr) == "c(1-2)"
+    assert TextPrinter(t[:2], ascii=True).doprint(expr) == "c(1-2)"
+    assert "joint_variables" in TextPrinter._default_settings and "numbers" in LatexPrinter._default_settings
+    with pytest.raises(TypeError, match="Unknown setting 'colour'"):
+        TextPrinter(t[:2], colour=True)
+
+
+def test_greek_letters_come_from_sympys_own_tables():
+    from dhsym.printing.notation import display_name
+    assert [display_name(n, "latex") for n in ("theta_1", "lamda", "Chi_2", "phi_i")] == [
+        "\\theta_{1}", "\\lambda", "\\mathrm{X}_{2}", "\\phi_{i}"]
+    assert [display_name(n, "unicode") for n in ("theta_1", "psi_12", "θ₁".replace("₁", "_1"))] == ["θ1", "ψ12", "θ1"]
+
+
+# --- numbers as written ------------------------------------------------------------------------
+
+def _numbers(*literals):
+    from dhsym.io.expr import Reading, parse_expression
+    reading = Reading()
+    for text in literals:
+        parse_expression(text, reading=reading)
+    return reading.numbers
+
+
+def test_decimals_stay_decimals_after_arithmetic_and_stay_factors():
+    numbers = _numbers("0.425", "0.39225", "0.333", "0.5")
+    printer = TextPrinter(t[:2], numbers=numbers)
+    assert printer.doprint(sympy.Rational(17, 40) + sympy.Rational(1569, 4000)) == "0.81725"
+    assert printer.doprint(sympy.Rational(333, 1000) * sympy.Rational(1, 2)) == "0.1665"
+    assert printer.doprint(-sympy.Rational(17, 40) * sympy.cos(t[1])) == "−0.425 c2"
+    assert LatexPrinter(t[:2], numbers=numbers).doprint(sympy.Rational(17, 40) * sympy.sin(t[1])) == "0.425 s_{2}"
+    assert TextPrinter(t[:2]).doprint(sympy.Rational(17, 40) * sympy.cos(t[1])) == "(17 c2)/40"  # no decimals written
+
+
+def test_fractions_and_multiples_of_pi_keep_their_form_next_to_decimals():
+    numbers = _numbers("0.5", "l/3", "pi/4")
+    printer = TextPrinter(t[:1], numbers=numbers)
+    l = sympy.Symbol("l", real=True)  # noqa: E741
+    assert printer.doprint(l / 3) == "l/3" and printer.doprint(sympy.pi / 4) == "π/4"
+    assert printer.doprint(sympy.sqrt(2) / 2 * sympy.cos(t[0])) == "(√2 c1)/2"  # the value of a constant angle
+    assert printer.doprint(sympy.Rational(1, 2)) == "0.5" and printer.doprint(sympy.Rational(1, 3)) == "1/3"
+
+
+# --- angles as written, brackets -----------------------------------------------------------------
+
+def test_an_offset_stays_in_the_angle_as_written():
+    printer = TextPrinter(t[:3], offsets={t[1]: -sympy.pi / 4})
+    evaluated = sympy.cos(t[0] + t[1] - sympy.pi / 4)
+    assert evaluated == sympy.sin(t[0] + t[1] + sympy.pi / 4)  # what SymPy makes of it
+    assert printer.doprint(evaluated) == "c12"
+    assert printer.doprint(sympy.cos(t[0] + t[1] + t[2] + sympy.pi / 4)) == "−s123"
+    assert text_legend(printer) == "where c12 = cos(θ1 + θ2 − π/4), s123 = sin(θ1 + θ2 + θ3 − π/4)"
+    latex = LatexPrinter(t[:3], offsets={t[1]: -sympy.pi / 4})
+    assert latex.doprint(evaluated) == "c_{12}"
+    assert [latex.notation.meaning(a, "latex") for a in latex.used] == [
+        "\\cos(\\theta_{1} + \\theta_{2} - \\frac{\\pi}{4})"]
+
+
+def test_a_multiple_of_half_pi_folds_into_the_notation():
+    from dhsym import Chain, DHRow
+    from dhsym.printing.printers import chain_settings
+    arm = Chain([DHRow.revolute(t[0]), DHRow.revolute(t[1] - sympy.pi / 2), DHRow.revolute(t[2] + sympy.pi / 6)],
+                "standard")
+    assert chain_settings(arm)["offsets"] == {t[2]: sympy.pi / 6}
+    printer = TextPrinter(chain_settings(arm))
+    assert printer.doprint(arm.fk()[0, 0]) == "s123"  # cos(θ1 + θ2 − π/2 + θ3 + π/6)
+    assert text_legend(printer) == "where s123 = sin(θ1 + θ2 + θ3 + π/6)"
+    table = text_table(arm)
+    assert "θ2* − π/2" in table and "θ3* + π/6" in table
+
+
+def test_a_function_of_anything_but_a_symbol_is_bracketed():
+    alpha = sympy.Symbol("alpha", real=True)
+    printer = TextPrinter(t[:1])
+    assert printer.doprint(sympy.cos(alpha)) == "cos α"
+    assert printer.doprint(sympy.cos(alpha / 2)) == "cos(α/2)"
+    assert printer.doprint(sympy.cos(sympy.Rational(3, 10))) == "cos(3/10)"
+    assert TextPrinter(t[:1], numbers=_numbers("0.3")).doprint(sympy.sin(sympy.Rational(3, 10))) == "sin(0.3)"
+    assert LatexPrinter(t[:1]).doprint(sympy.cos(alpha / 2)) == "\\cos(\\frac{\\alpha}{2})"
+    assert LatexPrinter(t[:1]).doprint(sympy.cos(alpha)) == "\\cos{\\alpha}"
+
+
+# --- text that fits its width ------------------------------------------------------------------
+
+def test_long_elements_break_at_top_level_signs_and_the_legend_wraps():
+    from dhsym.printing.render import break_element
+    robot = load("iiwa7")
+    printer = TextPrinter(robot.joint_variables)
+    for width in (40, 60, 80):
+        text = text_matrix(robot.fk(), printer, width=width) + "\n" + text_legend(printer, width)
+        assert max(len(line) for line in text.splitlines()) <= width, width
+    assert break_element("x = ", "a1 + b1(c1 + d1) − e1", 20).splitlines() == ["x = a1 + b1(c1 + d1)", "      − e1"]
+    assert break_element("x = ", "a1 + b1(c1 + d1 + e1)", 18).splitlines() == ["x = a1 + b1(c1", "        + d1 + e1)"]
+    wide = TextPrinter(t, ascii=True)
+    wide.doprint(sympy.cos(t[0] + t[1] - t[3] + t[9]))
+    assert all(len(line) <= 40 for line in text_legend(wide, 40).splitlines())

@@ -1,4 +1,5 @@
 """The README's console examples are real: each `$ dhsym ...` block is today's output."""
+import os
 import re
 import shlex
 import subprocess
@@ -17,7 +18,7 @@ def test_there_are_examples():
 
 @pytest.mark.parametrize("command, shown", EXAMPLES, ids=[c for c, _ in EXAMPLES])
 def test_example_output_is_current(command, shown):
-    result = subprocess.run([sys.executable, "-m", "dhsym.cli", *shlex.split(command)],
-                            capture_output=True, text=True, timeout=60)
+    result = subprocess.run([sys.executable, "-m", "dhsym.cli", *shlex.split(command)], capture_output=True,
+                            text=True, timeout=60, env={**os.environ, "COLUMNS": "100"})  # not the tester's terminal
     assert result.returncode == 0
     assert result.stdout == shown

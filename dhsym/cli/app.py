@@ -3,9 +3,15 @@
     dhsym list
     dhsym table puma560
     dhsym fk puma560 --from 3 --to 6 --format latex
+    dhsym fk - < arm.yaml
 
 Each command lives in its own module (listing, kinematics, latex, plot) with
 `add_parsers(commands)`, which registers its subcommands and their `run(robot, args)`.
+
+Exit status: 0, with warnings (if any) on stderr; 2 after one `dhsym: error:` line (a mistake in
+the input or the command line, or output that cannot be written: a full disk, a closed standard
+output, an unwritable file); 141 when the reader of a pipe leaves early (`| head`), quietly, as
+shell tools do; 130 on Ctrl-C; 70 for a bug in dhsym itself.
 """
 from __future__ import annotations
 
@@ -14,10 +20,12 @@ import sys
 import warnings
 
 from ..core.budget import CommandTooSlow, SimplificationTimeout, time_budget
-from ..errors import UserError
+from ..errors import Location, UserError
 from ..io import library
+from ..io.robotfile import load_robot_text
+from ..io.yamlsafe import MAX_FILE_BYTES, decode_utf8
 from . import kinematics, latex, listing, plot
-from .options import COMMAND_BUDGET_FACTOR, Parser
+from .options import COMMAND_BUDGET_FACTOR, COMMAND_BUDGET_FLOOR, Parser
 
 COMMAND_MODULES = (listing, kinematics, latex, plot)
 
@@ -50,6 +58,9 @@ def main(argv=None, read=library.read) -> int:
             if issubclass(warning.category, SimplificationTimeout):
                 print(f"dhsym: warning: {printable(str(warning.message))}", file=sys.stderr)
         return status
+    except BrokenPipeError:  # `dhsym fk puma560 | head`: the reader left; stop quietly, like a shell tool
+        _silence_stdout()
+        return EXIT_BROKEN_PIPE
     except UserError as error:
         print(f"dhsym: error: {printable(str(error))}", file=sys.stderr)
         return EXIT_USER_ERROR
@@ -61,9 +72,6 @@ def main(argv=None, read=library.read) -> int:
     except KeyboardInterrupt:
         print("dhsym: interrupted", file=sys.stderr)
         return 130
-    except BrokenPipeError:  # `dhsym fk puma560 | head`: the reader left; stop quietly, like a shell tool
-        _silence_stdout()
-        return EXIT_BROKEN_PIPE
     except UnicodeEncodeError as error:
         print(f"dhsym: error: the output cannot be written as {error.encoding}; use --ascii, or set "
               f"PYTHONIOENCODING=utf-8", file=sys.stderr)
@@ -76,9 +84,10 @@ def main(argv=None, read=library.read) -> int:
 
 
 def _command_budget(args) -> float | None:
-    """A whole command may take this long; simplification alone gets --timeout per result."""
+    """A whole command may take this long; simplification alone gets --timeout per result. However
+    small --timeout is, reading the robot and printing the raw product get COMMAND_BUDGET_FLOOR."""
     timeout = getattr(args, "timeout", None)
-    return COMMAND_BUDGET_FACTOR * timeout if timeout else None
+    return max(COMMAND_BUDGET_FACTOR * timeout, COMMAND_BUDGET_FLOOR) if timeout else None
 
 
 def _silence_stdout() -> None:
@@ -101,14 +110,38 @@ def printable(message: str) -> str:
 def _dispatch(args, read) -> int:
     robot = None
     if hasattr(args, "robot"):
-        robot = read(args.robot)
+        robot = read_standard_input() if args.robot == "-" else read(args.robot)
         robot.chain.timeout = args.timeout
         for warning in robot.warnings:
             print(f"dhsym: warning: {printable(warning)}", file=sys.stderr)
     output = args.run(robot, args)
     if output is not None:
-        sys.stdout.write(output if output.endswith("\n") else output + "\n")
+        if sys.stdout is None:  # started with standard output closed (`dhsym fk puma560 >&-`)
+            raise UserError("standard output is closed; there is nowhere to write the result")
+        try:
+            sys.stdout.write(output if output.endswith("\n") else output + "\n")
+            sys.stdout.flush()  # a full disk is found here, while a clear message can still be given
+        except BrokenPipeError:
+            raise
+        except OSError as error:  # a full disk, a device that refuses the bytes
+            _silence_stdout()
+            raise UserError(f"cannot write the output: {error.strerror or error}") from None
     return 0
+
+
+def read_standard_input():
+    """`dhsym fk -`: the robot file from standard input, with a robot file's limits."""
+    if sys.stdin is None:
+        raise UserError("standard input is closed; give a robot file or a built-in name instead of -")
+    stream = getattr(sys.stdin, "buffer", None)
+    data = stream.read(MAX_FILE_BYTES + 1) if stream else sys.stdin.read(MAX_FILE_BYTES + 1).encode("utf-8")
+    if len(data) > MAX_FILE_BYTES:
+        raise UserError(f"file is larger than {MAX_FILE_BYTES // (1 << 20)} MiB, the limit for robot files",
+                        Location(STDIN_NAME, 1, 1))
+    return load_robot_text(decode_utf8(data, STDIN_NAME), STDIN_NAME)
+
+
+STDIN_NAME = "<stdin>"
 
 
 if __name__ == "__main__":

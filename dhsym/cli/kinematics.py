@@ -10,8 +10,8 @@ from __future__ import annotations
 import json
 
 from ..printing import render
-from ..printing.printers import LatexPrinter
-from .options import format_options, frame_options, robot_options
+from .limits import refuse_if_too_large
+from .options import format_options, frame_options, robot_options, text_width
 
 
 def add_parsers(commands) -> None:
@@ -35,13 +35,17 @@ def add_parsers(commands) -> None:
 def run_table(robot, args) -> str:
     chain = robot.chain
     if args.format == "json":
-        rows = [{"joint": r.joint, "theta": str(r.theta), "d": str(r.d), "a": str(r.a), "alpha": str(r.alpha),
+        exact = render.exact_printer(chain)
+        rows = [{"joint": r.joint, **{key: exact.doprint(getattr(r, key)) for key in ("theta", "d", "a", "alpha")},
                  "variable": r.variable.name} for r in chain.rows]
         return json.dumps({"robot": chain.name, "convention": chain.convention, "rows": rows}, indent=2)
     if args.format == "latex":
         return "\\[\n" + render.latex_table(chain) + "\n\\]"
-    note = render.convention_note(chain.convention, ascii=args.ascii) + "; * marks joint variables"
-    return _header(chain, "DH table", args.ascii) + "\n" + note + "\n\n" + render.text_table(chain, ascii=args.ascii)
+    width = text_width(args.width)
+    note = render.wrap(render.convention_note(chain.convention, ascii=args.ascii) + "; * marks joint variables",
+                       width, "  ")
+    return _header(chain, "DH table", args.ascii, width) + "\n" + note + "\n\n" + \
+        render.text_table(chain, ascii=args.ascii)
 
 
 def run_links(robot, args) -> str:
@@ -53,10 +57,11 @@ def run_fk(robot, args) -> str:
     chain = robot.chain
     start = chain.first_frame if args.start is None else chain.frame(args.start)
     end = chain.last_frame if args.end is None else chain.frame(args.end)
+    refuse_if_too_large(robot, start, end, args.raw)
     return _results(chain, [(start, end, chain.transform(start, end, raw=args.raw))], args)
 
 
-def _header(chain, what: str, ascii: bool) -> str:
+def _header(chain, what: str, ascii: bool, width: int) -> str:
     title = f"{chain.name}: {what}  ({chain.convention} DH)"
     return title.replace("−", "-") if ascii else title
 
@@ -66,16 +71,17 @@ def _results(chain, results, args) -> str:
         data = [render.json_result(chain, i, j, m) for i, j, m in results]
         return json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False)
     if args.format == "latex":
-        printer = LatexPrinter(chain.joint_variables)
+        printer = render.latex_printer(chain)
         blocks = [f"{render.transform_title(i, j, 'latex')} =\n{render.latex_matrix(m, printer)}"
                   for i, j, m in results]
         legend = render.latex_legend(printer)
         return "\n\n".join(f"\\[\n{b}\n\\]" for b in blocks) + (f"\n\nwhere ${legend}$" if legend else "")
     printer = render.text_printer(chain, ascii=args.ascii)
     style = "ascii" if args.ascii else "unicode"
+    width = text_width(args.width)
     blocks = []
     for i, j, matrix in results:
-        title = _header(chain, render.transform_title(i, j, style), args.ascii)
-        blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, args.width))
-    legend = render.text_legend(printer, args.width)
+        title = _header(chain, render.transform_title(i, j, style), args.ascii, width)
+        blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, width))
+    legend = render.text_legend(printer, width)
     return "\n\n".join(blocks) + ("\n\n" + legend if legend else "")

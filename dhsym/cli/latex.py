@@ -4,8 +4,10 @@
 """
 from __future__ import annotations
 
+from ..errors import UserError
 from ..io.output import write_atomic
 from ..latex.document import DOCUMENTS, document
+from .limits import refuse_if_too_large
 from .options import frame_options, robot_options
 
 
@@ -25,6 +27,14 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str | None:
+    chain = robot.chain
+    try:
+        start = chain.first_frame if args.start is None else chain.frame(args.start)
+        end = chain.last_frame if args.end is None else chain.frame(args.end)
+    except UserError:
+        pass  # document() names the frame that is wrong, and the option
+    else:
+        refuse_if_too_large(robot, start, end)
     text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end)
     if args.output is None:
         return text

@@ -8,10 +8,14 @@ a usage mistake into one line on stderr.
 from __future__ import annotations
 
 import argparse
+import shutil
 
 from ..errors import UserError
+from ..printing.render import MIN_WIDTH
 
 COMMAND_BUDGET_FACTOR = 5  # times --timeout, for everything a command does (printing too)
+COMMAND_BUDGET_FLOOR = 30.0  # seconds: however small --timeout, reading and printing the raw product may take this
+DEFAULT_WIDTH = 100  # when neither COLUMNS nor the terminal says
 
 
 class Parser(argparse.ArgumentParser):
@@ -37,9 +41,32 @@ def format_options() -> argparse.ArgumentParser:
     parent.add_argument("--format", choices=("text", "latex", "json"), default="text",
                         help="output format (default text)")
     parent.add_argument("--ascii", action="store_true", help="plain ASCII text instead of Unicode")
-    parent.add_argument("--width", type=int, default=100, metavar="N",
-                        help="text width; wider matrices are printed element by element (default 100)")
+    parent.add_argument("--width", type=columns, default=None, metavar="N",
+                        help="text width in columns, at least 40; wider matrices are printed element by element "
+                             "and long elements are broken (default: $COLUMNS, else the terminal's, else 100)")
     return parent
+
+
+def text_width(requested: int | None = None) -> int:
+    """--width if given, else $COLUMNS, else the terminal's width, else 100; never below MIN_WIDTH.
+
+    >>> text_width(72)
+    72
+    """
+    if requested:
+        return requested
+    return max(MIN_WIDTH, shutil.get_terminal_size((DEFAULT_WIDTH, 24)).columns)
+
+
+def columns(text: str) -> int:
+    """A text width for --width: a whole number of columns, at least MIN_WIDTH."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number of columns") from None
+    if value < MIN_WIDTH:
+        raise argparse.ArgumentTypeError(f"the width must be at least {MIN_WIDTH} columns, not {value}")
+    return value
 
 
 def frame_options(parser: argparse.ArgumentParser) -> None:

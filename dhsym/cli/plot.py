@@ -37,7 +37,7 @@ def run(robot, args) -> str:
 
     values = {**parse_assignments(robot.chain, args.constants, "--set"),
               **parse_assignments(robot.chain, args.joints, "--q")}
-    path = args.output or f"{Path(args.robot).stem}.png"
+    path = args.output or f"{Path(args.robot).stem if args.robot != '-' else 'robot'}.png"
     picture_format(path)  # a wrong suffix is found before any drawing
     planar = False if args.three_d else None
     figure = Figure(figsize=(6.4, 5.6) if (planar is None and is_planar(robot.chain, values)) else (7.2, 6.8))

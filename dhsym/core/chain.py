@@ -18,6 +18,7 @@ import sympy
 
 from ..errors import UserError
 from .budget import BudgetExceeded, SimplificationTimeout, time_budget
+from .numbers import WrittenNumbers
 from .simplify import contract
 from .transforms import CONVENTIONS, Step, as_expr, inverse_transform, link_steps, product
 
@@ -67,7 +68,8 @@ class Chain:
 
     Frames are numbered 0..n; "base" (before the base steps) and "tool" (after the tool
     steps) exist when the chain has such steps. `name`, `source` and `notes` say what robot
-    this is and where its table comes from; `sample` gives numbers for its constants (pictures).
+    this is and where its table comes from; `sample` gives numbers for its constants (pictures);
+    `numbers` says how its file wrote numbers (decimals or fractions), for the printers.
 
     >>> import sympy
     >>> Chain([DHRow.revolute(sympy.Symbol("theta_1", real=True), a=1)], "standard", name="pendulum")
@@ -76,7 +78,8 @@ class Chain:
 
     def __init__(self, rows: Sequence[DHRow], convention: str, base: Sequence[Step] = (),
                  tool: Sequence[Step] = (), simplifier: Simplifier = contract, timeout: float | None = None, *,
-                 name: str = "", source: str = "", notes: str = "", sample: dict | None = None):
+                 name: str = "", source: str = "", notes: str = "", sample: dict | None = None,
+                 numbers: WrittenNumbers | None = None):
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {convention!r}; use standard or modified")
         if not rows:
@@ -87,6 +90,7 @@ class Chain:
         self.timeout = timeout  # seconds of simplification per result; past it the raw product is returned
         self.name, self.source, self.notes = name, source, notes
         self.sample = dict(sample or {})  # symbol -> exact number
+        self.numbers = numbers or WrittenNumbers()
         self._cache: dict = {}
 
     def __repr__(self) -> str:

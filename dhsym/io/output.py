@@ -1,6 +1,8 @@
 """Writing result files atomically: a temporary file beside the target, then a rename.
 
-A failure at any point leaves either the old file or no file, never half of a new one.
+A failure at any point leaves either the old file or no file, never half of a new one. A target
+that is not a regular file (/dev/stdout, a named pipe, /dev/full) is written in place: renaming
+over it would replace the device itself.
 
 >>> import tempfile, os
 >>> folder = tempfile.mkdtemp()
@@ -26,6 +28,9 @@ def write_atomic(path, data: str | bytes, inputs=()) -> None:
                 raise UserError("refusing to overwrite the input file with the output", Location(str(target)))
         except OSError:
             pass
+    if target.exists() and not target.is_file() and not target.is_dir():
+        _write_in_place(target, data)
+        return
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
         raise UserError(f"folder {str(folder)!r} does not exist", Location(str(target)))
@@ -47,6 +52,16 @@ def write_atomic(path, data: str | bytes, inputs=()) -> None:
     except BaseException:
         _remove_quietly(temporary)
         raise
+
+
+def _write_in_place(target: Path, data: str | bytes) -> None:
+    """Write to a device or a pipe as it is; its errors (a full device) are the user's to know."""
+    binary = isinstance(data, bytes)
+    try:
+        with open(target, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as stream:
+            stream.write(data)
+    except OSError as exc:
+        raise UserError(f"cannot write file: {exc.strerror or exc}", Location(str(target))) from None
 
 
 def _mode_for(target: Path) -> int:

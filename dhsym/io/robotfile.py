@@ -29,7 +29,8 @@ import yaml
 from ..core.chain import Chain, DHRow
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
-from .expr import parse_expression
+from .expr import Reading, parse_expression
+from .suspicious import misspelt_pi, near_multiple_of_pi, printed_key, printed_text
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
 
 MAX_JOINTS = 24
@@ -37,6 +38,7 @@ TOP_KEYS = ("name", "source", "convention", "joints", "base", "tool", "sample", 
 ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 _DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
+LENGTHS = ("a", "d", "Tx", "Ty", "Tz")  # fields that hold distances; the others hold angles
 
 
 @dataclass
@@ -72,6 +74,7 @@ class _Reader:
     def __init__(self, filename: str):
         self.filename = filename
         self.warnings: list[str] = []
+        self.reading = Reading()  # of the table's fields: how numbers were written, where names stand
 
     def where(self, node: yaml.Node) -> Location:
         location = mark_location(self.filename, node.start_mark)
@@ -85,16 +88,20 @@ class _Reader:
         """A mapping's items as {key: (key node, value node)}, refusing unknown keys."""
         if not isinstance(node, yaml.MappingNode):
             raise UserError(f"{what} must be a mapping of keys to values, not {_kind(node)}", self.where(node))
-        items = {}
+        items, previous = {}, None
         for key_node, value_node in node.value:
             if not isinstance(key_node, yaml.ScalarNode):
                 raise UserError(f"keys in {what} must be plain names, not {_kind(key_node)}", self.where(key_node))
             key = key_node.value
+            if key not in allowed and key.isdigit() and previous is not None and previous.strip().isdigit():
+                raise UserError(f"unknown key {key!r} in {what}: inside {{...}} a comma separates entries; write "
+                                f"decimals with a point, as in {previous.strip()}.{key}", self.where(key_node))
             if key not in allowed:
                 raise UserError(f"unknown key {key!r} in {what}{_suggestion(key, allowed)}", self.where(key_node))
             if key in items:
                 raise UserError(f"key {key!r} appears twice in {what}", self.where(key_node))
             items[key] = (key_node, value_node)
+            previous = value_node.value if isinstance(value_node, yaml.ScalarNode) else None
         return items
 
     def text(self, node: yaml.Node, what: str) -> str:
@@ -102,18 +109,47 @@ class _Reader:
             raise UserError(f"{what} must be a single value, not {_kind(node)}", self.where(node))
         return node.value
 
-    def expression(self, node: yaml.Node, what: str) -> sympy.Expr:
+    def expression(self, node: yaml.Node, what: str, table: bool = True) -> sympy.Expr:
         """A field's value parsed as an expression; any mistake is reported with the field's name."""
+        return self.read(node, what, table)[0]
+
+    def read(self, node: yaml.Node, what: str, table: bool = True) -> tuple[sympy.Expr, Reading]:
+        """A field's value and what its reading noticed. Fields of the table (rows, base, tool)
+        also say how the file writes numbers; a length field refuses π and degrees."""
         value = self.text(node, what)
         if node.style is None and node.tag == YAML_TAG + "null":
             raise UserError(f"{what} has no value", self.where(node))
         if node.style is None and node.tag == YAML_TAG + "bool":
             raise UserError(f"{what}: {value!r} reads as a YAML true/false, not a number; quote it to "
                             f"use it as a name", self.where(node))
+        reading = Reading()
         try:
-            return parse_expression(value, self.where(node))
+            result = parse_expression(value, self.where(node), reading)
         except UserError as error:
             raise UserError(f"{what}: {error.message}", error.where) from None
+        self.warnings += [f"{where}: {what}: {message}" for where, message in reading.warnings]
+        if table:
+            field_name = what.rsplit(" ", 1)[-1]
+            if field_name in LENGTHS:
+                self.refuse_angle_units(reading, what, field_name)
+            self.reading.absorb(reading)
+        return result, reading
+
+    def refuse_angle_units(self, reading: Reading, what: str, field_name: str) -> None:
+        """π and degrees make angles; outside a sin or cos they have no place in a length."""
+        for unit, where, inside_trig in reading.units:
+            if not inside_trig:
+                angles = "alpha and theta" if field_name in ("a", "d") else "Rx, Ry and Rz"
+                unit = "in degrees" if unit == "degrees" else "a multiple of π"
+                raise UserError(f"{what}: {field_name} is a length and cannot be {unit}; angles go in {angles}",
+                                where)
+
+    def warn_decimal_angle(self, value: sympy.Expr, reading: Reading, what: str) -> None:
+        """`alpha: 1.5708` is not π/2; say so where the decimal stands."""
+        if reading.decimals:
+            message = near_multiple_of_pi(value, reading.places)
+            if message:
+                self.warnings.append(f"{reading.decimals[0][1]}: {what}: {message}")
 
     def optional_text(self, top: dict, key: str, default: str) -> str:
         if key not in top:
@@ -156,8 +192,10 @@ class _Reader:
         variables = {row.variable for row in dh_rows}
         base = self.steps(top["base"][1], "base", variables) if "base" in top else []
         tool = self.steps(top["tool"][1], "tool", variables) if "tool" in top else []
+        self.check_names()
         chain = Chain(dh_rows, convention, base, tool, name=self.optional_text(top, "name", Path(self.filename).stem),
-                      source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""))
+                      source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""),
+                      numbers=self.reading.numbers)
         if "sample" in top:
             chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
         return RobotFile(chain, path=self.filename, warnings=self.warnings)
@@ -174,18 +212,21 @@ class _Reader:
         if kind is None:
             raise UserError(f"{what} joint: must be R (revolute) or P (prismatic), not "
                             f"{nodes['joint'].value!r}", self.where(nodes["joint"]))
-        values = {key: self.expression(nodes[key], f"{what} {key}") for key in ("alpha", "a", "d", "theta")}
+        values, readings = {}, {}
+        for key in ("alpha", "a", "d", "theta"):
+            values[key], readings[key] = self.read(nodes[key], f"{what} {key}")
         moving = "theta" if kind == "R" else "d"
         variable = self.joint_variable(what, kind, values, nodes)
+        self.refuse_nonlinear(values[moving], variable, f"{what} {moving}", readings[moving], nodes[moving])
         for key in ("alpha", "a", "theta" if kind == "P" else "d"):
             if variable in values[key].free_symbols:
                 raise UserError(f"{what} {key}: joint variable {variable} also appears here; only {moving} "
                                 f"may hold it", self.where(nodes[key]))
         self.warn_degrees(values["alpha"], nodes["alpha"], f"{what} alpha")
-        if kind == "R":
-            self.warn_degrees(values["theta"] - variable, nodes["theta"], f"{what} theta", offset=True)
-        else:
-            self.warn_degrees(values["theta"], nodes["theta"], f"{what} theta")
+        self.warn_decimal_angle(values["alpha"], readings["alpha"], f"{what} alpha")
+        constant_angle = values["theta"] - variable if kind == "R" else values["theta"]
+        self.warn_degrees(constant_angle, nodes["theta"], f"{what} theta", offset=kind == "R")
+        self.warn_decimal_angle(constant_angle, readings["theta"], f"{what} theta")
         dh = DHRow(kind, values["theta"], values["d"], values["a"], values["alpha"], variable)
         return _Row(number, dh, nodes)
 
@@ -210,8 +251,39 @@ class _Reader:
             raise UserError(f"{what} {moving}: no joint variable; a {joint} joint needs a symbol in {moving}",
                             self.where(nodes[moving]))
         names = ", ".join(s.name for s in free)
-        raise UserError(f"{what} {moving}: several symbols ({names}); name the joint variable with var",
-                        self.where(nodes[moving]))
+        pi = [misspelt_pi(s.name) for s in free if misspelt_pi(s.name)]
+        advice = pi[0] if pi else "name the joint variable with var"
+        raise UserError(f"{what} {moving}: several symbols ({names}); {advice}", self.where(nodes[moving]))
+
+    def refuse_nonlinear(self, value: sympy.Expr, variable: sympy.Symbol, what: str, reading: Reading,
+                         node: yaml.Node) -> None:
+        """A DH angle or offset is the variable times a constant plus a constant: theta_2 - pi/2."""
+        slope = sympy.diff(value, variable)
+        if variable not in slope.free_symbols:
+            return
+        inside = sorted({type(f).__name__ for f in value.atoms(sympy.Function) if variable in f.free_symbols})
+        powers = [p for p in value.atoms(sympy.Pow) if variable in p.base.free_symbols]
+        how = (f"inside {inside[0]}" if inside else "under a square root" if any(p.exp.q == 2 for p in powers)
+               else "in a denominator" if any(p.exp.is_negative for p in powers)
+               else "squared" if any(p.exp == 2 for p in powers) else "raised to a power" if powers
+               else "non-linearly")
+        where = next((place for name, place in reading.names if name == variable.name), self.where(node))
+        field_name = what.rsplit(" ", 1)[-1]
+        example = "theta_2 - pi/2" if field_name == "theta" else "d_3 + l_1"
+        raise UserError(f"{what}: the joint variable {variable} enters {how}; a DH {field_name} is the variable "
+                        f"plus a constant, as in {example}", where)
+
+    def check_names(self) -> None:
+        """Warn about two spellings of one printed name: l1 and l_1, theta_1 and θ1 are different symbols."""
+        first: dict = {}
+        warned = set()
+        for name, where in self.reading.names:
+            key = printed_key(name)
+            seen = first.setdefault(key, name)
+            if seen != name and (seen, name) not in warned:
+                warned.add((seen, name))
+                self.warnings.append(f"{where}: {name} and {seen} are two different symbols that both print as "
+                                     f"{printed_text(name)}; write one spelling for both")
 
     def check_variables(self, rows: list["_Row"]) -> None:
         """Each joint variable belongs to one row and is no other row's constant."""
@@ -247,13 +319,14 @@ class _Reader:
                 raise UserError(f"{step_what} must have exactly one of {', '.join(STEP_KINDS)}, not "
                                 f"{len(items)}", self.where(step_node))
             (kind, (_, value_node)), = items.items()
-            value = self.expression(value_node, f"{step_what} {kind}")
+            value, reading = self.read(value_node, f"{step_what} {kind}")
             if value.free_symbols & variables:
                 raise UserError(f"{step_what} {kind}: a fixed step cannot use a joint variable "
                                 f"({', '.join(sorted(map(str, value.free_symbols & variables)))})",
                                 self.where(value_node))
             if kind[0] == "R":
                 self.warn_degrees(value, value_node, f"{step_what} {kind}")
+                self.warn_decimal_angle(value, reading, f"{step_what} {kind}")
             steps.append(Step(kind, value))
         return steps
 
@@ -266,7 +339,7 @@ class _Reader:
             if key.strip() not in symbols:
                 raise UserError(f"sample {key}: the robot has no symbol {key!r}{_suggestion(key, sorted(symbols))}",
                                 self.where(key_node))
-            value = self.expression(value_node, f"sample {key}")
+            value = self.expression(value_node, f"sample {key}", table=False)
             if not value.is_number:
                 raise UserError(f"sample {key}: must be a number, not {value}", self.where(value_node))
             values[symbols[key.strip()]] = value

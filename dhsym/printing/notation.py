@@ -6,6 +6,14 @@ minus sign (after a twist of π) carries a bar: ``c12̄4 = cos(θ1+θ2−θ4)``,
 ``c_{12\\bar{4}}``, ASCII ``c(12-4)``. When any joint number has two digits the indices are
 separated by commas, so ``c_{1,10}`` cannot be misread as joint 110.
 
+Offsets (``theta: theta_2 - pi/4``): an abbreviation stands for the cosine or sine of the joint
+angles *as the table writes them*, offsets included, and the legend says so:
+``c12 = cos(θ1 + θ2 − π/4)``. An offset that is a multiple of π/2 folds into the notation
+instead (``cos(θ2 − π/2)`` is ``s2``), as lecture notes write it, so that such robots keep their
+``c23``/``s23`` form; any other offset (``π/4``, ``0.1``, ``β``) stays in the angle, variable
+first. SymPy rewrites ``cos(θ2 − π/4)`` as ``sin(θ2 + π/4)`` on its own; `Notation.as_written`
+gives each angle its written offset back before printing (an exact identity).
+
 >>> import sympy
 >>> t = sympy.symbols("theta_1:5", real=True)
 >>> notation = Notation(t)
@@ -13,6 +21,9 @@ separated by commas, so ``c_{1,10}`` cannot be misread as joint 110.
 (1, Abbreviation(function='c', indices=((1, 1), (2, 1), (4, -1))))
 >>> display_name("theta_1", "unicode"), display_name("theta_1", "latex"), display_name("l_13", "ascii")
 ('θ1', '\\\\theta_{1}', 'l13')
+>>> offset = Notation(t[:2], {t[1]: -sympy.pi / 4})
+>>> offset.as_written(sympy.sin(t[0] + t[1] + sympy.pi / 4))
+cos(theta_1 + theta_2 - pi/4)
 """
 from __future__ import annotations
 
@@ -20,12 +31,12 @@ from dataclasses import dataclass, field
 
 import sympy
 from sympy.printing.conventions import split_super_sub
+from sympy.printing.latex import translate
 from sympy.printing.pretty.pretty_symbology import greek_unicode, sub, sup
 
 GREEK_NAMES = {letter: name for name, letter in greek_unicode.items()}  # 'θ' -> 'theta'
-_GREEK_WITHOUT_COMMAND = {"Alpha", "Beta", "Epsilon", "Zeta", "Eta", "Iota", "Kappa", "Mu", "Nu", "Omicron",
-                          "omicron", "Rho", "Tau", "Chi"}  # written as Latin letters in TeX
 _COMBINING_BAR = "\u0305"
+_MINUS = {"unicode": " − ", "ascii": " - ", "latex": " - "}
 
 
 @dataclass(frozen=True)
@@ -58,11 +69,15 @@ class Abbreviation:
 class Notation:
     """Knows the joint variables of one chain, in joint order."""
 
-    def __init__(self, joint_variables):
+    def __init__(self, joint_variables, offsets=None, write=None):
         """Joint labels come from the names' subscripts when every joint variable has a
         distinct one: θ4, θ5, θ6 of a wrist give c4, c5, c6, and a general row in θ_i gives c_i.
-        Otherwise joints are numbered by row."""
+        Otherwise joints are numbered by row. `offsets` maps a joint variable to the offset its
+        angle keeps (see `written_offsets`); `write` prints an offset in a legend (a printer's own)."""
         joint_variables = list(joint_variables)
+        self.offsets = {v: sympy.sympify(o) for v, o in (offsets or {}).items() if o != 0}
+        self.write = write or sympy.sstr
+        self._found: dict = {}  # abbreviation() of each cos/sin seen: term ordering asks again and again
         labels = [_subscript(s.name) for s in joint_variables]
         if None in labels or len(set(labels)) != len(labels):
             labels = list(range(1, len(joint_variables) + 1))
@@ -77,15 +92,21 @@ class Notation:
         return self.label
 
     def abbreviation(self, expr: sympy.Expr) -> tuple[int, Abbreviation] | None:
-        """(sign, abbreviation) if expr is cos/sin of a signed sum of joint angles, else None."""
+        """(sign, abbreviation) if expr is cos/sin of a signed sum of joint angles, each with the
+        offset its row keeps (none by default), else None."""
         if not isinstance(expr, (sympy.cos, sympy.sin)):
             return None
-        terms = []
-        for term in sympy.Add.make_args(expr.args[0]):
-            coefficient, rest = term.as_coeff_Mul()
-            if rest not in self.position or coefficient not in (1, -1):
-                return None
-            terms.append((self.position[rest], self.label[rest], int(coefficient)))
+        if expr not in self._found:
+            self._found[expr] = self._abbreviation(expr)
+        return self._found[expr]
+
+    def _abbreviation(self, expr: sympy.Expr) -> tuple[int, Abbreviation] | None:
+        split = self._split_angle(expr.args[0])
+        if split is None:
+            return None
+        terms, constant = split
+        if not terms or constant != self._offset_of(terms):
+            return None
         terms.sort(key=lambda t: t[0])
         sign = 1
         if terms[0][2] < 0:
@@ -94,29 +115,94 @@ class Notation:
         function = "c" if isinstance(expr, sympy.cos) else "s"
         return sign, Abbreviation(function, tuple((label, s) for _, label, s in terms), tuple(p for p, _, _ in terms))
 
+    def _split_angle(self, angle: sympy.Expr):
+        """([(position, label, ±1), ...], constant) for a signed sum of joint variables plus a
+        constant free of them; None for anything else (2θ1, θ1·l)."""
+        terms, constants = [], []
+        for term in sympy.Add.make_args(angle):
+            coefficient, rest = term.as_coeff_Mul()
+            if rest in self.position and coefficient in (1, -1):
+                terms.append((self.position[rest], self.label[rest], int(coefficient)))
+            elif term.free_symbols & self.position.keys():
+                return None
+            else:
+                constants.append(term)
+        return terms, sympy.Add(*constants)
+
+    def _offset_of(self, terms) -> sympy.Expr:
+        """The offset a signed sum of joint angles carries: θ1 + (θ2 − π/4) carries −π/4."""
+        names = {label: symbol for symbol, label in self.label.items()}
+        return sympy.Add(*(sign * self.offsets.get(names[label], 0) for _, label, sign in terms))
+
+    def as_written(self, expr):
+        """`expr` with every cos/sin of joint angles written with the offsets of its rows.
+
+        SymPy evaluates cos(θ1 + θ2 − π/4) to sin(θ1 + θ2 + π/4); the two differ by a multiple
+        of π/2, so the angle as written comes back exactly: sin(x + π/2) = cos x, and so on.
+        """
+        if not self.offsets or not isinstance(expr, sympy.Basic):
+            return expr
+        changes = {}
+        for trig in expr.atoms(sympy.cos, sympy.sin):
+            split = self._split_angle(trig.args[0])
+            if split is None or not split[0]:
+                continue
+            terms, constant = split
+            offset = self._offset_of(terms)
+            quarter_turns = (constant - offset) / (sympy.pi / 2)
+            if constant == offset or not quarter_turns.is_Integer:
+                continue
+            angle = trig.args[0] - constant + offset
+            turns = int(quarter_turns) % 4  # f(angle + turns·π/2) in terms of cos/sin(angle)
+            cosine = isinstance(trig, sympy.cos)
+            function = sympy.cos if (turns % 2 == 0) == cosine else sympy.sin
+            negative = turns in (1, 2) if cosine else turns in (2, 3)
+            changes[trig] = (-1 if negative else 1) * function(angle, evaluate=False)
+        return expr.xreplace(changes) if changes else expr
+
     def name_of(self, label) -> str:
         """The symbol name of the joint with this label, as the robot file spells it."""
         return next(symbol.name for symbol, own in self.label.items() if own == label)
 
+    def offset(self, abbreviation: Abbreviation) -> sympy.Expr:
+        """The offset in the angle of an abbreviation: −π/4 for c12 = cos(θ1 + θ2 − π/4), else 0."""
+        return self._offset_of([(None, label, sign) for label, sign in abbreviation.indices])
+
+    def angle(self, abbreviation: Abbreviation) -> sympy.Expr:
+        """The angle an abbreviation takes the cosine or sine of, offsets included."""
+        names = {label: symbol for symbol, label in self.label.items()}
+        return sympy.Add(*(sign * names[label] for label, sign in abbreviation.indices)) + self.offset(abbreviation)
+
     def meaning(self, abbreviation: Abbreviation, style: str) -> str:
-        """What an abbreviation stands for: 'cos θ1' or 'sin(θ2 + θ3)'."""
+        """What an abbreviation stands for: 'cos θ1', 'sin(θ2 + θ3)' or 'cos(θ2 − π/4)'."""
         names = {label: symbol for symbol, label in self.label.items()}
         angle = ""
         for position, (number, sign) in enumerate(abbreviation.indices):
             name = display_name(names[number].name, style)
-            minus = {"unicode": " − ", "ascii": " - ", "latex": " - "}[style]
-            angle += (minus if sign < 0 else " + " if position else "") + name
+            angle += (_MINUS[style] if sign < 0 else " + " if position else "") + name
+        offset = self.offset(abbreviation)
+        for term in sorted(sympy.Add.make_args(offset), key=self.angle_key) if offset != 0 else ():
+            negative = term.could_extract_minus_sign()
+            angle += (_MINUS[style] if negative else " + ") + self.write(-term if negative else term)
         function = {"c": "cos", "s": "sin"}[abbreviation.function]
+        single = len(abbreviation.indices) == 1 and offset == 0
         if style == "latex":
             function = "\\" + function
-            return f"{function}({angle})" if len(abbreviation.indices) > 1 else f"{function}{{{angle}}}"
-        return f"{function}({angle})" if len(abbreviation.indices) > 1 else f"{function} {angle}"
+            return f"{function}{{{angle}}}" if single else f"{function}({angle})"
+        return f"{function} {angle}" if single else f"{function}({angle})"
 
     def term_key(self, term: sympy.Expr) -> tuple:
         """Order terms by joint: constants first, then by the lowest joint they involve."""
         keys = sorted(self._atom_keys(term))
         unsigned = -term if term.could_extract_minus_sign() else term
         return (tuple(keys), sympy.default_sort_key(unsigned))
+
+    def angle_key(self, term: sympy.Expr) -> tuple:
+        """Order the terms of an angle (or of a table cell) as people write them: joint variables
+        first in joint order, then other symbols, then numbers: θ2 − π/4, d3 + l1."""
+        joints = [self.position[s] for s in term.free_symbols if s in self.position]
+        group = 0 if joints else 1 if term.free_symbols else 2
+        return (group, min(joints, default=0), sympy.default_sort_key(term))
 
     def _atom_keys(self, expr: sympy.Expr):
         for factor in sympy.Mul.make_args(expr):
@@ -141,6 +227,31 @@ class Notation:
             return (1, found[1].sort_key(), sympy.default_sort_key(factor))
         rank = 3 if base.is_Add else 2 if base.is_Function else 0
         return (rank, (), sympy.default_sort_key(factor))
+
+
+def written_offsets(rows) -> dict:
+    """{joint variable: the offset its angle keeps} for the revolute rows of a chain.
+
+    `theta: theta_2 - pi/4` keeps −π/4; a multiple of π/2 folds into the notation and is left
+    out (`theta_2 - pi/2` keeps nothing, `theta_2 + pi/2 + 0.1` keeps 0.1).
+
+    >>> from dhsym.core.chain import DHRow
+    >>> t2 = sympy.Symbol("theta_2", real=True)
+    >>> written_offsets([DHRow.revolute(t2 - sympy.pi / 4), DHRow.revolute(sympy.Symbol("q", real=True) + sympy.pi)])
+    {theta_2: -pi/4}
+    """
+    offsets = {}
+    for row in rows:
+        if row.joint != "R":
+            continue
+        slope = sympy.diff(row.theta, row.variable)
+        if slope not in (1, -1):
+            continue
+        offset = row.theta / slope - row.variable
+        kept = [t for t in sympy.Add.make_args(offset) if not (t / (sympy.pi / 2)).is_Integer]
+        if kept:
+            offsets[row.variable] = sympy.Add(*kept)
+    return offsets
 
 
 def _subscript(name: str) -> str | None:
@@ -177,16 +288,12 @@ def display_name(name: str, style: str) -> str:
 
 
 def greek_latex(name: str) -> str | None:
-    """The TeX for a Greek letter's name, or None if it is no Greek letter.
+    """The TeX for a Greek letter's name (SymPy's own translation), or None if it is no Greek letter.
 
     >>> greek_latex("theta"), greek_latex("lamda"), greek_latex("Alpha"), greek_latex("l")
-    ('\\\\theta', '\\\\lambda', 'A', None)
+    ('\\\\theta', '\\\\lambda', '\\\\mathrm{A}', None)
     """
-    if name not in greek_unicode:
-        return None
-    if name in _GREEK_WITHOUT_COMMAND:
-        return name[0].upper() if name[0].isupper() else "o"
-    return "\\" + {"lamda": "lambda", "Lamda": "Lambda"}.get(name, name)  # SymPy spells it lamda
+    return translate(name) if name in greek_unicode else None
 
 
 def _latex_base(base: str) -> str:

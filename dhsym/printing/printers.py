@@ -1,8 +1,28 @@
 """Expression printers that write the textbook c/s notation, in text and in LaTeX.
 
 The math objects know nothing of printing; these are SymPy printer subclasses that override
-how cos, sin, sums, products and symbols are written, and remember which abbreviations they
-used so that a legend can list exactly those.
+how cos, sin, sums, products, numbers and symbols are written, and remember which
+abbreviations they used so that a legend can list exactly those.
+
+Settings follow SymPy's printers: `_default_settings` lists them, and they are given by keyword
+or as one dict, `TextPrinter(joint_variables=[t1, t2], ascii=True)` or
+`TextPrinter({"joint_variables": [t1, t2]})`; the joint variables may also come first. They are
+
+- `joint_variables`: the chain's joint variables in joint order (they give c1, s23, c123);
+- `marked`: symbols printed with a star (the joint variables in a DH table); a printer that
+  marks writes every sum with its joint variables first, as a table is written (`θ2* − π/4`);
+- `offsets`: {joint variable: offset} kept in the joint's angle (see dhsym.printing.notation);
+- `numbers`: a `WrittenNumbers`, how the robot file wrote its numbers (decimals print as
+  decimals: 0.425 c2, not (17 c2)/40; see dhsym.core.numbers);
+- `ascii` (text only): plain ASCII.
+
+`chain_settings(chain)` gives the first four for a chain; `render.text_printer(chain)` and
+`render.latex_printer(chain)` build printers with them.
+
+Numbers: integers, fractions and multiples of π print as fractions (`π/4`, `1/3`); a rational
+that the chain's file wrote as a decimal, or that arithmetic made from such decimals, prints as
+a decimal (`0.81725`), exact and readable back. A function of anything but a single symbol is
+bracketed: `cos α`, but `cos(0.3)`, `cos(α/2)`.
 
 >>> import sympy
 >>> t1, t2, l1, l2 = sympy.symbols("theta_1 theta_2 l_1 l_2", real=True)
@@ -12,17 +32,42 @@ used so that a legend can list exactly those.
 ('l1 c1 + l2 c12', ['c1', 'c12'])
 >>> LatexPrinter([t1, t2]).doprint(px)
 'l_{1} c_{1} + l_{2} c_{12}'
+>>> from dhsym.core.numbers import WrittenNumbers
+>>> TextPrinter([t1, t2], numbers=WrittenNumbers(places=3)).doprint(-sympy.Rational(17, 40) * sympy.cos(t1))
+'−0.425 c1'
+>>> offset = TextPrinter([t1, t2], offsets={t2: -sympy.pi / 4})
+>>> offset.doprint(sympy.sin(t1 + t2 + sympy.pi / 4)), [offset.notation.meaning(a, "unicode") for a in offset.used]
+('c12', ['cos(θ1 + θ2 − π/4)'])
 """
 from __future__ import annotations
 
 import sympy
 from sympy.printing.latex import LatexPrinter as _SympyLatex
+from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
-from .notation import Notation, display_name, superscript
+from ..core.numbers import WrittenNumbers
+from .notation import Notation, display_name, superscript, written_offsets
 
 _BRACKETS = {"text": [("(", ")"), ("[", "]"), ("{", "}")],
              "latex": [("(", ")"), ("[", "]"), ("\\{", "\\}")]}
+TEXTBOOK_SETTINGS = {"joint_variables": (), "marked": (), "offsets": None, "numbers": None}
+
+
+def chain_settings(chain) -> dict:
+    """The printer settings a chain implies: its joint variables, offsets and written numbers."""
+    return {"joint_variables": chain.joint_variables, "offsets": written_offsets(chain.rows),
+            "numbers": getattr(chain, "numbers", None)}
+
+
+def _settings(joint_variables, settings, keywords) -> dict:
+    """SymPy's ways of passing settings (a dict, or keywords), plus the joint variables first."""
+    if isinstance(joint_variables, dict) and settings is None:
+        joint_variables, settings = None, joint_variables
+    merged = {**(settings or {}), **keywords}
+    if joint_variables is not None:
+        merged["joint_variables"] = joint_variables
+    return merged
 
 
 class _TextbookMixin:
@@ -32,10 +77,17 @@ class _TextbookMixin:
     family = "text"
     minus = " − "
 
-    def _setup(self, joint_variables, marked=()):
-        self.notation = Notation(joint_variables)
-        self.marked = set(marked)  # symbols printed with a star: the joint variables in a DH table
+    def _setup(self):
+        settings = self._settings
+        self.numbers = settings["numbers"] or WrittenNumbers()
+        self.notation = Notation(settings["joint_variables"], settings["offsets"], write=self._print)
+        self.marked = set(settings["marked"])  # symbols printed with a star: the joint variables in a DH table
         self.used: set = set()
+        self._angle = 0  # > 0 while printing the angle of a cos or sin: joint variables come first
+
+    def doprint(self, expr):
+        """Print `expr`, first giving back each joint angle the offset its row wrote (see Notation.as_written)."""
+        return super().doprint(self.notation.as_written(expr))
 
     def _print_Symbol(self, expr):
         name = display_name(expr.name, self.style)
@@ -45,7 +97,11 @@ class _TextbookMixin:
         """c12 for a joint-angle sum, else cos(...); LaTeX's Pow printing passes `exp` for sin²."""
         found = self.notation.abbreviation(expr)
         if not found:
-            text = self._plain_trig(expr)
+            self._angle += 1
+            try:
+                text = self._plain_trig(expr)
+            finally:
+                self._angle -= 1
             return text if exp is None else f"\\left({text}\\right)^{{{exp}}}"
         sign, abbreviation = found
         self.used.add(abbreviation)
@@ -59,8 +115,9 @@ class _TextbookMixin:
         return self._trig(expr, exp)
 
     def _print_Add(self, expr, order=None):
+        key = self.notation.angle_key if (self._angle or self.marked) else self.notation.term_key
         out = ""
-        for position, term in enumerate(sorted(expr.args, key=self.notation.term_key)):
+        for position, term in enumerate(sorted(expr.args, key=key)):
             negative, body = self._signed(term)
             if position == 0:
                 out = (self.minus.strip() if negative else "") + body
@@ -71,6 +128,11 @@ class _TextbookMixin:
     def _print_Mul(self, expr):
         negative, body = self._signed(expr)
         return (self.minus.strip() if negative else "") + body
+
+    def _decimal(self, value, alone: bool = False) -> str | None:
+        """A rational as the decimal the robot file would write, or None (see dhsym.core.numbers)."""
+        text = self.numbers.decimal(value, alone)
+        return text.replace("-", self.minus.strip()) if text else None
 
     def _signed(self, term) -> tuple[bool, str]:
         """(is negative, text of its magnitude). A bracket never starts with a minus: the sign
@@ -91,7 +153,9 @@ class _TextbookMixin:
         factors = sorted(factors, key=self.notation.factor_key)
         upper = [f for f in factors if not (f.is_Pow and f.exp.is_negative)]
         lower = [1 / f for f in factors if f.is_Pow and f.exp.is_negative]
-        if coefficient.is_Rational and coefficient != 1:
+        if coefficient.is_Rational and coefficient != 1 and decimal_factor(coefficient, factors, self.numbers):
+            upper.insert(0, coefficient)  # 0.425 c2, a factor as it was written
+        elif coefficient.is_Rational and coefficient != 1:
             if coefficient.p != 1 or not upper:
                 upper.insert(0, sympy.Integer(coefficient.p))
             if coefficient.q != 1:
@@ -125,11 +189,13 @@ class _TextbookMixin:
 class TextPrinter(_TextbookMixin, StrPrinter):
     """Plain text, Unicode by default (θ1, −, √) or ASCII (`ascii=True`)."""
 
-    def __init__(self, joint_variables, marked=(), ascii=False):
-        StrPrinter.__init__(self, {})
-        self._setup(joint_variables, marked)
-        if ascii:
+    _default_settings = {**StrPrinter._default_settings, **TEXTBOOK_SETTINGS, "ascii": False}
+
+    def __init__(self, joint_variables=None, settings=None, **keywords):
+        StrPrinter.__init__(self, _settings(joint_variables, settings, keywords))
+        if self._settings["ascii"]:
             self.style, self.minus = "ascii", " - "
+        self._setup()
 
     def _mark(self, name):
         return name + "*"
@@ -137,14 +203,14 @@ class TextPrinter(_TextbookMixin, StrPrinter):
     def _plain_trig(self, expr):
         name = type(expr).__name__
         argument = self._print(expr.args[0])
-        return f"{name} {argument}" if expr.args[0].is_Atom else f"{name}({argument})"
+        return f"{name} {argument}" if expr.args[0].is_Symbol else f"{name}({argument})"
 
     def _print_Pow(self, expr, rational=False):
         if expr.exp == sympy.Rational(1, 2):
             base = self._print(expr.base)
             if self.style == "ascii":
                 return f"sqrt({base})"
-            return "√" + (base if expr.base.is_Atom else f"({base})")
+            return "√" + (base if expr.base.is_Atom and not self._decimal(expr.base) else f"({base})")
         if expr.exp.is_Integer and expr.exp > 1:
             base = self._factor(expr.base) if not expr.base.is_Atom else self._print(expr.base)
             if expr.base.is_Function and not self.notation.abbreviation(expr.base):
@@ -156,6 +222,9 @@ class TextPrinter(_TextbookMixin, StrPrinter):
         return self.minus.strip() + str(-expr) if expr < 0 else str(expr)
 
     def _print_Rational(self, expr):
+        decimal = self._decimal(expr, alone=True)
+        if decimal:
+            return decimal
         return self.minus.strip() + f"{-expr.p}/{expr.q}" if expr < 0 else f"{expr.p}/{expr.q}"
 
     def _print_Pi(self, expr):
@@ -169,10 +238,11 @@ class LatexPrinter(_TextbookMixin, _SympyLatex):
     """LaTeX with c_{1}, s_{23}; symbols as \\theta_{1}, l_{1}."""
 
     style, family, minus = "latex", "latex", " - "
+    _default_settings = {**_SympyLatex._default_settings, **TEXTBOOK_SETTINGS}
 
-    def __init__(self, joint_variables, marked=()):
-        _SympyLatex.__init__(self, {})
-        self._setup(joint_variables, marked)
+    def __init__(self, joint_variables=None, settings=None, **keywords):
+        _SympyLatex.__init__(self, _settings(joint_variables, settings, keywords))
+        self._setup()
 
     def _mark(self, name):
         return name + "^{*}"
@@ -180,10 +250,55 @@ class LatexPrinter(_TextbookMixin, _SympyLatex):
     def _plain_trig(self, expr):
         name = "\\" + type(expr).__name__
         argument = self._print(expr.args[0])
-        return f"{name}{{{argument}}}" if expr.args[0].is_Atom else f"{name}({argument})"
+        return f"{name}{{{argument}}}" if expr.args[0].is_Symbol else f"{name}({argument})"
+
+    def _print_Rational(self, expr):
+        return self._decimal(expr, alone=True) or super()._print_Rational(expr)
 
     def _fraction(self, top, bottom, grouped):
         return f"\\frac{{{top}}}{{{bottom}}}"
+
+
+class ExactPrinter(StrPrinter):
+    """SymPy's own text form (`sympy.sympify` reads it back), with names as the robot file spells
+    them, decimals as it wrote them and joint angles with their offsets as written: the JSON form.
+
+    >>> t2 = sympy.Symbol("theta_2", real=True)
+    >>> ExactPrinter(numbers=WrittenNumbers(places=3), offsets={t2: -sympy.pi / 4},
+    ...              joint_variables=[t2]).doprint(-sympy.Rational(17, 40) * sympy.sin(t2 + sympy.pi / 4))
+    '-0.425*cos(theta_2 - pi/4)'
+    """
+
+    _default_settings = {**StrPrinter._default_settings, **TEXTBOOK_SETTINGS}
+
+    def __init__(self, joint_variables=None, settings=None, **keywords):
+        StrPrinter.__init__(self, _settings(joint_variables, settings, keywords))
+        self.numbers = self._settings["numbers"] or WrittenNumbers()
+        self.notation = Notation(self._settings["joint_variables"], self._settings["offsets"], write=self._print)
+
+    def doprint(self, expr):
+        return super().doprint(self.notation.as_written(expr))
+
+    def _print_Rational(self, expr):
+        return self.numbers.decimal(expr, alone=True) or super()._print_Rational(expr)
+
+    def _print_Mul(self, expr):
+        coefficient, rest = expr.as_coeff_Mul()
+        decimal = decimal_factor(abs(coefficient), sympy.Mul.make_args(rest), self.numbers)
+        if not decimal:
+            return super()._print_Mul(expr)
+        sign = "-" if coefficient < 0 else ""
+        return f"{sign}{decimal}*{self.parenthesize(rest, precedence(expr), strict=True)}"
+
+
+def decimal_factor(coefficient, factors, numbers: WrittenNumbers) -> str | None:
+    """The decimal a product's coefficient prints as, or None to keep a fraction: π/4 stays π/4,
+    and √3/2, √2/4 (the values of constant angles, not written decimals) keep their form."""
+    if sympy.pi in factors:
+        return None
+    if coefficient.q in (2, 4) and any(f.is_Pow and f.exp.is_Rational and not f.exp.is_Integer for f in factors):
+        return None
+    return numbers.decimal(coefficient)
 
 
 def _nesting(expr) -> int:

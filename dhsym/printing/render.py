@@ -1,5 +1,10 @@
 """Whole results for people: matrices, DH tables, legends and JSON, built on the printers.
 
+Text fits its width: a matrix that fits is printed as a matrix, otherwise element by element
+(r11 … pz), and an element longer than the line breaks before a + or − with a hanging indent,
+at the outermost bracket level that leaves the line at least half full. The legend, the title
+and the notes wrap at the same width.
+
 >>> from dhsym.io.library import load
 >>> print(text_table(load("planar3r")))  # doctest: +NORMALIZE_WHITESPACE
 i │ αᵢ₋₁ │ aᵢ₋₁ │ dᵢ │ θᵢ
@@ -9,10 +14,13 @@ i │ αᵢ₋₁ │ aᵢ₋₁ │ dᵢ │ θᵢ
 """
 from __future__ import annotations
 
+import textwrap
+import unicodedata
+
 import sympy
 
 from .notation import subscript, superscript
-from .printers import LatexPrinter, TextPrinter
+from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
 ELEMENT_NAMES = [["r11", "r12", "r13", "px"], ["r21", "r22", "r23", "py"], ["r31", "r32", "r33", "pz"]]
 CONVENTION_NOTES = {
@@ -20,16 +28,98 @@ CONVENTION_NOTES = {
     "modified": "modified (proximal, Craig) DH: T_i = Rx(αi−1) Tx(ai−1) Rz(θi) Tz(di)",
 }
 _ASCII = str.maketrans({"θ": "theta", "α": "alpha", "−": "-"})
+_ASCII_SUBSCRIPTS = str.maketrans({"ᵢ": "i", "₋": "-", "₁": "1"})
+
+
+ASCII_NOTES = {
+    "standard": "standard (distal) DH: A_i = Rz(theta(i)) Tz(d(i)) Tx(a(i)) Rx(alpha(i))",
+    "modified": "modified (proximal, Craig) DH: T_i = Rx(alpha(i-1)) Tx(a(i-1)) Rz(theta(i)) Tz(d(i))",
+}
+MIN_WIDTH = 40  # narrower, and a legend entry such as c(12-4) = cos(theta1 + theta2 - theta4) cannot fit
 
 
 def convention_note(convention: str, ascii: bool = False) -> str:
     """One line naming the convention and its product of steps."""
-    note = CONVENTION_NOTES[convention]
-    return note.translate(_ASCII) if ascii else note
+    return ASCII_NOTES[convention] if ascii else CONVENTION_NOTES[convention]
+
+
+def display_width(text: str) -> int:
+    """Columns a line takes on a terminal: combining marks (the bar of c124̅) take none."""
+    return sum(not unicodedata.combining(ch) for ch in text)
+
+
+def wrap(text: str, width: int, indent: str = "") -> str:
+    """Plain words (titles, notes) wrapped at `width`, continuation lines indented."""
+    return "\n".join(textwrap.wrap(text, width, subsequent_indent=indent, break_long_words=False,
+                                    break_on_hyphens=False)) or text
+
+
+def break_element(prefix: str, text: str, width: int) -> str:
+    """`prefix + text` in lines of at most `width` columns where possible, broken before a
+    top-level + or − (inside a bracket only when the bracket is longer than the line); each
+    continuation line is indented two columns past the start of `text`, two more per bracket.
+
+    >>> print(break_element("px  = ", "a1 + b1(c1 + d1 + e1) − f1", 22))
+    px  = a1 + b1(c1 + d1
+              + e1) − f1
+    """
+    total = display_width(text)
+    if display_width(prefix) + total <= width:
+        return prefix + text
+    breaks = _breaks(text)  # (position, bracket depth, column) of each space before a + or −
+    lines, indent, start, start_column, first, depth = [], prefix, 0, 0, 0, 0
+    while first < len(breaks) and len(indent) + total - start_column > width:
+        room = width - len(indent)
+        last = first
+        while last < len(breaks) and breaks[last][2] - start_column <= room:
+            last += 1
+        chosen = _choose(breaks[first:last], depth, room, start_column) if last > first else breaks[first]
+        lines.append(indent + text[start:chosen[0]])
+        start, start_column, depth = chosen[0] + 1, chosen[2] + 1, chosen[1]
+        indent = " " * (len(prefix) + 2 + 2 * depth)
+        first = breaks.index(chosen) + 1
+    return "\n".join(lines + [indent + text[start:]])
+
+
+def _choose(window: list, depth: int, room: int, start_column: int) -> tuple[int, int, int]:
+    """The break to take among those that fit: out of the bracket the line started in if possible,
+    else at the outermost level that leaves the line at least half full, else the last one."""
+    levels = sorted({w[1] for w in window})
+    for level in levels:
+        farthest = max(w for w in window if w[1] == level)
+        if level < depth or farthest[2] - start_column >= room / 2:
+            return farthest
+    return max(window, key=lambda w: w[2])
+
+
+def _breaks(text: str) -> list[tuple[int, int, int]]:
+    """Where an element may break: (position of the space before a binary + or −, bracket depth
+    there, display column)."""
+    found, depth, column = [], 0, 0
+    for position, ch in enumerate(text):
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+        elif ch == " " and position and text[position + 1:position + 3] in ("+ ", "− ", "- "):
+            found.append((position, depth, column))
+        column += not unicodedata.combining(ch)
+    return found
 
 
 def text_printer(chain, ascii: bool = False, marked=()) -> TextPrinter:
-    return TextPrinter(chain.joint_variables, marked=marked, ascii=ascii)
+    """A text printer for `chain`: its joint variables, offsets and numbers as its file wrote them."""
+    return TextPrinter(chain_settings(chain), marked=marked, ascii=ascii)
+
+
+def latex_printer(chain, marked=(), printer=LatexPrinter) -> LatexPrinter:
+    """A LaTeX printer (or a subclass: `printer`) for `chain`, set up like `text_printer`."""
+    return printer(chain_settings(chain), marked=marked)
+
+
+def exact_printer(chain) -> ExactPrinter:
+    """SymPy's own text form for `chain`, as JSON carries it: sympify reads it back."""
+    return ExactPrinter(chain_settings(chain))
 
 
 def transform_title(i, j, style: str = "unicode") -> str:
@@ -59,7 +149,7 @@ def text_matrix(matrix: sympy.Matrix, printer: TextPrinter, width: int = 100) ->
     lines = []
     for r in range(3):
         for c in range(4):
-            lines.append(f"{ELEMENT_NAMES[r][c]:<3} = {cells[r][c]}")
+            lines.append(break_element(f"{ELEMENT_NAMES[r][c]:<3} = ", cells[r][c], width))
     lines.append("bottom row: 0 0 0 1")
     return "\n".join(lines)
 
@@ -71,16 +161,28 @@ def legend_entries(printer, style: str) -> list[tuple[str, str]]:
 
 
 def text_legend(printer: TextPrinter, width: int = 100) -> str:
+    """`where c1 = cos θ1, s1 = sin θ1, ...`, wrapped at `width`; an entry longer than a line
+    is broken like an element."""
     entries = legend_entries(printer, printer.style)
     if not entries:
         return ""
-    lines, line = [], "where"
+    lines, line, indent = [], "where", "      "
     for position, (label, meaning) in enumerate(entries):
-        entry = f" {label} = {meaning}" + ("," if position < len(entries) - 1 else "")
-        if len(line) + len(entry) > width and line.strip() != "where":
+        entry = f"{label} = {meaning}" + ("," if position < len(entries) - 1 else "")
+        if display_width(line) + 1 + display_width(entry) <= width:
+            line += " " + entry
+            continue
+        if line.strip() != "where":
             lines.append(line)
-            line = "     "
-        line += entry
+            line = indent[:-1]
+        if display_width(line) + 1 + display_width(entry) > width:
+            broken = break_element(indent + f"{label} = ", meaning, width).splitlines()
+            broken[-1] += entry[len(label) + 3 + len(meaning):]
+            broken[0] = (line + " " + broken[0].lstrip())
+            lines += broken[:-1]
+            line = broken[-1]
+        else:
+            line += " " + entry
     return "\n".join(lines + [line])
 
 
@@ -96,7 +198,7 @@ def text_table(chain, ascii: bool = False) -> str:
     """The DH table in the convention's column order; * marks each joint variable."""
     printer = text_printer(chain, ascii=ascii, marked=chain.joint_variables)
     columns = table_columns(chain.convention)
-    headers = ["i"] + [_ascii_header(field) if ascii else header for field, header, _ in columns]
+    headers = ["i"] + [_ascii_header(header) if ascii else header for field, header, _ in columns]
     body = [[str(n)] + [printer.doprint(getattr(row, field)) for field, _, _ in columns]
             for n, row in enumerate(chain.rows, 1)]
     widths = [max(len(r[k]) for r in [headers] + body) for k in range(len(headers))]
@@ -105,8 +207,9 @@ def text_table(chain, ascii: bool = False) -> str:
     return "\n".join(lines)
 
 
-def _ascii_header(field: str) -> str:
-    return {"alpha": "alpha", "theta": "theta"}.get(field, field)
+def _ascii_header(header: str) -> str:
+    """αᵢ₋₁ -> alpha(i-1), θᵢ -> theta(i)."""
+    return header[0].translate(_ASCII) + "(" + header[1:].translate(_ASCII_SUBSCRIPTS) + ")"
 
 
 def latex_matrix(matrix: sympy.Matrix, printer: LatexPrinter) -> str:
@@ -125,7 +228,7 @@ def latex_legend(printer: LatexPrinter) -> str:
 
 def latex_table(chain) -> str:
     """The DH table of a chain as a LaTeX array; joint variables carry a star."""
-    return latex_array(*latex_table_cells(chain, LatexPrinter(chain.joint_variables, marked=chain.joint_variables)))
+    return latex_array(*latex_table_cells(chain, latex_printer(chain, marked=chain.joint_variables)))
 
 
 def latex_table_cells(chain, printer: LatexPrinter) -> tuple[list[str], list[list[str]]]:
@@ -144,7 +247,7 @@ def latex_array(header: list[str], rows: list[list[str]]) -> str:
 
 def json_result(chain, i, j, matrix: sympy.Matrix) -> dict:
     """A result any SymPy user can read back: full cos/sin, the robot file's symbol names."""
-    printer = text_printer(chain, ascii=True)
+    printer, exact = text_printer(chain, ascii=True), exact_printer(chain)
     for element in matrix:
         printer.doprint(element)  # collects the abbreviations the text form uses
     return {
@@ -153,14 +256,19 @@ def json_result(chain, i, j, matrix: sympy.Matrix) -> dict:
         "from": i,
         "to": j,
         "joint_variables": [s.name for s in chain.joint_variables],
-        "matrix": [[sympy.sstr(matrix[r, c]) for c in range(4)] for r in range(4)],
-        "abbreviations": {label: meaning for label, meaning in _json_legend(printer)},
+        "matrix": [[exact.doprint(matrix[r, c]) for c in range(4)] for r in range(4)],
+        "abbreviations": {label: meaning for label, meaning in _json_legend(printer, exact)},
     }
 
 
-def _json_legend(printer: TextPrinter):
+def _json_legend(printer: TextPrinter, exact: ExactPrinter):
+    """(ascii label, its meaning in SymPy's form), joints in joint order, offsets as written."""
     for abbreviation in sorted(printer.used, key=lambda a: a.sort_key()):
-        terms = " ".join(("- " if sign < 0 else "+ ") + printer.notation.name_of(number)
-                         for number, sign in abbreviation.indices).lstrip("+ ")
+        angle = " ".join(("- " if sign < 0 else "+ ") + printer.notation.name_of(label)
+                         for label, sign in abbreviation.indices).lstrip("+ ")
+        offset = printer.notation.offset(abbreviation)
+        for term in sorted(sympy.Add.make_args(offset), key=printer.notation.angle_key) if offset != 0 else ():
+            negative = term.could_extract_minus_sign()
+            angle += (" - " if negative else " + ") + exact.doprint(-term if negative else term)
         function = "cos" if abbreviation.function == "c" else "sin"
-        yield abbreviation.label("ascii"), f"{function}({terms})"
+        yield abbreviation.label("ascii"), f"{function}({angle})"

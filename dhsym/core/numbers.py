@@ -1,0 +1,70 @@
+"""How a chain's numbers were written, so that every printer writes them back the same way.
+
+Arithmetic stays exact: the parser reads `0.425` as the Rational 17/40. What it also records is
+*how* the file wrote its numbers: the most decimal places of any decimal literal, and the
+denominators it wrote as fractions. A printer then writes a rational as a decimal when
+
+- the file wrote decimals at all (`places > 0`),
+- the rational has a finite decimal expansion of at most `2 × places` places (so sums and
+  products of the written decimals stay decimals: 0.425 + 0.39225 = 0.81725, 0.333·0.5 = 0.1665),
+- and its denominator is not one the file wrote as a fraction (`l_1/2`, `1/3` keep their form),
+  unless it stands alone and is the value of a decimal the file wrote (`d: 0.5` next to `l_1/2`
+  prints 0.5, and l_1/2 prints l1/2).
+
+Integers, fractions in a file without decimals and multiples of π print as before.
+
+>>> numbers = WrittenNumbers(places=5)
+>>> numbers.decimal(sympy.Rational(3269, 4000)), numbers.decimal(sympy.Rational(1, 3))
+('0.81725', None)
+>>> WrittenNumbers(places=1, fractions=frozenset({2})).decimal(sympy.Rational(1, 2)) is None
+True
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy
+
+
+@dataclass(frozen=True)
+class WrittenNumbers:
+    """The decimal places and fraction denominators a robot file wrote its numbers with."""
+
+    places: int = 0  # the most decimal places of any decimal literal; 0 when the file wrote none
+    fractions: frozenset = frozenset()  # denominators written as fractions, as in l_1/2 or 1/3
+    values: frozenset = frozenset()  # the values of the decimal literals, without sign
+
+    def decimal(self, value, alone: bool = False) -> str | None:
+        """The exact decimal text of a rational the printers should write as a decimal, else None.
+        `alone`: the rational is a term or a cell of its own, not the coefficient of a product."""
+        if not self.places or not getattr(value, "is_Rational", False) or value.is_Integer:
+            return None
+        if (10 ** (2 * self.places)) % value.q:
+            return None
+        if value.q in self.fractions and not (alone and abs(value) in self.values):
+            return None
+        return decimal_text(value)
+
+
+def decimal_text(value: sympy.Rational) -> str:
+    """The finite decimal expansion of a rational whose denominator divides a power of ten.
+
+    >>> decimal_text(sympy.Rational(-17, 40)), decimal_text(sympy.Rational(89159, 1000000))
+    ('-0.425', '0.089159')
+    """
+    places = _places(value.q)
+    digits = str(abs(value.p) * 10**places // value.q).rjust(places + 1, "0")
+    text = digits[:-places] + "." + digits[-places:] if places else digits
+    return ("-" if value.p < 0 else "") + text
+
+
+def _places(q: int) -> int:
+    """Decimal places of 1/q for q = 2^i 5^j: max(i, j)."""
+    twos = fives = 0
+    while q % 2 == 0:
+        q, twos = q // 2, twos + 1
+    while q % 5 == 0:
+        q, fives = q // 5, fives + 1
+    if q != 1:
+        raise ValueError("no finite decimal expansion")
+    return max(twos, fives)
