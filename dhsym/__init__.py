@@ -19,7 +19,7 @@ from .core.transforms import Step
 from .errors import Location, UserError
 from .io.expr import parse_expression, real_symbol
 from .io.library import builtin_names, load
-from .printing import display
+from .latex import display
 
 __all__ = ["Chain", "DHRow", "Location", "Step", "UserError", "builtin_names", "check", "display", "errata",
            "load", "parse_expression", "plot", "real_symbol", "verify"]

@@ -33,7 +33,7 @@ from .expr import parse_expression
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
 
 MAX_JOINTS = 24
-TOP_KEYS = ("name", "source", "convention", "joints", "base", "tool", "sample", "notes")
+TOP_KEYS = ("name", "source", "convention", "joints", "base", "tool", "sample", "notes", "first_frame")
 ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 _DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
@@ -157,9 +157,12 @@ class _Reader:
         base = self.steps(top["base"][1], "base", variables) if "base" in top else []
         tool = self.steps(top["tool"][1], "tool", variables) if "tool" in top else []
         chain = Chain(dh_rows, convention, base, tool, name=self.optional_text(top, "name", Path(self.filename).stem),
-                      source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""))
+                      source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""),
+                      file=self.filename)
         if "sample" in top:
             chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
+        if "first_frame" in top:
+            chain.frame_offset = self.first_frame(top["first_frame"][1])
         return RobotFile(chain, path=self.filename, warnings=self.warnings)
 
     def row(self, node: yaml.Node, number: int) -> "_Row":
@@ -256,6 +259,13 @@ class _Reader:
                 self.warn_degrees(value, value_node, f"{step_what} {kind}")
             steps.append(Step(kind, value))
         return steps
+
+    def first_frame(self, node: yaml.Node) -> int:
+        """The number of the chain's first frame, as the lecture numbers it (a wrist: 3)."""
+        text = self.text(node, "first_frame").strip()
+        if not (text.isascii() and text.isdigit() and len(text) <= 3):
+            raise UserError(f"first_frame must be a whole number of frames such as 3, not {text!r}", self.where(node))
+        return int(text)
 
     def sample(self, node: yaml.Node, symbols: dict) -> dict:
         """Numbers for the robot's symbols; a name the robot does not use is a typo."""

@@ -6,11 +6,19 @@ minus sign (after a twist of π) carries a bar: ``c12̄4 = cos(θ1+θ2−θ4)``,
 ``c_{12\\bar{4}}``, ASCII ``c(12-4)``. When any joint number has two digits the indices are
 separated by commas, so ``c_{1,10}`` cannot be misread as joint 110.
 
+The index is the bare joint number when every joint angle is a θ (``c1 = cos θ1``). When the
+angles are named with other Greek letters, or with several (θ1, φ2, ψ3), each index keeps its
+letter, so that ``cφ2 = cos φ2`` (LaTeX ``c_{\\phi 2}``) is never confused with the ``c2 = cos θ2``
+of another chain: ``cθ1,φ2 = cos(θ1 + φ2)``.
+
 >>> import sympy
 >>> t = sympy.symbols("theta_1:5", real=True)
 >>> notation = Notation(t)
 >>> notation.abbreviation(sympy.cos(t[0] + t[1] - t[3]))
 (1, Abbreviation(function='c', indices=((1, 1), (2, 1), (4, -1))))
+>>> mixed = Notation(sympy.symbols("theta_1 phi_2", real=True))
+>>> mixed.abbreviation(sympy.sin(sum(mixed.label)))[1].label("latex")
+'s_{\\\\theta 1,\\\\phi 2}'
 >>> display_name("theta_1", "unicode"), display_name("theta_1", "latex"), display_name("l_13", "ascii")
 ('θ1', '\\\\theta_{1}', 'l13')
 """
@@ -43,7 +51,7 @@ class Abbreviation:
 
     def label(self, style: str) -> str:
         """c12 (unicode/ascii), c_{12} (latex); c(12-4) in ascii when a joint is subtracted."""
-        joined = ("," if self.wide else "").join(_index_text(n, s, style) for n, s in self.indices)
+        joined = ("," if self.wide else "").join(_index_text(_label_text(n, style), s, style) for n, s in self.indices)
         if style == "latex":
             return f"{self.function}_{{{joined}}}"
         if style == "ascii" and (self.wide or any(s < 0 for _, s in self.indices)):
@@ -61,9 +69,12 @@ class Notation:
     def __init__(self, joint_variables):
         """Joint labels come from the names' subscripts when every joint variable has a
         distinct one: θ4, θ5, θ6 of a wrist give c4, c5, c6, and a general row in θ_i gives c_i.
-        Otherwise joints are numbered by row."""
+        Otherwise joints are numbered by row. Angles named with Greek letters other than θ
+        keep their letter in the label: φ2 gives cφ2."""
         joint_variables = list(joint_variables)
         labels = [_subscript(s.name) for s in joint_variables]
+        if None not in labels and _lettered(joint_variables):
+            labels = [_letter(s.name) + label for s, label in zip(joint_variables, labels)]
         if None in labels or len(set(labels)) != len(labels):
             labels = list(range(1, len(joint_variables) + 1))
         elif all(label.isdigit() for label in labels):
@@ -99,7 +110,12 @@ class Notation:
         return next(symbol.name for symbol, own in self.label.items() if own == label)
 
     def meaning(self, abbreviation: Abbreviation, style: str) -> str:
-        """What an abbreviation stands for: 'cos θ1' or 'sin(θ2 + θ3)'."""
+        """What an abbreviation stands for: 'cos θ1' or 'sin(θ2 + θ3)'; in the "sympy" style
+        with the robot file's names, as SymPy reads it back: 'sin(theta_2 + theta_3)'."""
+        if style == "sympy":
+            terms = " ".join(("- " if sign < 0 else "+ ") + self.name_of(number)
+                             for number, sign in abbreviation.indices).lstrip("+ ")
+            return f"{'cos' if abbreviation.function == 'c' else 'sin'}({terms})"
         names = {label: symbol for symbol, label in self.label.items()}
         angle = ""
         for position, (number, sign) in enumerate(abbreviation.indices):
@@ -141,6 +157,27 @@ class Notation:
             return (1, found[1].sort_key(), sympy.default_sort_key(factor))
         rank = 3 if base.is_Add else 2 if base.is_Function else 0
         return (rank, (), sympy.default_sort_key(factor))
+
+
+def _letter(name: str) -> str:
+    """The letter of a name, Greek as its Unicode character: phi_2 -> 'φ'."""
+    base = split_super_sub(name)[0]
+    return greek_unicode.get(base, base)
+
+
+def _lettered(joint_variables) -> bool:
+    """Whether the joint angles (the variables named with a Greek letter) are not all θ."""
+    letters = {_letter(s.name) for s in joint_variables} & set(GREEK_NAMES)
+    return bool(letters) and letters != {"θ"}
+
+
+def _label_text(label, style: str) -> str:
+    """A joint label in a style: 'φ2' is φ2 (unicode), \\phi 2 (LaTeX), phi2 (ASCII)."""
+    text = str(label)
+    if text[:1] not in GREEK_NAMES or style == "unicode":
+        return text
+    name = GREEK_NAMES[text[0]]
+    return (greek_latex(name) + " " if style == "latex" else name) + text[1:]
 
 
 def _subscript(name: str) -> str | None:
