@@ -264,7 +264,8 @@ class _Reader:
         """The number of the chain's first frame, as the lecture numbers it (a wrist: 3)."""
         text = self.text(node, "first_frame").strip()
         if not (text.isascii() and text.isdigit() and len(text) <= 3):
-            raise UserError(f"first_frame must be a whole number of frames such as 3, not {text!r}", self.where(node))
+            raise UserError(f"first_frame must be a whole number such as 3 (the number of the chain's first "
+                            f"frame), not {text!r}", self.where(node))
         return int(text)
 
     def sample(self, node: yaml.Node, symbols: dict) -> dict:

@@ -296,14 +296,14 @@ def open_group(tex: str, start: int, end: int) -> str | None:
         if start <= i < end and depth == 0 and tex.startswith(("\\frac{", "\\sqrt{"), i):
             groups, after = _groups(tex, tex.index("{", i), 2 if tex.startswith("\\frac", i) else 1)
             inside = groups[0]
-            if break_points(inside) or (len(groups) == 2 and inside != "1" and "[" not in inside):
+            if break_points(inside):
                 candidates.append((math_width(tex[i:after]), i, groups, after))
     if not candidates:
         return None
     _, i, groups, after = max(candidates)
     inside = groups[0]
     opening, closing = ("\\{", "\\}") if "[" in inside else ("[", "]") if "(" in inside else ("(", ")")
-    wrapped = f"{opening}{inside}{closing}" if break_points(inside) else inside
+    wrapped = f"{opening}{inside}{closing}" if any(depth == 0 for _, depth in break_points(inside)) else inside
     if len(groups) == 2:
         space = "" if wrapped[0] in "([\\" else " "
         return f"{tex[:i]}\\frac{{1}}{{{groups[1]}}}{space}{wrapped}{tex[after:]}"
