@@ -6,6 +6,7 @@ import json
 import re
 
 import sympy
+from robots import NUMBERED_WRIST as WRIST
 
 from dhsym import display
 from dhsym.cli import main
@@ -19,15 +20,6 @@ from dhsym.latex.results import ARTICLE_TEXT_WIDTH_PT
 from dhsym.latex.width import math_width
 from dhsym.printing.printers import LatexPrinter, TextPrinter
 from dhsym.printing.render import text_legend
-
-WRIST = """name: wrist of a lecture
-convention: standard
-first_frame: 3
-joints:
-  - {joint: R, alpha: -pi/2, a: 0, d: 0, theta: theta_4}
-  - {joint: R, alpha: pi/2, a: 0, d: 0, theta: theta_5}
-  - {joint: R, alpha: 0, a: 0, d: d_6, theta: theta_6}
-"""
 
 
 def _run(capsys, *argv) -> str:
@@ -119,10 +111,10 @@ def test_json_text_and_latex_legends_list_the_same_abbreviations(capsys):
 def test_first_frame_numbers_every_output(capsys, tmp_path):
     robot = tmp_path / "wrist.yaml"
     robot.write_text(WRIST, encoding="utf-8")
-    assert "wrist of a lecture: ³T₆" in _run(capsys, "fk", str(robot))
+    assert "Wrist numbered as in the lecture: ³T₆" in _run(capsys, "fk", str(robot))
     links = _run(capsys, "links", str(robot), "--ascii")
     assert re.findall(r": (\dT\d)", links) == ["3T4", "4T5", "5T6"] and "c4 = cos theta4" in links
-    assert "wrist of a lecture: ⁴T₆" in _run(capsys, "fk", str(robot), "--from", "4")
+    assert "Wrist numbered as in the lecture: ⁴T₆" in _run(capsys, "fk", str(robot), "--from", "4")
     data = json.loads(_run(capsys, "fk", str(robot), "--from", "6", "--to", "3", "--format", "json"))
     assert (data["from"], data["to"]) == (6, 3)
     assert "{}^{3}T_{6} =" in _run(capsys, "fk", str(robot), "--format", "latex")

@@ -45,12 +45,12 @@ def table(chain) -> Latex:
 
 
 def matrix(chain, value, name: str = "", legend: bool = True, page: str = "notebook") -> Latex:
-    """Any matrix (or vector) of a chain in c/s notation, with its name and legend. A 4×4
+    """Any matrix (or vector) of a chain in c/s notation, with its name and legend. A named
     transform too wide for the `page` ("notebook", or one of the documents') is shown by its
     elements."""
     printer = LatexPrinter(chain.joint_variables)
     value = sympy.Matrix(value)
-    if value.shape == (4, 4) and name:
+    if value.shape == (4, 4) and name and list(value[3, :]) == [0, 0, 0, 1]:  # a transform
         cells = [[printer.doprint(value[r, c]) for c in range(4)] for r in range(4)]
         items = matrix_items(name, cells, PAGES[page])
     else:

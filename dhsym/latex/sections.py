@@ -26,7 +26,6 @@ from .layout import (
     ARRAY_ROW,
     FIRST_DISPLAY,
     NEXT_DISPLAY,
-    Block,
     Page,
     bmatrix_width,
     display,

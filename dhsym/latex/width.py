@@ -90,8 +90,8 @@ class _Measure:
             self.i += 1
         self.i += self.i == start  # a one-character command such as \, or \{
         name = self.tex[start:self.i]
-        if name.lower() in _GREEK_WIDTH:
-            return _GREEK_WIDTH.get(name, .75) * scale, True
+        if name.lower() in _GREEK_WIDTH:  # in a script, with a little of its italic correction
+            return (_GREEK_WIDTH.get(name, .75) + (.04 if scale < 1 else 0.0)) * scale, True
         if name in _SPACES:
             return _SPACES[name] * scale, operand
         if name == "frac":
