@@ -19,6 +19,7 @@ from pathlib import Path
 import pytest
 from robots import GREEK_PRISMATIC, TEN_JOINTS, TEST_ROBOTS
 
+from dhsym import display
 from dhsym.cli import main
 from dhsym.io.library import builtin_names, load
 from dhsym.io.robotfile import load_robot_text
@@ -57,6 +58,18 @@ def _document(robot, variant: str, **options) -> str:
 ROBOTS = builtin_names() + list(TEST_ROBOTS)
 
 
+def _notebook_displays() -> str:
+    """Every robot's whole transform as a notebook shows it, on a line as wide as the notebook
+    page the layout assumes: pdflatex reads the same LaTeX as MathJax, and nothing overflows."""
+    width = texlayout.PAGES["notebook"].width_pt
+    preamble = (f"\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage[textwidth={width}pt,"
+                f"paperwidth={width + 60}pt,textheight=3000pt,paperheight=3100pt]{{geometry}}\n"
+                "\\begin{document}\n")  # as tall as the 7-axis arm's elements and legend
+    body = "".join(f"\\[\n{display.transform(chain, chain.first_frame, chain.last_frame).latex}\n\\]\n"
+                   for chain in map(_robot, ROBOTS))
+    return preamble + body + "\\end{document}\n"
+
+
 def _width_probe() -> str:
     """A document that logs TeX's own width of every matrix element of every built-in robot."""
     lines = []
@@ -83,6 +96,7 @@ def compiled(tmp_path_factory):
     sources = {f"{name}-{variant}": _document(_robot(name), variant) for name in ROBOTS for variant in VARIANTS}
     sources["puma560-inverse-slides"] = _document(load("puma560"), "slides-steps", start="6", end="2")
     sources["width-probe"] = _width_probe()
+    sources["notebook-displays"] = _notebook_displays()
     for job, text in sources.items():
         (folder / f"{job}.tex").write_text(text, encoding="utf-8")
     with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
@@ -109,6 +123,13 @@ def _problems(log: str) -> list[str]:
 def test_every_robot_compiles_and_fits(compiled, name, variant):
     status, log, pdf = compiled[f"{name}-{variant}"]
     assert status == 0 and pdf.exists(), _problems(log) or log[-2000:]
+    assert _problems(log) == []
+
+
+@needs_tex
+def test_notebook_displays_compile_and_fit_the_notebook_line(compiled):
+    status, log, _ = compiled["notebook-displays"]
+    assert status == 0, _problems(log) or log[-2000:]
     assert _problems(log) == []
 
 

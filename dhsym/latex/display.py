@@ -58,7 +58,7 @@ def matrix(chain, value, name: str = "", legend: bool = True, page: str = "noteb
         items = [display(body, matrix_height([[""]] * value.rows))]
     if legend:
         items += legend_items(printer, PAGES[page])
-    return Latex(stacked(items))
+    return Latex(stacked(items, PAGES[page]))
 
 
 def transform(chain, i, j, raw: bool = False, page: str = "notebook") -> Latex:

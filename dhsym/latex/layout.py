@@ -29,6 +29,7 @@ Heights are estimates in pt, measured once with pdflatex, so that slides can be 
 """
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 
 from ..printing.render import ELEMENT_NAMES, bmatrix
@@ -158,7 +159,7 @@ def flat(items) -> list[Block]:
             for item in items]
 
 
-def stacked(items) -> str:
+def stacked(items, page: Page | None = None) -> str:
     """Blocks and `Rows` as the rows of one display (an `array` of one left-aligned column),
     which MathJax 2, 3 and 4 and pdflatex all lay out the same way: one above the other.
 
@@ -172,8 +173,11 @@ def stacked(items) -> str:
     for item in items:
         if isinstance(item, Rows):
             rows.append(aligned_display(lines_under(item.columns, 0)).math)
-        else:
-            rows.append(item.math if item.is_display else f"\\text{{{item.latex}}}")
+        elif item.is_display:
+            rows.append(item.math)
+        else:  # text does not break inside \text{}: one row per line that fits the page
+            characters = int(page.width / TEXT_CHARACTER) if page else len(item.latex)
+            rows += [f"\\text{{{line}}}" for line in textwrap.wrap(item.latex, max(20, characters))]
     return "\\begin{array}{l}\n" + " \\\\[4pt]\n".join(rows) + "\n\\end{array}"
 
 

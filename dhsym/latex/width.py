@@ -99,7 +99,7 @@ class _Measure:
             return max(self.argument(inner), self.argument(inner)) + .24 * scale, True
         if name == "sqrt":
             return self.argument(scale) + .833 * scale, True
-        if name in ("bar", "hat", "vec", "mathit", "mathbf"):
+        if name in ("bar", "overline", "hat", "vec", "mathit", "mathbf"):
             return self.argument(scale), True
         if name in ("mathrm", "text", "operatorname"):
             before = self.i

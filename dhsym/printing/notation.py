@@ -190,8 +190,8 @@ def _index_text(label, sign: int, style: str) -> str:
     text = str(label)
     if sign > 0:
         return text
-    if style == "latex":
-        return f"\\bar{{{text}}}"
+    if style == "latex":  # a bar over a whole lettered label: \overline{\phi 2}
+        return f"\\bar{{{text}}}" if text.isalnum() else f"\\overline{{{text}}}"
     return _COMBINING_BAR.join(text) + _COMBINING_BAR if style == "unicode" else f"-{text}"
 
 
