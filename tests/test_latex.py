@@ -282,7 +282,7 @@ def test_two_digit_joints_greek_names_and_angle_differences():
         load_robot_text(TEN_JOINTS, "ten.yaml").chain, "slides")
     greek = latexdoc.document(load_robot_text(GREEK_PRISMATIC, "greek.yaml").chain, "snippet")
     assert "\\phi_{1}^{*}" in greek and "\\lambda_{1}" in greek and "d_{3}^{*}" in greek
-    assert "\\bar{\\psi 2}" in greek and "a bar over a joint number marks an angle that is subtracted" in greek
+    assert "\\overline{\\psi 2}" in greek and "a bar over a joint number marks an angle that is subtracted" in greek
 
 
 # ---------------------------------------------------------------- golden files

@@ -138,6 +138,7 @@ def _side_by_side(links: list[tuple[list, str, float]], page: Page) -> list:
     beside = None  # (block, width) that the next matrix may join
     for items, title, width in links:
         if len(items) > 1:  # named elements: never beside another
+            items[0].shows = (title,)
             out.extend(items)
             beside = None
             continue
