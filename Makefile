@@ -2,25 +2,33 @@
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
-READY := $(VENV)/.ready
+RUNTIME := $(VENV)/.ready-runtime
+DEV := $(VENV)/.ready-dev
+PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
 
 .PHONY: demo test install tex bench lint notebooks clean
 
-$(READY): pyproject.toml requirements.txt
+# The demo needs only what dhsym itself imports; the tests add pytest, jupyter, ruff and friends.
+$(RUNTIME): pyproject.toml requirements.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install -q --disable-pip-version-check -r requirements.txt
-	$(BIN)/python -m pip install -q --disable-pip-version-check --no-deps -e .
-	touch $(READY)
+	$(PIP) -r requirements.txt
+	$(PIP) --no-deps -e .
+	touch $(RUNTIME)
 
-install: $(READY)
+$(DEV): $(RUNTIME) requirements-dev.txt
+	$(PIP) -r requirements-dev.txt
+	touch $(DEV)
+
+install: $(DEV)
 
 tex:
 	@bash scripts/ensure-tex.sh
 
-demo: install
+demo: $(RUNTIME)
 	$(BIN)/dhsym fk puma560
 
 test: install tex
+	$(BIN)/ruff check dhsym tests benchmarks
 	$(BIN)/python -m pytest
 
 bench: install
