@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 READY := $(VENV)/.ready
 
-.PHONY: demo test install tex bench lint notebooks clean
+.PHONY: demo test install tex browser node-packages bench lint notebooks clean
 
 $(READY): pyproject.toml requirements.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -17,10 +17,17 @@ install: $(READY)
 tex:
 	@bash scripts/ensure-tex.sh
 
+# Chromium for the notebook-page test; MathJax (npm) typesets the notebook pages.
+browser:
+	@bash scripts/ensure-browser.sh
+
+node-packages:
+	@bash scripts/ensure-node-packages.sh
+
 demo: install
 	$(BIN)/dhsym fk puma560
 
-test: install tex
+test: install tex browser node-packages
 	$(BIN)/python -m pytest
 
 bench: install
@@ -33,4 +40,4 @@ lint: install
 	$(BIN)/ruff check dhsym tests benchmarks
 
 clean:
-	rm -rf $(VENV) build .pytest_cache .hypothesis
+	rm -rf $(VENV) build node_modules .pytest_cache .hypothesis
