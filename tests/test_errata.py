@@ -26,21 +26,21 @@ def test_tally_keeps_genuine_errors_apart_from_transcription_damage():
                                   reasons={(1, 1): errata.ocr("d6 lost"), (1, 2): errata.slide("1 for 0", lines=(3,))})
     kinds = [e.kind for e in both.errata]
     assert kinds == [Kind.OCR, Kind.SLIDE]
-    assert errata.tally([both]) == ("1 genuine error of the lecture (1 slide error); "
-                                    "1 element damaged in transcription")
+    assert errata.tally([both]) == ("genuine errors of the lecture: 1 (1 slide error), in 1 element; "
+                                    "transcription damage: 1, in 1 element")
     assert both.summary().endswith("2 errata (1 transcription damage, 1 slide error)")
 
 
 def test_a_reason_without_kind_stays_unclassified_and_says_so():
     result = errata.compare_printed({(1, 2): "1"}, derived, "t", reasons={(1, 2): "a sentence"})
     assert result.errata[0].kind is None and result.errata[0].reason == "a sentence"
-    assert errata.tally([result]).endswith("1 unclassified")
+    assert errata.tally([result]).endswith("unclassified: 1 element")
     assert "erratum at (1,2): printed 1, correct 0 — a sentence" in result.report()
 
 
 def test_agreeing_elements_carry_no_kind_in_the_tally():
     result = errata.compare_printed({(1, 2): "0"}, derived, "t", reasons={(1, 2): errata.spoken("unused")})
-    assert result.ok and errata.tally([result]).startswith("0 genuine errors")
+    assert result.ok and errata.tally([result]) == "genuine errors of the lecture: 0; transcription damage: 0"
 
 
 def test_confidence_is_one_of_three_words():
@@ -51,3 +51,9 @@ def test_confidence_is_one_of_three_words():
 
 def test_genuine_kinds_are_the_lectures_own():
     assert {k for k in Kind if k.genuine} == {Kind.SLIDE, Kind.SPOKEN, Kind.INCONSISTENCY}
+
+
+def test_one_cause_shared_by_two_elements_is_one_error_in_two_elements():
+    flip = errata.spoken("read the other way round", lines=(331,))
+    result = errata.compare_printed(["1", "1"], sympy.Matrix([0, 0]), "t", reasons={(1, 1): flip, (2, 1): flip})
+    assert errata.tally([result]).startswith("genuine errors of the lecture: 1 (1 spoken slip), in 2 elements")

@@ -28,7 +28,7 @@ it; dhsym's reading of it is shown beside it:
 slide 4: 0 of 1 elements agree; 1 erratum (1 spoken slip)
   spoken slip at (2,2) (l.87): printed "l1 C1" (read as l1 c1), correct l1 s1 — cos for sin
 >>> print(tally([result, slip]))
-1 genuine error of the lecture (1 spoken slip); 0 elements damaged in transcription; 1 unclassified
+genuine errors of the lecture: 1 (1 spoken slip), in 1 element; transcription damage: 0; unclassified: 1 element
 """
 from __future__ import annotations
 
@@ -42,7 +42,7 @@ from ..printing.printers import LatexPrinter, TextPrinter
 
 # the kinds are re-exported, so that a notebook imports one module to classify its errata
 from .kinds import Cause, Kind, counted, hypothetical, inconsistency, ocr, slide, spoken  # noqa: F401
-from .kinds import tally as tally_kinds
+from .kinds import tally as tally_causes
 from .verify import Verdict, check
 
 
@@ -184,7 +184,7 @@ def compare_printed(printed, derived, title: str = "printed result", reasons=Non
 
 def tally(comparisons) -> str:
     """The errata of several comparisons counted by kind: the lecture's errors apart from OCR damage."""
-    return tally_kinds(e.kind for comparison in comparisons for e in comparison.errata)
+    return tally_causes(e.cause for comparison in comparisons for e in comparison.errata)
 
 
 def transcribe(printed) -> sympy.Matrix:

@@ -89,26 +89,39 @@ def hypothetical(why: str, lines=(), confidence: str = "certain") -> Cause:
 UNCLASSIFIED = "unclassified"
 
 
-def tally(kinds) -> str:
+def tally(causes) -> str:
     """One line that keeps the lecture's own errors apart from transcription damage.
 
-    `kinds` holds a Kind (or None, for an erratum nobody has classified) per differing element.
+    `causes` holds the Cause of each differing element (None where nobody classified it). One
+    cause shared by several elements is one error, so both are counted: errors and elements.
 
-    >>> print(tally([Kind.SLIDE, Kind.OCR, Kind.OCR, Kind.SPOKEN, Kind.HYPOTHETICAL]))
-    2 genuine errors of the lecture (1 slide error, 1 spoken slip); 2 elements damaged in transcription; 1 hypothetical
-    >>> print(tally([]))
-    0 genuine errors of the lecture; 0 elements damaged in transcription
+    >>> slip, damage = spoken("pi - phi1"), ocr("l lost")
+    >>> print(tally([slip, slip, damage, slide("1 for 0"), hypothetical("product")]).replace("; ", ";\\n"))
+    genuine errors of the lecture: 2 (1 slide error, 1 spoken slip), in 3 elements;
+    transcription damage: 1, in 1 element;
+    hypothetical: 1 element
+    >>> print(tally([None]))
+    genuine errors of the lecture: 0; transcription damage: 0; unclassified: 1 element
     """
-    counts = Counter(kinds)
-    genuine = [kind for kind in Kind if kind.genuine and counts[kind]]
-    total = sum(counts[kind] for kind in genuine)
-    detail = ", ".join(counted(counts[kind], kind.value) for kind in genuine)
-    parts = [counted(total, "genuine error") + " of the lecture" + (f" ({detail})" if detail else ""),
-             counted(counts[Kind.OCR], "element") + " damaged in transcription"]
-    if counts[Kind.HYPOTHETICAL]:
-        parts.append(f"{counts[Kind.HYPOTHETICAL]} hypothetical")
-    if counts[None]:
-        parts.append(f"{counts[None]} {UNCLASSIFIED}")
+    causes = list(causes)
+
+    def count(kinds):
+        mine = [cause for cause in causes if cause is not None and cause.kind in kinds]
+        return set(mine), len(mine)
+
+    errors, elements = count([kind for kind in Kind if kind.genuine])
+    by_kind = Counter(cause.kind for cause in errors)
+    detail = ", ".join(counted(by_kind[kind], kind.value) for kind in Kind if by_kind[kind])
+    line = f"genuine errors of the lecture: {len(errors)}" + (f" ({detail})" if detail else "")
+    parts = [line + (f", in {counted(elements, 'element')}" if elements else "")]
+    damages, damaged = count([Kind.OCR])
+    parts.append(f"transcription damage: {len(damages)}" + (f", in {counted(damaged, 'element')}" if damaged else ""))
+    _, worked_out = count([Kind.HYPOTHETICAL])
+    if worked_out:
+        parts.append(f"hypothetical: {counted(worked_out, 'element')}")
+    unclassified = sum(cause is None or cause.kind is None for cause in causes)
+    if unclassified:
+        parts.append(f"{UNCLASSIFIED}: {counted(unclassified, 'element')}")
     return "; ".join(parts)
 
 
