@@ -127,6 +127,6 @@ def tally(causes) -> str:
 
 def counted(number: int, noun: str) -> str:
     """'1 spoken slip', '2 inconsistencies': a count and its noun, in the plural where needed."""
-    if number == 1:
-        return f"1 {noun}"
+    if number == 1 or noun.endswith("damage"):  # damage is uncountable
+        return f"{number} {noun}"
     return f"{number} {noun[:-1] + 'ies' if noun.endswith('y') else noun + 's'}"
