@@ -4,17 +4,9 @@
 # As root with apt-get it installs Debian's nodejs and npm when node is missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/apt-install.sh
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-    echo "ensure-node-packages: installing Debian's nodejs and npm"
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update -q >/dev/null && apt-get install -y -q --no-install-recommends nodejs npm >/dev/null \
-      || { echo "ensure-node-packages: apt-get install failed" >&2; exit 1; }
-  else
-    echo "ensure-node-packages: node and npm are missing. Install them with:" >&2
-    echo "    sudo apt-get install nodejs npm" >&2
-    exit 1
-  fi
+  apt_install ensure-node-packages nodejs npm || exit 1
 fi
 # npm ci writes node_modules/.package-lock.json; newer than the lock file means up to date.
 if [ ! node_modules/.package-lock.json -nt package-lock.json ]; then
