@@ -82,11 +82,6 @@ class Notation:
         self.label = dict(zip(joint_variables, labels))
         self.position = {symbol: k for k, symbol in enumerate(joint_variables, 1)}
 
-    @property
-    def index(self) -> dict:
-        """Joint variable -> its label (a number, or a subscript such as 'i')."""
-        return self.label
-
     def abbreviation(self, expr: sympy.Expr) -> tuple[int, Abbreviation] | None:
         """(sign, abbreviation) if expr is cos/sin of a signed sum of joint angles, else None."""
         if not isinstance(expr, (sympy.cos, sympy.sin)):
