@@ -159,7 +159,9 @@ def test_frame_offset_renumbers_the_picture_only():
 
     from dhsym.io.library import load
     renumbered = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=3)
-    plain = plot.draw(load("spherical_wrist"), ax=Figure())
+    plain = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=0)
+    by_the_robot_file = plot.draw(load("spherical_wrist"), ax=Figure())  # first_frame: 3
+    assert [t.get_text() for t in by_the_robot_file.texts] == [t.get_text() for t in renumbered.texts]
     assert sorted(t.get_text() for t in renumbered.texts) == [
         "$x_{3,4,5}$", "$x_{6}$", "$y_{3,5}$", "$y_{4}$", "$y_{6}$", "$z_{3,5}$", "$z_{4}$", "$z_{6}$"]
     assert sorted(t.get_text() for t in plain.texts) == [
