@@ -32,14 +32,16 @@ def add_parsers(commands) -> None:
 def run(robot, args) -> str:
     chain = robot.chain
     frame, point = resolve_frames(chain, args.frame, args.point)
+    if args.format == "latex":
+        from ..latex.velocity import snippet  # the LaTeX layout lives with the documents
+
+        return snippet(chain, frame, point, args.steps)
     matrix = jacobian(chain, frame, point)
     result = determinant(chain, frame, point)
     found = singularities(chain, result, point)
     if args.format == "json":
         return json.dumps(show.json_jacobian(chain, frame, point, matrix, result), indent=2, ensure_ascii=False)
     steps = propagate(chain) if args.steps else None
-    if args.format == "latex":
-        return _latex(chain, frame, point, matrix, result, found, steps)
     return _text(chain, frame, point, matrix, result, found, steps, args)
 
 
@@ -61,9 +63,3 @@ def _text(chain, frame, point, matrix, result, found, steps, args) -> str:
     if args.ascii:
         text = text.replace("ω", "w").replace("−", "-").replace("×", "x").replace("–", "-").replace("·", "*")
     return text
-
-
-def _latex(chain, frame, point, matrix, result, found, steps) -> str:
-    from ..latex.velocity import snippet  # the LaTeX layout lives with the documents
-
-    return snippet(chain, frame, point, matrix, result, found, steps)

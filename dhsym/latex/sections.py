@@ -50,7 +50,8 @@ class Section:
     items: list = field(default_factory=list)  # Blocks and Rows
 
 
-def sections(chain, start, end, steps: bool, page: Page, printer: LatexPrinter) -> list[Section]:
+def sections(chain, start, end, steps: bool, page: Page, printer: LatexPrinter,
+             jacobian: bool = False) -> list[Section]:
     """Everything but the title, in order: table, links, steps, result with its legend."""
     path = _frame_path(chain.frames, start, end)
 
@@ -76,6 +77,10 @@ def sections(chain, start, end, steps: bool, page: Page, printer: LatexPrinter) 
     out.append(Section("Result", f"Result: ${title(start, end)}$",
                        matrix_items(lhs, cells(start, end), page, short_lhs=title(start, end))))
     out[-1].items.extend(legend_items(printer, page))
+    if jacobian:  # velocity kinematics (dhsym latex --jacobian)
+        from .velocity import velocity_sections
+
+        out.extend(velocity_sections(chain, page, steps=steps))
     return out
 
 

@@ -86,15 +86,24 @@ def linear_part(chain, joint: int, frame, point, body=None) -> list:
     if not moves(chain, joint, point if body is None else body):
         return list(ZERO)
     if chain.rows[joint - 1].joint == "P":
-        return list(chain.transform(frame, axis_frame(chain, joint))[:3, 2])
-    return lever(chain, joint, frame, point)
+        return [gain(chain, joint) * x for x in chain.transform(frame, axis_frame(chain, joint))[:3, 2]]
+    if moves(chain, joint, point) and not moves(chain, joint, frame):
+        return lever(chain, joint, frame, point)  # a derivative: the gain is in it already
+    return [gain(chain, joint) * x for x in lever(chain, joint, frame, point)]
 
 
 def angular_part(chain, joint: int, frame, point, body=None) -> list:
     """ωx, ωy, ωz of column `joint`: the joint axis z (revolute), zero (prismatic)."""
     if chain.rows[joint - 1].joint == "P" or not moves(chain, joint, point if body is None else body):
         return list(ZERO)
-    return list(chain.transform(frame, axis_frame(chain, joint))[:3, 2])
+    return [gain(chain, joint) * x for x in chain.transform(frame, axis_frame(chain, joint))[:3, 2]]
+
+
+def gain(chain, joint: int) -> sympy.Expr:
+    """How fast the row's θ (revolute) or d (prismatic) changes with its variable: 1 for
+    θ2 − π/2, −1 for a slide written d = −d3."""
+    row = chain.rows[joint - 1]
+    return derivative(row.theta if row.joint == "R" else row.d, row.variable)
 
 
 def lever(chain, joint: int, frame, point) -> list:

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import sympy
 
 from ..core.simplify import collect_by_trig
-from .jacobian import ZERO, cross, derivative, rotate
+from .jacobian import ZERO, cross, derivative, gain, rotate
 
 
 @dataclass(frozen=True)
@@ -56,7 +56,7 @@ def propagate(chain) -> list[Step]:
     out = [Step(frames[0], None, omega, velocity)]
     for before, frame in zip(frames, frames[1:]):
         joint = frame if isinstance(frame, int) and frame >= 1 else None
-        rate = rates[joint - 1] if joint else 0
+        rate = rates[joint - 1] * gain(chain, joint) if joint else 0
         prismatic = bool(joint) and chain.rows[joint - 1].joint == "P"
         z = (0, 0, rate)
         if joint and chain.convention == "standard":  # the axis of joint i is z_{i-1}
