@@ -127,8 +127,9 @@ def test_non_square_and_redundant_say_what_is_not_computed():
     iiwa = determinant(load("iiwa7"))
     assert iiwa.value is None and "redundant" in iiwa.note and "not" in iiwa.note
     planar = determinant(load("planar2r"))
-    assert planar.block == "rows vx, vy" and check(planar.value, sympy.Symbol("a_1", real=True)
-                                                     * sympy.Symbol("a_2", real=True) * sympy.sin(load("planar2r").joint_variables[1]))
+    a1, a2 = sympy.symbols("a_1 a_2", real=True)
+    assert planar.block == "rows vx, vy"
+    assert check(planar.value, a1 * a2 * sympy.sin(load("planar2r").joint_variables[1]))
 
 
 @pytest.mark.parametrize("name", ["planar2r", "planar3r", "scara_spong", "stanford", "puma560"])

@@ -18,7 +18,20 @@ from ..printing.printers import LatexPrinter
 from ..velocity import determinant, jacobian, propagate, rate_symbols, singularities
 from ..velocity.jacobian import resolve_frames
 from .document import tex_text
-from .layout import PAGES, Block, Page, Rows, aligned_display, bmatrix, bmatrix_width, display, element_rows, lines_under, matrix_height, paragraph
+from .layout import (
+    PAGES,
+    Block,
+    Page,
+    Rows,
+    aligned_display,
+    bmatrix,
+    bmatrix_width,
+    display,
+    element_rows,
+    lines_under,
+    matrix_height,
+    paragraph,
+)
 from .sections import Section, legend_items
 from .width import math_width
 

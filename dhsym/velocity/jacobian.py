@@ -33,8 +33,7 @@ from __future__ import annotations
 
 import sympy
 
-from ..core.simplify import collect_by_trig, contract
-from ..core.transforms import Step
+from ..core.simplify import block_matrix, collect_by_trig, merge_steps, split_into_blocks
 from ..errors import UserError
 
 ROWS = ("vx", "vy", "vz", "ωx", "ωy", "ωz")
@@ -86,7 +85,7 @@ def linear_part(chain, joint: int, frame, point, body=None) -> list:
     if not moves(chain, joint, point if body is None else body):
         return list(ZERO)
     if chain.rows[joint - 1].joint == "P":
-        return [gain(chain, joint) * x for x in chain.transform(frame, axis_frame(chain, joint))[:3, 2]]
+        return [gain(chain, joint) * x for x in axis(chain, frame, joint)]
     if moves(chain, joint, point) and not moves(chain, joint, frame):
         return lever(chain, joint, frame, point)  # a derivative: the gain is in it already
     return [gain(chain, joint) * x for x in lever(chain, joint, frame, point)]
@@ -96,7 +95,7 @@ def angular_part(chain, joint: int, frame, point, body=None) -> list:
     """ωx, ωy, ωz of column `joint`: the joint axis z (revolute), zero (prismatic)."""
     if chain.rows[joint - 1].joint == "P" or not moves(chain, joint, point if body is None else body):
         return list(ZERO)
-    return [gain(chain, joint) * x for x in chain.transform(frame, axis_frame(chain, joint))[:3, 2]]
+    return [gain(chain, joint) * x for x in axis(chain, frame, joint)]
 
 
 def gain(chain, joint: int) -> sympy.Expr:
@@ -182,10 +181,26 @@ def cross(u, v) -> tuple:
 
 
 def rotate(chain, target, source, vector) -> tuple:
-    """ᵗR_s·v: the rotations from `target` to `source`, then v as a translation, contracted, so
-    that the result is collected block by block as the contraction collects a transform."""
+    """ᵗR_s·v, turned block by block from the inside out like the contraction multiplies a
+    transform, each product collected by that block's cos/sin: a vector, not a 4×4 matrix.
+
+    >>> import dhsym
+    >>> rotate(dhsym.load("puma560"), 0, 3, (0, 0, 1))   # z3 in frame 0
+    (-sin(theta_1), cos(theta_1), 0)
+    """
+    vector = tuple(sympy.sympify(x) for x in vector)
     if target == source:
-        return tuple(vector)
+        return vector
+    variables = frozenset(chain.joint_variables)
     steps = [step for step in chain.steps(target, source) if step.is_rotation]
-    steps += [Step(kind, value) for kind, value in zip(("Tx", "Ty", "Tz"), vector)]
-    return tuple(contract(steps, chain.joint_variables)[:3, 3])
+    for block in reversed(split_into_blocks(merge_steps(steps))):
+        turn = block_matrix(block)
+        atoms = {s for step in block.body if step.kind == "Rz" for s in step.value.free_symbols} & variables
+        vector = tuple(collect_by_trig(sympy.Add(*[turn[r, m] * vector[m] for m in range(3)
+                                                  if turn[r, m] != 0 and vector[m] != 0]), atoms) for r in range(3))
+    return vector
+
+
+def axis(chain, frame, joint: int) -> list:
+    """The axis of `joint` in `frame`: z of its axis frame, turned into `frame`."""
+    return list(rotate(chain, frame, axis_frame(chain, joint), (0, 0, 1)))

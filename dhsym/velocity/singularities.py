@@ -78,7 +78,8 @@ def meaning(chain, factor, point, name: str) -> tuple[str, tuple]:
     revolute = [j for j in range(1, n + 1) if chain.rows[j - 1].joint == "R"]
     generic = poses(chain, sample_values(chain, random.Random(11)))
     if len(variables) == 1:
-        for a, b in sorted(((a, b) for a in revolute for b in revolute if a < b), key=lambda p: abs(p[0] + p[1] - 2 * joint)):
+        pairs = sorted(((a, b) for a in revolute for b in revolute if a < b), key=lambda p: abs(sum(p) - 2 * joint))
+        for a, b in pairs:  # the pair around the joint first: axes 4 and 6 for θ5
             if not _parallel(chain, a, b, generic) and all(_parallel(chain, a, b, pose) for pose in roots):
                 return f"{'wrist: ' if a > n - 3 and n >= 6 else ''}axes {{0}} and {{1}} line up", (a, b)
         for j in (joint, joint + 1):
