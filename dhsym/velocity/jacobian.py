@@ -121,11 +121,21 @@ def lever(chain, joint: int, frame, point) -> list:
     axis = axis_frame(chain, joint)
     offset = chain.transform(frame, point)[:3, 3] - chain.transform(frame, axis)[:3, 3]
     candidates = [[collect_by_trig(x, variables) for x in cross(chain.transform(frame, axis)[:3, 2], offset)]]
-    order = chain.frames.index
-    for pivot in chain.frames[order(axis):order(point) + 1]:
+    for pivot in pivots(chain, axis, frame, point):
         turned = rotate(chain, frame, pivot, lever_in(chain, axis, pivot, point))
         candidates.append([collect_by_trig(x, variables) for x in turned])
     return min(candidates, key=sympy.count_ops)
+
+
+def pivots(chain, axis, frame, point) -> list:
+    """Where to split the lever: the frame nearest to `frame` between the axis and the point and
+    its neighbours, the axis frame and the one after it (the end of a run of parallel axes, as
+    frame 3 for the PUMA's joint 2), and the point: a few, so that long chains stay fast."""
+    order = chain.frames.index
+    first, last = order(axis), order(point)
+    nearest = min(max(order(frame), first), last)
+    wanted = {first, first + 1, nearest - 1, nearest, nearest + 1, last}
+    return [chain.frames[k] for k in sorted(wanted) if first <= k <= last]
 
 
 def lever_in(chain, axis, pivot, point) -> list:
