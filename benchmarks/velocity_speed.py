@@ -4,7 +4,7 @@ The baseline is the geometric Jacobian built from the plain product (columns z_i
 and z_i of the unsimplified frames) followed by `sympy.trigsimp` on each element; both run
 in this process, so the ratio means something on a busy machine. Also timed: the PUMA's
 factored determinant, against SymPy's determinant of the trigsimped Jacobian, factored.
-dhsym's times are the best of three cold runs (fresh chain, empty SymPy cache).
+dhsym's times are the best of five cold runs (fresh chain, empty SymPy cache).
 Run with `make bench`. Targets: 7-axis Jacobian at least 100× faster and under 0.1 s; PUMA
 determinant under 1 s.
 """
@@ -67,7 +67,7 @@ def main() -> int:
     failures = 0
     print(f"{'Jacobian':<12} {'dhsym s':>9} {'trigsimp s':>11} {'ratio':>8} {'ops':>6} {'ops trigsimp':>13}  target")
     for name in ROBOTS:
-        seconds, ours = best_of(3, jacobian, name)
+        seconds, ours = best_of(5, jacobian, name)
         baseline, theirs = timed(lambda chain: plain_jacobian(chain).applyfunc(sympy.trigsimp), name)
         ratio = (baseline or BASELINE_BUDGET) / seconds
         verdict = ""
@@ -79,7 +79,7 @@ def main() -> int:
         their_ops = sympy.count_ops(theirs) if theirs is not None else ""
         print(f"{name:<12} {seconds:9.3f} {base_text} {('>' if not baseline else '') + f'{ratio:.0f}x':>8} "
               f"{sympy.count_ops(ours):6d} {their_ops:>13}  {verdict}")
-    seconds, result = best_of(3, determinant, "puma560")
+    seconds, result = best_of(5, determinant, "puma560")
     baseline, theirs = timed(trigsimped_determinant, "puma560")
     ok = seconds < 1.0
     failures += not ok
