@@ -171,17 +171,23 @@ def joint_label(printer):
 
 
 def text_steps(steps, printer: TextPrinter, width: int = 100) -> str:
-    """Craig's outward iteration: ω and v of each frame, in that frame."""
-    ascii = printer.style == "ascii"
+    """Craig's outward iteration: ¹ω₁ = (…), ¹v₁ = (…) for each frame, in that frame."""
     lines = []
     for step in steps:
-        frame = str(step.frame)
-        for symbol, vector in (("ω" if not ascii else "w", step.omega), ("v", step.velocity)):
-            name = f"{frame}{symbol}{frame}" if ascii else f"{superscript(frame) if step.frame != 'tool' else ''}" \
-                f"{symbol}{subscript(frame) if isinstance(step.frame, int) else '(' + frame + ')'}"
+        for symbol, vector in (("ω", step.omega), ("v", step.velocity)):
             entries = ", ".join(printer.doprint(x) for x in vector)
-            lines.extend(break_text(f"({entries})", width, f"{name} = "))
+            lines.extend(break_text(f"({entries})", width, f"{vector_name(symbol, step.frame, printer.style)} = "))
     return "\n".join(lines)
+
+
+def vector_name(symbol: str, frame, style: str) -> str:
+    """¹ω₁ (unicode), 1w1 (ascii), ω(tool) for a named frame."""
+    if style == "ascii":
+        symbol = {"ω": "w"}.get(symbol, symbol)
+        return f"{frame}{symbol}{frame}" if isinstance(frame, int) else f"{symbol}({frame})"
+    if not isinstance(frame, int):
+        return f"{symbol}({frame})"
+    return f"{superscript(str(frame))}{symbol}{subscript(str(frame))}"
 
 
 def json_jacobian(chain, frame, point, matrix: sympy.Matrix, result) -> dict:

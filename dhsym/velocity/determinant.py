@@ -63,7 +63,7 @@ def determinant(chain, frame=None, point=None) -> Determinant:
                                f"determinant did not factor within {FULL_DETERMINANT_BUDGET:g} s: not computed.")
     if n > 6:
         return Determinant(None, "", [], f"J is 6×{n}: the arm is redundant, and no determinant is computed. "
-                           f"It is singular where all {_minors(n)} of its 6×6 minors vanish (rank < 6); "
+                           f"It is singular where all {sympy.binomial(n, 6)} of its 6×6 minors vanish (rank < 6); "
                            "those configurations are not worked out.")
     moving = [r for r in range(6) if any(x != 0 for x in matrix.row(r))]
     blocks = [moving] if len(moving) == n else [[r for r in moving if r < 3], [r for r in moving if r >= 3]]
@@ -75,8 +75,9 @@ def determinant(chain, frame=None, point=None) -> Determinant:
 
 
 def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
-    """The determinant of the block `rows` of J, from the frame where it is shortest: it is the
-    same in every frame that keeps `moving` the rows that move (a planar arm: z normal to the plane)."""
+    """The determinant of the block `rows` of J, from the frame where it is shortest. Every frame
+    that keeps `moving` the rows that move (a planar arm: z normal to the plane) turns the block
+    by a rotation within those rows, so the determinant is the same up to its sign."""
     n = chain.n
     block = "rows " + ", ".join(ROWS[r] for r in rows)
     what = "the rows that move" if rows == moving else "the velocity of the point" if rows[0] < 3 else "the axes"
@@ -89,10 +90,6 @@ def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
     return min(results, key=lambda result: sympy.count_ops(result.value))
 
 
-def _minors(n: int) -> int:
-    return sympy.binomial(n, 6)
-
-
 def _wrist_partitioned(chain, centre) -> Determinant:
     """det A · det C, each in the frame where it is short: A (linear rows, joints 1–3) in the
     axis frame of joint 3 (Craig's ³J₆), C (angular rows, joints 4–6) in that of joint 5."""
@@ -101,7 +98,7 @@ def _wrist_partitioned(chain, centre) -> Determinant:
     wrist = [angular_part(chain, j, wrist_frame, centre, body) for j in (4, 5, 6)]
     arm_det = factored(sympy.Matrix(arm).T.det(method="berkowitz"))
     result = _result(chain, arm_det * factored(sympy.Matrix(wrist).T.det(method="berkowitz")), "J", "")
-    note = (f"The last three axes meet at the origin of frame {centre} (the wrist centre), so det J = det A · det C: "
+    note = (f"The last three axes meet at the origin of frame {centre} (the wrist centre), so det J = (det A)(det C): "
             "A the linear velocities of the wrist centre from joints 1–3, C the wrist axes 4–6.")
     return Determinant(result.value, "J", result.factors, note)
 
