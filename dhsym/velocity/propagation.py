@@ -26,6 +26,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import sympy
+from sympy.simplify.fu import TR10i
 
 from ..core.simplify import collect_by_trig
 from .jacobian import ZERO, cross, derivative, gain, rotate
@@ -88,10 +89,28 @@ def _add(*vectors) -> tuple:
 
 
 def _tidy(vector, rates, variables) -> tuple:
-    """Each entry as Σ (joint rate)·(its coefficient collected by cos/sin)."""
+    """Each entry as Σ (joint rate)·(its coefficient), each coefficient collected by cos/sin and
+    with the sum formulas applied where they shorten it, as Craig does by hand at each step
+    (c2 s3 + s2 c3 = s23)."""
     joints = frozenset(v for v in variables if v not in rates)
     out = []
     for x in vector:
-        parts = [rate * collect_by_trig(derivative(x, rate), joints) for rate in rates if x.has(rate)]
+        parts = [rate * _sum_formulas(collect_by_trig(derivative(x, rate), joints), joints)
+                 for rate in rates if x.has(rate)]
         out.append(sympy.Add(*parts) if parts else sympy.Integer(0))
     return tuple(collect_by_trig(sympy.Add(*sympy.Add.make_args(x)), joints) for x in out)
+
+
+def _sum_formulas(expr, joints):
+    """The shortest of expr and expr with sin a cos b + cos a sin b = sin(a + b) (and the other
+    three) applied, as nested or after multiplying out: l1 s2 c3 + (l2 + l1 c2) s3 = l1 s23 + l2 s3.
+
+    >>> t2, t3, l1, l2 = sympy.symbols("theta_2 theta_3 l_1 l_2", real=True)
+    >>> c, s = sympy.cos, sympy.sin
+    >>> _sum_formulas(l1*s(t2)*c(t3) + (l2 + l1*c(t2))*s(t3), {t2, t3})
+    l_1*sin(theta_2 + theta_3) + l_2*sin(theta_3)
+    """
+    if not expr.has(sympy.sin, sympy.cos):
+        return expr
+    candidates = [expr, TR10i(expr), collect_by_trig(TR10i(sympy.expand(expr)), joints)]
+    return min(candidates, key=sympy.count_ops)
