@@ -16,10 +16,10 @@ import warnings
 from ..core.budget import CommandTooSlow, SimplificationTimeout, time_budget
 from ..errors import UserError
 from ..io import library
-from . import kinematics, latex, listing, plot
+from . import jacobian, kinematics, latex, listing, plot
 from .options import COMMAND_BUDGET_FACTOR, Parser
 
-COMMAND_MODULES = (listing, kinematics, latex, plot)
+COMMAND_MODULES = (listing, kinematics, latex, plot, jacobian)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70

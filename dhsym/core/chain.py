@@ -180,6 +180,20 @@ class Chain:
             self._cache[key] = self._compute(*key)
         return self._cache[key].copy()
 
+    def steps(self, i: Frame, j: Frame) -> list[Step]:
+        """The elementary steps from frame i to frame j (inverted and reversed for i after j)."""
+        start, end = self._position(i), self._position(j)
+        if start > end:
+            return [step.inverse() for step in reversed(self._steps()[end:start])]
+        return self._steps()[start:end]
+
+    def jacobian(self, frame: Frame | None = None, point: Frame | None = None) -> sympy.Matrix:
+        """The geometric Jacobian (rows vx vy vz ωx ωy ωz) of the origin of `point` (default:
+        the last frame), expressed in `frame` (default: the first); see dhsym.velocity."""
+        from ..velocity.jacobian import jacobian  # velocity is built on core, not the other way
+
+        return jacobian(self, frame=frame, point=point)
+
     def _compute(self, start: int, end: int, raw: bool) -> sympy.Matrix:
         if start > end:
             if raw:

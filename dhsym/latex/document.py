@@ -22,21 +22,24 @@ from .layout import PAGES, Block, Page, flat
 from .packing import pack
 from .prose import tex_prose, tex_text
 from .sections import Section, sections
+from .velocity import velocity_sections
 
 DOCUMENTS = ("slides", "article", "snippet")
 
 
 # ---------------------------------------------------------------- the three documents
 
-def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None) -> str:
+def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None, jacobian: bool = False) -> str:
     """The LaTeX text of a document of `kind` for `chain`, about the transform from frame
-    `start` (default: the first) to `end` (default: the last)."""
+    `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics."""
     start = _check_frame(chain, chain.first_frame if start is None else start, "--from")
     end = _check_frame(chain, chain.last_frame if end is None else end, "--to")
     if start == end:
         raise UserError(f"--from and --to name the same frame ({start}); choose two different frames")
     page = PAGES[kind]
     content = sections(chain, start, end, steps, page, LatexPrinter(chain.joint_variables))
+    if jacobian:
+        content += velocity_sections(chain, page, steps=steps)
     return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
 
 
