@@ -23,6 +23,7 @@ is used and `block` says which. Otherwise `value` is None and `note` says why.
 """
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass
 
 import sympy
@@ -87,7 +88,25 @@ def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
         candidate = matrix if other == frame else jacobian(chain, other, point)
         if [r for r in range(6) if any(x != 0 for x in candidate.row(r))] == moving:
             results.append(_result(chain, candidate.extract(rows, list(range(n))).det(method="berkowitz"), block, note))
-    return min(results, key=lambda result: sympy.count_ops(result.value))
+    shortest = min(results, key=lambda result: sympy.count_ops(result.value))
+    if _same_sign(shortest.value, results[0].value):  # results[0] is the block in the frame asked for
+        return shortest
+    return _result(chain, -shortest.value, block, note)
+
+
+def _same_sign(a, b) -> bool:
+    """Whether two determinants that differ at most in sign agree, judged where they are not zero.
+
+    A turn of the moving rows about an axis in their plane by π (a twist of π) is a reflection
+    within them, so the block's determinant changes sign; the sign is the same everywhere."""
+    variables = sorted((a - b).free_symbols | (a + b).free_symbols, key=str)
+    rng = random.Random(0)
+    for _ in range(20):
+        point = {v: sympy.Float(rng.uniform(-3, 3)) for v in variables}
+        x, y = float(a.xreplace(point)), float(b.xreplace(point))
+        if abs(x) > 1e-6 and abs(y) > 1e-6:
+            return (x > 0) == (y > 0)
+    return True  # zero everywhere we looked: the sign cannot matter
 
 
 def _wrist_partitioned(chain, centre) -> Determinant:
