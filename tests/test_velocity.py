@@ -7,6 +7,7 @@ import pytest
 import sympy
 import textbook
 
+import dhsym
 from dhsym.checking.verify import check, numeric_error
 from dhsym.io.library import builtin_names, load
 from dhsym.velocity import ROWS, determinant, jacobian, propagate, propagated_jacobian, singularities
@@ -139,3 +140,16 @@ def test_velocity_propagation_ends_in_the_same_jacobian(name):
     assert steps[-1].frame == chain.last_frame
     verdict = check(propagated_jacobian(chain, steps), jacobian(chain, chain.last_frame))
     assert verdict.numeric and (verdict.algebraic or chain.n > 4)
+
+
+def test_the_ur5_determinant_factors_without_a_wrist_centre():
+    """UR5: joints 2, 3, 4 parallel and no wrist centre; the textbook's a2 a3 s3 s5 (a2 c2 + a3 c23 + d5 s234)."""
+    ur5 = dhsym.load("ur5")
+    t = ur5.joint_variables
+    a2, a3, d5 = (dhsym.real_symbol(name) for name in ("a_2", "a_3", "d_5"))
+    expected = a2 * a3 * sympy.sin(t[2]) * sympy.sin(t[4]) * (
+        a2 * sympy.cos(t[1]) + a3 * sympy.cos(t[1] + t[2]) + d5 * sympy.sin(t[1] + t[2] + t[3]))
+    result = determinant(ur5)
+    assert numeric_error(result.value, expected) < 1e-9
+    assert numeric_error(result.value, ur5.jacobian().det(method="berkowitz")) < 1e-9
+    assert len(result.factors) == 3
