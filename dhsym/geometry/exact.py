@@ -67,9 +67,17 @@ def tidy_vector(v: sympy.Matrix) -> sympy.Matrix:
 
 
 def unit(v: sympy.Matrix) -> sympy.Matrix:
-    """v scaled to length 1 (v must be numeric and non-zero)."""
-    length = sympy.sqrt(sum(c ** 2 for c in v))
-    return tidy_vector(v / length)
+    """v scaled to length 1 (v must be non-zero); symbols count as positive lengths, as in a
+    textbook figure.
+
+    >>> l = sympy.Symbol("l", real=True)
+    >>> unit(vector(0, -l, 0)).T
+    Matrix([[0, -1, 0]])
+    """
+    positive = {s: sympy.Dummy(s.name, positive=True) for s in v.free_symbols}
+    w = v.xreplace(positive)
+    length = sympy.sqrt(sum(c ** 2 for c in w))
+    return tidy_vector(w / length).xreplace({d: s for s, d in positive.items()})
 
 
 def cross(u: sympy.Matrix, v: sympy.Matrix) -> sympy.Matrix:

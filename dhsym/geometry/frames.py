@@ -33,7 +33,6 @@ import sympy
 from ..core.chain import Chain, DHRow
 from ..core.transforms import CONVENTIONS
 from ..errors import UserError
-from ..io.expr import real_symbol
 from .exact import cross, dot, is_zero, is_zero_vector, tidy, tidy_vector, unit
 from .lines import JointAxis, distance_between, normal_feet, relation
 from .rigid import angle, frame_pose, pose_steps, relative
@@ -86,7 +85,7 @@ class Assignment:
 
 
 def default_variables(count: int) -> list[sympy.Symbol]:
-    return [real_symbol(f"q_{i}") for i in range(1, count + 1)]
+    return [sympy.Symbol(f"q_{i}", real=True) for i in range(1, count + 1)]
 
 
 def assign_frames(axes: list[JointAxis], tool_pose: sympy.Matrix, convention: str,

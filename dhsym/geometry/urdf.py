@@ -156,10 +156,10 @@ class _Reader:
         roots = [name for name in self.links if name not in self.joints]
         if not roots:
             raise UserError("every link has a parent: the joints form a closed loop", self.where(self.root))
-        base = base or self.only(roots, "root link", "--base")
+        base = base or self.only(roots, "root links", "--base")
         if base not in self.links:
             raise UserError(f"no link {base!r}; the links are {', '.join(self.links)}")
-        tip = tip or self.only(self.leaves_below(base), "leaf link below " + repr(base), "--tip")
+        tip = tip or self.only(self.leaves_below(base), f"leaf links below {base!r}", "--tip")
         if tip not in self.links:
             raise UserError(f"no link {tip!r}; the links are {', '.join(self.links)}")
         path = self.path(base, tip)
@@ -172,7 +172,7 @@ class _Reader:
     def only(self, choices: list, what: str, option: str) -> str:
         if len(choices) == 1:
             return choices[0]
-        raise UserError(f"the URDF has {len(choices)} {what}s ({', '.join(choices)}); choose one with {option}")
+        raise UserError(f"the URDF has {len(choices)} {what} ({', '.join(choices)}); choose one with {option}")
 
     def below(self, link: str) -> list:
         found, waiting = [], [link]
@@ -251,7 +251,7 @@ class _Reader:
         value, moved = snap_angle(text)
         if moved:
             self.snapped_angles.setdefault(text, value)
-            self.first_snap = self.first_snap or element
+            self.first_snap = element if self.first_snap is None else self.first_snap
         return value
 
     def length(self, text: str) -> sympy.Expr:
@@ -270,7 +270,7 @@ class _Reader:
                             self.where(element if element is not None else joint)) from None
         if moved:
             self.snapped_directions.append(" ".join(element.get("xyz").split()))
-            self.first_snap = self.first_snap or element
+            self.first_snap = element if self.first_snap is None else self.first_snap
         return direction
 
     def report_snaps(self) -> None:
