@@ -25,6 +25,7 @@ test: install tex
 
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py
+	$(BIN)/python benchmarks/geometry_speed.py
 
 notebooks: install
 	bash scripts/export-notebooks.sh
