@@ -42,22 +42,25 @@ def variant(old: str, new: str) -> object:
     return load_robot_text(INLINE6.replace(old, new), "homework.yaml").chain
 
 
-def test_a_wrong_twist_sign_names_the_joint_whose_axis_flips():
+def test_a_wrong_twist_sign_is_named_with_its_row():
     verdict = compare(variant(ROW_4, ROW_4.replace("alpha: pi/2", "alpha: -pi/2")), load("inline6"))
+    assert (verdict.same, verdict.kind, verdict.joint) == (False, "offset", 4)
+    assert "the sign of α (and of a) in row 4 is flipped" in verdict.message
+
+
+def test_a_wrong_twist_names_the_joint_whose_axis_moves():
+    verdict = compare(variant(ROW_4, ROW_4.replace("alpha: pi/2", "alpha: 0")), load("inline6"))
     assert (verdict.same, verdict.kind, verdict.joint) == (False, "direction", 5)
-    assert "reversed" in verdict.message and "row 4" in verdict.message
+    assert "points along (0, 0, -1) at the zero pose; the reference's points along (0, 1, 0)" in verdict.message
+    assert "check the twist α in row 4" in verdict.message
 
 
-def test_a_shifted_zero_is_named_with_the_fix():
-    verdict = compare(variant("theta: theta_4}", "theta: theta_4 + pi/2}"), load("inline6"))
-    assert (verdict.kind, verdict.joint) == ("offset", 4)
-    assert "write θ = theta_4 in row 4 instead of theta_4 + π/2" in verdict.message
-
-
-def test_a_moved_axis_names_the_joint_and_the_shift():
-    verdict = compare(variant("a: a_2, d: 0,", "a: a_2, d: 0.05,"), load("inline6"))
-    assert (verdict.kind, verdict.joint) == ("position", 4)
-    assert "(0, -0.05, 0)" in verdict.message
+def test_the_lecture_s_two_wrist_tables_differ_by_two_half_turn_zeros():
+    row_5 = "{joint: R, alpha: -pi/2, a: 0,   d: 0,   theta: theta_5}"
+    example2_wrist = INLINE6.replace(ROW_4, ROW_4.replace("alpha: pi/2", "alpha: -pi/2")) \
+        .replace(row_5, row_5.replace("alpha: -pi/2", "alpha: pi/2"))
+    verdict = compare(load_robot_text(example2_wrist, "example2_wrist.yaml").chain, load("inline6"))
+    assert verdict.kind == "offset" and "the zeros of joints 4 and 6 differ by π and π" in verdict.message
 
 
 @pytest.mark.parametrize("old, new, kind", [("tool: []", "tool: [{Tz: 0.1}]", "tool"),
@@ -72,7 +75,7 @@ def test_check_exits_1_with_one_line_for_a_student(tmp_path, capsys):
     homework.write_text(INLINE6.replace(ROW_4, ROW_4.replace("alpha: pi/2", "alpha: -pi/2")), encoding="utf-8")
     assert cli.main(["check", str(homework), "--against", "inline6"]) == 1
     out, err = capsys.readouterr()
-    assert err == "" and out.count("\n") == 1 and "joint 5's axis is reversed" in out
+    assert err == "" and out.count("\n") == 1 and "flipped" in out
 
 
 def test_check_exits_2_for_an_unreadable_reference(capsys):

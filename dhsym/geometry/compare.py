@@ -23,7 +23,8 @@ from dataclasses import dataclass
 import sympy
 
 from ..core.chain import Chain
-from .screws import chain_axes
+from ..core.transforms import product
+from .screws import chain_axes, rate
 
 TOLERANCE = 1e-9
 TRIALS = 8
@@ -63,10 +64,10 @@ def compare(candidate: Chain, reference: Chain, seed: int = 0) -> Comparison:
     for kind, side in (("tool", "right"), ("base", "left")):
         if _constant_difference(mine, theirs, configurations, side):
             return Comparison(False, kind, None, f"the joints agree; only the {kind} frame differs" + note)
-    for k in range(candidate.n):
-        shift = _offset(mine, theirs, configurations, k, candidate.rows[k].joint)
-        if shift is not None:
-            return Comparison(False, "offset", k + 1, _offset_message(candidate, k, shift) + note)
+    shifts = _zero_shifts(candidate, reference, values, mine, theirs, configurations)
+    if shifts:
+        first = min(shifts)
+        return Comparison(False, "offset", first + 1, _offset_message(candidate, shifts) + note)
     return _first_axis_difference(candidate, reference, values, note)
 
 
@@ -151,13 +152,118 @@ def _least_squares(b: list, c: list, t: list) -> tuple[float, float]:
     return (bt * cc - ct * bc) / det, (bb * ct - bc * bt) / det
 
 
-def _offset_message(candidate: Chain, k: int, delta: float) -> str:
-    row = candidate.rows[k]
-    moving = "θ" if row.joint == "R" else "d"
-    exact = _exact_shift(delta, row.joint)
-    written = row.theta if row.joint == "R" else row.d
-    return (f"the joint axes agree, but joint {k + 1}'s zero differs by {_show_exact(exact)}: write "
-            f"{moving} = {_show_exact(written - exact)} in row {k + 1} instead of {_show_exact(written)}")
+def _offset_message(candidate: Chain, shifts: dict) -> str:
+    joints = sorted(shifts)
+    exact = {k: _exact_shift(shifts[k], candidate.rows[k].joint) for k in joints}
+    fixes = []
+    for k in joints:
+        row = candidate.rows[k]
+        moving, written = ("θ", row.theta) if row.joint == "R" else ("d", row.d)
+        fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {k + 1} instead of {_show_exact(written)}")
+    if len(joints) == 1:
+        return f"the same axes, but joint {joints[0] + 1}'s zero differs by {_show_exact(exact[joints[0]])}: write " \
+            + fixes[0]
+    numbers = " and ".join(str(k + 1) for k in joints)
+    if len(joints) == 2 and joints[1] == joints[0] + 1 and all(abs(exact[k]) == sympy.pi for k in joints):
+        # Rz(π) Tx(a) Rx(α) Rz(π) = Tx(−a) Rx(−α): two half-turn zeros are one flipped twist
+        row = joints[0] + (1 if candidate.convention == "standard" else 2)
+        return (f"the same axes, but the zeros of joints {numbers} both differ by π: the sign of α (and of a) in "
+                f"row {row} is flipped; flip it back, or write " + " and ".join(fixes))
+    amounts = " and ".join(_show_exact(exact[k]) for k in joints)
+    return f"the same axes, but the zeros of joints {numbers} differ by {amounts}: write " + "; ".join(fixes)
+
+
+def _zero_shifts(candidate: Chain, reference: Chain, values: dict, mine, theirs, configurations) -> dict | None:
+    """{joint index: δ} with mine(q) = theirs(q + δ) everywhere, found axis by axis: where the axis of
+    joint j first differs, a turn (or slide) of an earlier joint that carries the reference's axis
+    onto the candidate's is a shifted zero. None when no such shifts explain the difference."""
+    n = candidate.n
+    wanted = _axes_at(candidate, values)([0.0] * n)
+    placed = _axes_at(reference, values)
+    shift = [0.0] * n
+    for j in range(1, n):
+        if _same(placed(shift)[j], wanted[j]):
+            continue
+        for k in range(j - 1, -1, -1):
+            delta = _carry(placed, shift, k, j, wanted[j], reference.rows[k].joint)
+            if delta is not None and all(_same(a, b) for a, b in zip(placed(_moved(shift, k, delta))[:j + 1],
+                                                                    wanted[:j + 1])):
+                shift = _moved(shift, k, delta)
+                break
+        else:
+            return None
+    def shifted(q):
+        return theirs([a + b for a, b in zip(q, shift)])
+    if not all(_close(mine(q), shifted(q)) for q in configurations):
+        for k in range(n - 1, -1, -1):  # a joint whose shift shows only in the tool (the last one, as a rule)
+            delta = _offset(mine, shifted, configurations, k, candidate.rows[k].joint)
+            if delta is not None:
+                shift = _moved(shift, k, delta)
+                break
+        else:
+            return None
+    found = {k: _wrapped(d, candidate.rows[k].joint) for k, d in enumerate(shift) if abs(d) > 1e-9}
+    return {k: d for k, d in found.items() if abs(d) > 1e-9} or None
+
+
+def _moved(shift: list, k: int, delta: float) -> list:
+    return shift[:k] + [shift[k] + delta] + shift[k + 1:]
+
+
+def _wrapped(delta: float, joint: str) -> float:
+    """An angle in (−π, π]; a length as it is."""
+    if joint != "R":
+        return delta
+    wrapped = math.remainder(delta, 2 * math.pi)
+    return math.pi if abs(wrapped + math.pi) < 1e-9 else wrapped
+
+
+def _carry(placed, shift, k: int, j: int, target, joint: str):
+    """The δ of joint k that puts the reference's axis j (point and direction) onto `target`."""
+    def axis_j(delta):
+        point, direction = placed(_moved(shift, k, delta))[j]
+        return list(point) + list(direction)
+    goal = list(target[0]) + list(target[1])
+    if joint == "R":  # a turn about axis k: A + B cos δ + C sin δ
+        zero, half, quarter = axis_j(0.0), axis_j(math.pi), axis_j(math.pi / 2)
+        middle = [(a + b) / 2 for a, b in zip(zero, half)]
+        c, s = _least_squares([a - m for a, m in zip(zero, middle)], [q - m for q, m in zip(quarter, middle)],
+                              [g - m for g, m in zip(goal, middle)])
+        return math.atan2(s, c) if abs(c * c + s * s - 1) < 1e-6 else None
+    slope = [b - a for a, b in zip(axis_j(0.0), axis_j(1.0))]
+    norm = sum(x * x for x in slope)
+    return sum(x * (g - a) for x, g, a in zip(slope, goal, axis_j(0.0))) / norm if norm else None
+
+
+def _same(axis, other) -> bool:
+    """Two axes (point, direction) are the same directed line."""
+    (p, u), (p_ref, u_ref) = axis, other
+    if _distance(u, u_ref) > 1e-7:
+        return False
+    along = [a - b for a, b in zip(p, p_ref)]
+    dot = sum(a * b for a, b in zip(along, u_ref))
+    return math.sqrt(sum((a - dot * b) ** 2 for a, b in zip(along, u_ref))) <= 1e-7
+
+
+def _axes_at(chain: Chain, values: dict):
+    """q ↦ every joint axis (point, direction) in the base frame at configuration q."""
+    fixed = {s: values[s.name] for s in chain.symbols if s.name in values}
+    pose, poses = product(chain.base), []
+    for row in chain.rows:
+        link = product(row.steps(chain.convention))
+        if chain.convention == "standard":
+            poses.append((pose, rate(row)))
+            pose = pose * link
+        else:
+            pose = pose * link
+            poses.append((pose, rate(row)))
+    flat = [entry.xreplace(fixed) for p, sign in poses for entry in list(p[:3, 3]) + list(sign * p[:3, 2])]
+    function = sympy.lambdify(chain.joint_variables, flat, modules="math")
+
+    def axes(q):
+        numbers = function(*q)
+        return [(numbers[6 * i:6 * i + 3], numbers[6 * i + 3:6 * i + 6]) for i in range(chain.n)]
+    return axes
 
 
 def _exact_shift(delta: float, joint: str) -> sympy.Expr:
