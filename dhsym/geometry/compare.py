@@ -326,7 +326,7 @@ def _show(v) -> str:
 def _names_note(candidate: Chain, reference: Chain) -> str:
     mine = {s.name for s in candidate.symbols - set(candidate.joint_variables)}
     theirs = {s.name for s in reference.symbols - set(reference.joint_variables)}
-    if mine == theirs:
+    if mine == theirs or not mine or not theirs:  # a numeric table takes the other's sample values
         return ""
     only_mine, only_theirs = sorted(mine - theirs), sorted(theirs - mine)
     return (f" (constants are matched by name: {', '.join(only_mine) or 'none'} only in yours, "
