@@ -61,7 +61,8 @@ EDGE_CASES = {
              ("revolute", "0 0.3 0.1", "0 0.5235987755982988 0", "0 1 0")],
     "prismatic": [("revolute", "0 0 0.3", "0 0 0", "0 0 1"), ("prismatic", "0.2 0 0", "0 0 0", "1 0 0"),
                   ("prismatic", "0 0 0.1", f"0 {R90} 0", "0 0 -1")],
-    "fixed_in_the_middle": [("revolute", "0 0 0.3", "0 0 0", "0 0 1"), ("fixed", "0.1 0 0", "0 0 0.7853981633974483", None),
+    "fixed_in_the_middle": [("revolute", "0 0 0.3", "0 0 0", "0 0 1"),
+                            ("fixed", "0.1 0 0", "0 0 0.7853981633974483", None),
                             ("revolute", "0.2 0 0", f"{R90} 0 0", "0 0 1"), ("fixed", "0 0 0.1", "0 0 0", None)],
     "rounded_angles": [("revolute", "0 0 0.1", "0 0 0", "0 0 1"), ("revolute", "0 0 0", "1.570796325 0 0", "0 0 1"),
                        ("revolute", "0.3 0 0", "-1.5708 0 0.5236", "0 0.5 0.8660254"),
@@ -94,7 +95,8 @@ def test_rounded_angles_become_exact_with_a_warning():
 
 
 def test_lengths_are_the_decimals_written_and_noise_is_zero():
-    text = serial_urdf([("revolute", "0 1.2e-17 0.089159", "0 0 0", "0 0 1"), ("revolute", "0.425 0 0", "0 0 0", "1 0 0")])
+    text = serial_urdf([("revolute", "0 1.2e-17 0.089159", "0 0 0", "0 0 1"),
+                        ("revolute", "0.425 0 0", "0 0 0", "1 0 0")])
     urdf = read_urdf_text(text.encode(), "noise.urdf")
     chain = assign_frames(urdf.axes, urdf.tool, "standard").chain()
     assert [(row.d, row.a) for row in chain.rows] == [(sympy.Rational("0.089159"), 0), (sympy.Rational("0.425"), 0)]

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import sympy
 
-from ..errors import UserError
+from ..geometry.convert import to_convention
 from ..geometry.frames import assign_frames
 from ..io.output import write_atomic
 from ..io.robotfile import load_robot_file
@@ -31,8 +31,8 @@ def add_parsers(commands) -> None:
     sub.add_argument("file", metavar="FILE", help="a .urdf file, or a robot .yaml file written with axes:")
     sub.add_argument("--base", metavar="LINK", help="the base link (default: the URDF's root link)")
     sub.add_argument("--tip", metavar="LINK", help="the tip link (default: the only leaf below the base)")
-    sub.add_argument("--convention", choices=("standard", "modified"), default="standard",
-                     help="the DH convention of the table (default standard)")
+    sub.add_argument("--convention", choices=("standard", "modified"),
+                     help="the DH convention of the table (default: standard for a URDF, the file's own for axes:)")
     sub.add_argument("--variables", choices=("q", "urdf"), default="q",
                      help="joint variables q_1..q_n (default), or the URDF joint names made into symbols")
     sub.add_argument("-o", "--output", metavar="OUT.yaml", help="write to OUT.yaml (atomically) instead of "
@@ -44,14 +44,14 @@ def run(robot, args) -> str | None:
     if Path(args.file).suffix.lower() in (".yaml", ".yml"):
         loaded = load_robot_file(args.file)
         _warn(loaded.warnings)
-        chain, notes = _in_convention(loaded.chain, args.convention), None
+        chain, notes = to_convention(loaded.chain, args.convention or loaded.chain.convention), None
     else:
         from ..geometry.urdf import read_urdf  # lxml only when a URDF is read
 
         urdf = read_urdf(args.file, args.base, args.tip)
         _warn(urdf.warnings)
         variables = joint_symbols(urdf.joint_names, args.variables)
-        chain = assign_frames(urdf.axes, urdf.tool, args.convention, variables).chain(
+        chain = assign_frames(urdf.axes, urdf.tool, args.convention or "standard", variables).chain(
             name=urdf.name, source=f"{Path(urdf.path).name}, links {urdf.base} → {urdf.tip}")
         notes = "Derived by dhsym import; joint variables: " + ", ".join(
             f"{v} = {name}" for v, name in zip(variables, urdf.joint_names))
@@ -75,13 +75,6 @@ def joint_symbols(names: list[str], style: str) -> list[sympy.Symbol]:
             made = f"q_{number}"
         symbols.append(sympy.Symbol(made, real=True))
     return symbols
-
-
-def _in_convention(chain, convention: str):
-    if chain.convention != convention:
-        raise UserError(f"this robot file derives a {chain.convention} table; set convention: {convention} in it, "
-                        f"or use dhsym convert")
-    return chain
 
 
 def _warn(warnings: list) -> None:

@@ -33,7 +33,7 @@ import sympy
 from ..core.chain import Chain, DHRow
 from ..core.transforms import CONVENTIONS
 from ..errors import UserError
-from .exact import cross, dot, is_zero, is_zero_vector, tidy, tidy_vector, unit
+from .exact import cross, dot, is_zero_vector, tidy, tidy_vector, unit
 from .lines import JointAxis, distance_between, normal_feet, relation
 from .rigid import angle, frame_pose, pose_steps, relative
 

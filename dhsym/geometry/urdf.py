@@ -276,7 +276,8 @@ class _Reader:
     def report_snaps(self) -> None:
         where = self.where(self.first_snap) if self.first_snap is not None else Location(self.filename)
         if self.snapped_angles:
-            shown = ", ".join(f"{text} → {str(value).replace('pi', 'π')}" for text, value in self.snapped_angles.items())
+            shown = ", ".join(f"{text} → {str(value).replace('pi', 'π')}"
+                              for text, value in self.snapped_angles.items())
             self.warnings.insert(0, f"{where}: angles snapped to exact multiples of π/12 (within {ANGLE_TOLERANCE:g} "
                                  f"rad): {shown}")
         if self.snapped_directions:
