@@ -12,6 +12,7 @@ Matrix([[0, 3/5, 4/5]])
 """
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 
 import sympy
@@ -20,6 +21,7 @@ ANGLE_TOLERANCE = 1e-5  # radians: 1.5708 is 3.7e-6 from π/2
 DIRECTION_TOLERANCE = 1e-5  # per component of a unit vector
 LENGTH_NOISE = 1e-9  # metres: a written -1.2e-17 is rounding noise, not a length
 ANGLE_STEP = sympy.pi / 12
+_DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)(?:[eE](?P<exponent>[+-]?\d{1,4}))?")
 # The cosines of the multiples of π/12: what a snapped unit-vector component may be.
 _NICE_COMPONENTS = sorted({sympy.nsimplify(sympy.cos(k * ANGLE_STEP)) for k in range(7)},
                           key=lambda c: float(c))
@@ -31,7 +33,16 @@ def vector(*components) -> sympy.Matrix:
 
 
 def exact_number(text: str) -> sympy.Rational:
-    """The decimal as written, exactly: '0.1' is 1/10 (never the float's 0.1000000000000000055…)."""
+    """The decimal as written, exactly: '0.1' is 1/10 (never the float's 0.1000000000000000055…).
+    Raises ValueError for anything but a plain decimal of at most 40 characters and exponent 30.
+
+    >>> exact_number("1e999999")
+    Traceback (most recent call last):
+    ValueError: not a number of a robot's size: '1e999999'
+    """
+    match = _DECIMAL.fullmatch(text.strip())
+    if not match or len(text.strip()) > 40 or abs(int(match.group("exponent") or 0)) > 30:
+        raise ValueError(f"not a number of a robot's size: {text.strip()!r}")
     return sympy.Rational(Fraction(text.strip()))
 
 

@@ -76,9 +76,11 @@ def read_urdf_text(data: bytes, filename: str = "<urdf>", base: str | None = Non
 
 
 def _parse_xml(data: bytes, filename: str):
-    if filename.endswith(".xacro") or b"xmlns:xacro" in data or b"<xacro:" in data:
+    xacro = re.search(rb"xmlns:xacro|<xacro:", data)
+    if filename.endswith(".xacro") or xacro:
+        line = data[:xacro.start()].count(b"\n") + 1 if xacro else 1
         raise UserError("xacro files are not supported; expand it first (xacro FILE.xacro > FILE.urdf)",
-                        Location(filename, 1, 1))
+                        Location(filename, line))
     declaration = re.search(rb"<!(DOCTYPE|ENTITY)", data, re.IGNORECASE)
     if declaration:
         line = data[:declaration.start()].count(b"\n") + 1
@@ -229,8 +231,8 @@ class _Reader:
         parts = text.split()
         try:
             values = [exact_number(part) for part in parts]
-        except (ValueError, ZeroDivisionError):
-            raise UserError(f"{key}={text!r} must be {count} numbers", self.where(element)) from None
+        except ValueError as error:
+            raise UserError(f"{key}={text!r}: {error}", self.where(element)) from None
         if len(values) != count:
             raise UserError(f"{key}={text!r} must be {count} numbers, not {len(values)}", self.where(element))
         return values
