@@ -108,3 +108,14 @@ def test_screws_prints_every_joint_and_the_home_pose(capsys):
     status, out, _ = run(["screws", "scara_spong"], capsys)
     assert status == 0
     assert "S3 (d3) = (0, 0, 0; 0, 0, −1)" in out and "M =" in out
+
+
+def test_screws_as_json_and_latex(capsys):
+    import json
+
+    status, out, _ = run(["screws", "planar2r", "--format", "json"], capsys)
+    data = json.loads(out)
+    assert status == 0 and data["screws"]["theta_2"] == ["0", "0", "1", "0", "-a_1", "0"]
+    assert data["home"][0] == ["1", "0", "0", "a_1 + a_2"]
+    status, out, _ = run(["screws", "planar2r", "--format", "latex"], capsys)
+    assert status == 0 and out.startswith("\\[\nS = \\begin{bmatrix}") and "M = \\begin{bmatrix}" in out
