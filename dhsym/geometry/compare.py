@@ -24,7 +24,7 @@ import sympy
 
 from ..core.chain import Chain
 from ..core.transforms import product
-from .screws import chain_axes, rate
+from .screws import rate
 
 TOLERANCE = 1e-9
 TRIALS = 8
@@ -281,7 +281,8 @@ def _show_exact(value) -> str:
 
 def _first_axis_difference(candidate: Chain, reference: Chain, values: dict, note: str) -> Comparison:
     """The first joint whose axis (at the zero configuration) is not where the reference has it."""
-    mine, theirs = _numeric_axes(candidate, values), _numeric_axes(reference, values)
+    zero = [0.0] * candidate.n
+    mine, theirs = _axes_at(candidate, values)(zero), _axes_at(reference, values)(zero)
     for number, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), 1):
         if _distance(u, u_ref) > 1e-7:
             reversed_axis = _distance(u, [-x for x in u_ref]) <= 1e-7
@@ -306,13 +307,6 @@ def _where_to_look(chain: Chain, number: int, what: str) -> str:
     if row == 0:
         return "check the base steps"
     return f"check {what} in row {row}" + (" and the rows before it" if row > 1 else "")
-
-
-def _numeric_axes(chain: Chain, values: dict) -> list:
-    axes, _ = chain_axes(chain)
-    fixed = {s: values[s.name] for s in chain.symbols if s.name in values}
-    return [([float(c.xreplace(fixed)) for c in a.point], [float(c.xreplace(fixed)) for c in a.direction])
-            for a in axes]
 
 
 def _distance(a, b) -> float:
