@@ -13,8 +13,10 @@ from pathlib import Path
 
 import sympy
 
+from ..errors import UserError
 from ..geometry.convert import to_convention
 from ..geometry.frames import assign_frames
+from ..io.expr import parse_expression
 from ..io.output import write_atomic
 from ..io.robotfile import load_robot_file
 from ..io.robotwriter import robot_yaml
@@ -63,18 +65,27 @@ def run(robot, args) -> str | None:
 
 
 def joint_symbols(names: list[str], style: str) -> list[sympy.Symbol]:
-    """q_1..q_n, or the URDF names made into symbols ('joint-1' → joint_1); q_i where that fails.
+    """q_1..q_n, or the URDF names made into symbols ('joint-1' → joint_1); q_i where that fails
+    (a name that is not a name in a robot file, such as pi or sin, or one taken already).
 
-    >>> joint_symbols(["shoulder pan", "2nd"], "urdf")
-    [shoulder_pan, q_2]
+    >>> joint_symbols(["shoulder pan", "2nd", "pi"], "urdf")
+    [shoulder_pan, q_2, q_3]
     """
     symbols = []
     for number, name in enumerate(names, 1):
         made = re.sub(r"\W+", "_", name).strip("_") if style == "urdf" else ""
-        if not made or not _NAME_START.match(made) or made in {str(s) for s in symbols}:
-            made = f"q_{number}"
-        symbols.append(sympy.Symbol(made, real=True))
+        symbol = sympy.Symbol(made or "_", real=True)
+        if not _NAME_START.match(made) or symbol in symbols or not _reads_back(made, symbol):
+            symbol = sympy.Symbol(f"q_{number}", real=True)
+        symbols.append(symbol)
     return symbols
+
+
+def _reads_back(name: str, symbol: sympy.Symbol) -> bool:
+    try:
+        return parse_expression(name) == symbol
+    except UserError:
+        return False
 
 
 def _warn(warnings: list) -> None:

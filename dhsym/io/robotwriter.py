@@ -60,8 +60,8 @@ def expression_text(value) -> str:
 
 def _value(value) -> str:
     text = expression_text(value)
-    return text if _PLAIN.match(text) and not text.startswith(("-", "*")) or re.match(r"^-[\w.]", text) \
-        else json.dumps(text)
+    plain = _PLAIN.match(text) and (not text.startswith(("-", "*")) or re.match(r"^-[\w.(]", text))
+    return text if plain else json.dumps(text)  # a YAML plain scalar where it reads back as written
 
 
 def _string(text: str) -> str:
