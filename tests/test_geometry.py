@@ -200,3 +200,12 @@ def test_every_step_is_recorded_for_a_notebook():
         ["intersecting", "parallel", "parallel", "intersecting", "intersecting", "collinear"]
     assert "flange" in assignment.steps[-1].why
     assert len(assignment.frames) == 7
+
+
+def test_angles_off_the_grid_give_short_numbers_and_a_warning():
+    urdf = read_urdf_text(serial_urdf(EDGE_CASES["tilted_tool"]).encode(), "tilted.urdf")
+    chain = assign_frames(urdf.axes, urdf.tool, "standard").chain()
+    values = [v for row in chain.rows for v in (row.theta - row.variable, row.d, row.a, row.alpha)]
+    values += [step.value for step in chain.base + chain.tool]
+    assert all(max(abs(r.p), r.q) < 10 ** 20 for v in values for r in sympy.sympify(v).atoms(sympy.Rational))
+    assert any("off the π/12 grid (0.3, 0.2, 0.1)" in w and "15 significant digits" in w for w in urdf.warnings)

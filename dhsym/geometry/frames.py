@@ -31,9 +31,9 @@ from dataclasses import dataclass, field
 import sympy
 
 from ..core.chain import Chain, DHRow
-from ..core.transforms import CONVENTIONS
+from ..core.transforms import CONVENTIONS, Step
 from ..errors import UserError
-from .exact import cross, dot, is_zero_vector, tidy, tidy_vector, unit
+from .exact import cross, dot, is_zero_vector, readable, tidy, tidy_vector, unit
 from .lines import JointAxis, distance_between, normal_feet, relation
 from .rigid import angle, frame_pose, pose_steps, relative
 
@@ -164,9 +164,14 @@ def _tabulate(convention, axes, steps, tool_pose, variables) -> Assignment:
     rows = []
     for i in range(1, n + 1):
         rows.append(_row(convention, axes[i - 1], frames[i - 1], frames[i], variables[i - 1]))
-    base = pose_steps(frames[0].pose)
-    tool = pose_steps(relative(frames[n].pose, tool_pose))
+    base = _readable_steps(pose_steps(frames[0].pose))
+    tool = _readable_steps(pose_steps(relative(frames[n].pose, tool_pose)))
+    rows = [(joint, *(readable(value) for value in values)) for joint, *values in rows]
     return Assignment(convention, list(axes), frames, steps, rows, list(variables), base, tool)
+
+
+def _readable_steps(steps: list) -> list:
+    return [Step(step.kind, readable(step.value)) for step in steps]
 
 
 def _row(convention, axis, before: Frame, after: Frame, variable):

@@ -30,7 +30,17 @@ from lxml import etree
 
 from ..core.transforms import rotation
 from ..errors import Location, UserError
-from .exact import ANGLE_TOLERANCE, exact_number, snap_angle, snap_direction, snap_length, tidy_vector, vector
+from .exact import (
+    ANGLE_STEP,
+    ANGLE_TOLERANCE,
+    exact_number,
+    rational_turn,
+    snap_angle,
+    snap_direction,
+    snap_length,
+    tidy_vector,
+    vector,
+)
 from .lines import JointAxis
 
 MAX_URDF_BYTES = 2 << 20
@@ -111,6 +121,7 @@ class _Reader:
         self.root, self.filename = root, filename
         self.warnings: list[str] = []
         self.snapped_angles: dict = {}
+        self.free_angles: dict = {}
         self.snapped_directions: list = []
         self.first_snap = None
         self.links = {}
@@ -244,17 +255,28 @@ class _Reader:
         self.numbers(element, "rpy", "0 0 0")
         xyz_text, rpy_text = ((element.get(key, "0 0 0") if element is not None else "0 0 0").split()
                               for key in ("xyz", "rpy"))
-        roll, pitch, yaw = (self.angle(text, element) for text in rpy_text)
-        result = rotation(2, yaw) * rotation(1, pitch) * rotation(0, roll)
+        roll, pitch, yaw = (self.turn(axis, text, element) for axis, text in enumerate(rpy_text))
+        result = yaw * pitch * roll
         result[:3, 3] = vector(*(self.length(text) for text in xyz_text))
         return result
 
-    def angle(self, text: str, element) -> sympy.Expr:
+    def turn(self, axis: int, text: str, element) -> sympy.Matrix:
+        """The rotation by a written angle: exact on the π/12 grid (snapped there within 1e-5 rad),
+        else through a rational cosine and sine (see exact.rational_turn)."""
         value, moved = snap_angle(text)
         if moved:
             self.snapped_angles.setdefault(text, value)
             self.first_snap = element if self.first_snap is None else self.first_snap
-        return value
+        if (value / ANGLE_STEP).is_integer:
+            return rotation(axis, value)
+        self.free_angles.setdefault(text, None)
+        cosine, sine = rational_turn(value)
+        i, j = [k for k in range(3) if k != axis]
+        if axis == 1:  # about y the cyclic order is z, x
+            i, j = j, i
+        result = sympy.eye(4)
+        result[i, i], result[i, j], result[j, i], result[j, j] = cosine, -sine, sine, cosine
+        return result
 
     def length(self, text: str) -> sympy.Expr:
         value = snap_length(text)
@@ -282,6 +304,11 @@ class _Reader:
                               for text, value in self.snapped_angles.items())
             self.warnings.insert(0, f"{where}: angles snapped to exact multiples of π/12 (within {ANGLE_TOLERANCE:g} "
                                  f"rad): {shown}")
+        if self.free_angles:
+            angles = ", ".join(self.free_angles)
+            self.warnings.append(f"{self.filename}: angles off the π/12 grid ({angles}) are turned "
+                                 "through rational cosines and sines (within 1e-20 rad); table values that depend on "
+                                 "them are rounded to 15 significant digits")
         if self.snapped_directions:
             self.warnings.append(f"{where}: axis directions snapped to exact unit vectors: "
                                  f"{', '.join(self.snapped_directions)}")
