@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from ..geometry.compare import compare
 from ..io import library
+from .messages import warn
 from .options import robot_options
 
 EXIT_DIFFERENT = 1
@@ -34,6 +35,7 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str:
-    reference = library.read(args.against).chain
-    verdict = compare(robot.chain, reference)
+    reference = library.read(args.against)
+    warn(reference.warnings)
+    verdict = compare(robot.chain, reference.chain)
     return (Outcome if verdict.same else Different)(f"{args.robot}: {verdict.message}")

@@ -20,6 +20,7 @@ from ..io.expr import parse_expression
 from ..io.output import write_atomic
 from ..io.robotfile import load_robot_file
 from ..io.robotwriter import robot_yaml
+from .messages import warn
 
 _NAME_START = re.compile(r"^[A-Za-z]")
 
@@ -45,13 +46,13 @@ def add_parsers(commands) -> None:
 def run(robot, args) -> str | None:
     if Path(args.file).suffix.lower() in (".yaml", ".yml"):
         loaded = load_robot_file(args.file)
-        _warn(loaded.warnings)
+        warn(loaded.warnings)
         chain, notes = to_convention(loaded.chain, args.convention or loaded.chain.convention), None
     else:
         from ..geometry.urdf import read_urdf  # lxml only when a URDF is read
 
         urdf = read_urdf(args.file, args.base, args.tip)
-        _warn(urdf.warnings)
+        warn(urdf.warnings)
         variables = joint_symbols(urdf.joint_names, args.variables)
         chain = assign_frames(urdf.axes, urdf.tool, args.convention or "standard", variables).chain(
             name=urdf.name, source=f"{Path(urdf.path).name}, links {urdf.base} → {urdf.tip}")
@@ -86,12 +87,3 @@ def _reads_back(name: str, symbol: sympy.Symbol) -> bool:
         return parse_expression(name) == symbol
     except UserError:
         return False
-
-
-def _warn(warnings: list) -> None:
-    import sys
-
-    from .app import printable  # the one place that makes messages one line
-
-    for warning in warnings:
-        print(f"dhsym: warning: {printable(warning)}", file=sys.stderr)
