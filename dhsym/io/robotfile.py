@@ -138,15 +138,18 @@ class _Reader:
         top = self.mapping(root, "the robot file", TOP_KEYS)
         if "convention" not in top:
             raise UserError("missing key 'convention' (standard or modified)", self.where(root))
+        if "joints" not in top and "axes" not in top:
+            raise UserError("missing key 'joints' (the list of DH rows)", self.where(root))
         convention_node = top["convention"][1]
         convention = self.text(convention_node, "convention").strip().lower()
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {self.text(convention_node, 'convention')!r}; use standard or "
                             f"modified", self.where(convention_node))
-        if "axes" in top:  # the geometric form: joint axes instead of DH rows
-            return self.finish(top, axes_chain(self, top, convention))
-        if "joints" not in top:
-            raise UserError("missing key 'joints' (the list of DH rows)", self.where(root))
+        if "axes" in top:  # the geometric form (io/axesfile.py): joint axes instead of DH rows
+            chain = axes_chain(self, top, convention)
+            if "sample" in top:
+                chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
+            return RobotFile(chain, path=self.filename, warnings=self.warnings)
         joints_node = top["joints"][1]
         row_nodes = self.sequence(joints_node, "joints")
         if not row_nodes:
@@ -161,9 +164,6 @@ class _Reader:
         tool = self.steps(top["tool"][1], "tool", variables) if "tool" in top else []
         chain = Chain(dh_rows, convention, base, tool, name=self.optional_text(top, "name", Path(self.filename).stem),
                       source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""))
-        return self.finish(top, chain)
-
-    def finish(self, top: dict, chain: Chain) -> RobotFile:
         if "sample" in top:
             chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
         return RobotFile(chain, path=self.filename, warnings=self.warnings)
