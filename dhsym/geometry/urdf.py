@@ -271,12 +271,8 @@ class _Reader:
             return rotation(axis, value)
         self.free_angles.setdefault(text, None)
         cosine, sine = rational_turn(value)
-        i, j = [k for k in range(3) if k != axis]
-        if axis == 1:  # about y the cyclic order is z, x
-            i, j = j, i
-        result = sympy.eye(4)
-        result[i, i], result[i, j], result[j, i], result[j, j] = cosine, -sine, sine, cosine
-        return result
+        angle = sympy.Dummy("angle", real=True)
+        return rotation(axis, angle).xreplace({sympy.cos(angle): cosine, sympy.sin(angle): sine})
 
     def length(self, text: str) -> sympy.Expr:
         value = snap_length(text)
