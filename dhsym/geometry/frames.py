@@ -126,7 +126,7 @@ def _prefer(x: sympy.Matrix, previous_x: sympy.Matrix) -> sympy.Matrix:
 
 def _normal(i: int, axis: JointAxis, following: JointAxis, previous_x, previous_foot, last: bool) -> NormalStep:
     kind = relation(axis, following)
-    name = f"axis {i + 1}" if following.name != "tool" else "the tool's z line"
+    name = "the tool's z line" if last else f"axis {i + 1}"
     pair = f"axis {i} and {name}"
     start = axis.foot_of(previous_foot)  # d is zero when the normal leaves axis i here
     if kind in ("skew", "intersecting"):
