@@ -41,6 +41,7 @@ test: install tex browser node-packages
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py
 	$(BIN)/python benchmarks/velocity_speed.py
+	$(BIN)/python benchmarks/geometry_speed.py
 
 notebooks: install node-packages
 	bash scripts/export-notebooks.sh

@@ -16,10 +16,10 @@ import warnings
 from ..core.budget import CommandTooSlow, SimplificationTimeout, time_budget
 from ..errors import UserError
 from ..io import library
-from . import jacobian, kinematics, latex, listing, plot
+from . import check, convert, jacobian, kinematics, latex, listing, plot, screws, urdf_import
 from .options import COMMAND_BUDGET_FACTOR, Parser
 
-COMMAND_MODULES = (listing, kinematics, latex, plot, jacobian)
+COMMAND_MODULES = (listing, kinematics, latex, plot, jacobian, urdf_import, convert, check, screws)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70
@@ -108,7 +108,7 @@ def _dispatch(args, read) -> int:
     output = args.run(robot, args)
     if output is not None:
         sys.stdout.write(output if output.endswith("\n") else output + "\n")
-    return 0
+    return getattr(output, "exit_status", 0)  # `dhsym check` says 1 for "different"
 
 
 if __name__ == "__main__":
