@@ -2,35 +2,52 @@
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
-READY := $(VENV)/.ready
+RUNTIME := $(VENV)/.ready-runtime
+DEV := $(VENV)/.ready-dev
+PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
 
-.PHONY: demo test install tex bench lint notebooks clean
+.PHONY: demo test install tex browser node-packages bench lint notebooks clean
 
-$(READY): pyproject.toml requirements.txt
+# The demo needs only what dhsym itself imports; the tests add pytest, jupyter, ruff and friends.
+$(RUNTIME): pyproject.toml requirements.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install -q --disable-pip-version-check -r requirements.txt
-	$(BIN)/python -m pip install -q --disable-pip-version-check --no-deps -e .
-	touch $(READY)
+	$(PIP) -r requirements.txt
+	$(PIP) --no-deps -e .
+	touch $(RUNTIME)
 
-install: $(READY)
+$(DEV): $(RUNTIME) requirements-dev.txt
+	$(PIP) -r requirements-dev.txt
+	touch $(DEV)
+
+install: $(DEV)
 
 tex:
 	@bash scripts/ensure-tex.sh
 
-demo: install
+# Chromium for the notebook-page test; MathJax (npm) typesets the notebook pages.
+browser:
+	@bash scripts/ensure-browser.sh
+
+node-packages:
+	@bash scripts/ensure-node-packages.sh
+
+demo: $(RUNTIME)
 	$(BIN)/dhsym fk puma560
 
-test: install tex
+test: install tex browser node-packages
+	$(BIN)/ruff check dhsym tests benchmarks
 	$(BIN)/python -m pytest
 
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py
+	$(BIN)/python benchmarks/velocity_speed.py
+	$(BIN)/python benchmarks/geometry_speed.py
 
-notebooks: install
+notebooks: install node-packages
 	bash scripts/export-notebooks.sh
 
 lint: install
 	$(BIN)/ruff check dhsym tests benchmarks
 
 clean:
-	rm -rf $(VENV) build .pytest_cache .hypothesis
+	rm -rf $(VENV) build node_modules .pytest_cache .hypothesis

@@ -32,7 +32,7 @@ def general_chain(n: int) -> Chain:
 def fresh(name: str) -> Chain:
     if name.startswith("general-"):
         return general_chain(int(name.split("-")[1]))
-    return load(name).chain
+    return load(name)
 
 
 def time_dhsym(name: str) -> tuple[float, sympy.Matrix]:

@@ -42,7 +42,3 @@ class UserError(Exception):
 
     def __str__(self) -> str:
         return f"{self.where}: {self.message}" if self.where else self.message
-
-    def at(self, where: Location) -> "UserError":
-        """This error placed at `where` unless it already knows its place."""
-        return self if self.where else UserError(self.message, where)

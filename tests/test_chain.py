@@ -109,3 +109,11 @@ def test_lecture_planar3r_in_standard_convention_gives_the_same_tool_pose():
     standard = Chain([DHRow.revolute(t, a=length) for t, length in zip(thetas, lengths)], "standard")
     assert check(standard.fk(), modified.fk())
     assert standard.fk() == modified.fk()  # the same textbook form, not only the same value
+
+
+def test_a_chain_shows_itself_in_a_notebook():
+    puma = load("puma560")
+    assert repr(puma) == "Chain('PUMA 560', modified DH, 6 joints: RRRRRR)"
+    table = puma._repr_latex_()
+    assert table.startswith("$$\n\\begin{array}{c|cccc}") and table.endswith("\\end{array}\n$$")
+    assert "2 & -\\frac{\\pi}{2} & 0 & 0 & \\theta_{2}^{*}" in table

@@ -167,7 +167,7 @@ def test_an_offset_keeps_its_angle_as_written(robot_file):
     table = run("table", path).stdout
     assert "2 │ θ2* − π/4 │ 0  │ l2 │ 0\n" in table and "3 │ θ3* − π/2 │ 0  │ 0  │ 0.3\n" in table
     latex = run("fk", path, "--format", "latex").stdout
-    assert "c_{12} = \\cos(\\theta_{1} + \\theta_{2} - \\frac{\\pi}{4})" in latex
+    assert "c_{12} &= \\cos(\\theta_{1} + \\theta_{2} - \\frac{\\pi}{4})" in latex
     data = json.loads(run("fk", path, "--format", "json").stdout)
     assert data["matrix"][0][3] == "l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2 - pi/4)"
     assert data["abbreviations"]["c12"] == "cos(theta_1 + theta_2 - pi/4)"

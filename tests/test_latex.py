@@ -1,11 +1,12 @@
-"""`dhsym latex`: documents that compile with pdflatex, fit their pages (no overfull boxes),
-and print the textbook forms.
+"""`dhsym latex` and `dhsym fk/links --format latex`: documents that compile with pdflatex,
+fit their pages (no overfull boxes), and print the textbook forms.
 
-Every built-in robot is compiled four ways (slides with and without --steps, article with
---steps, snippet wrapped in a minimal amsmath document), once per module and in parallel.
-A document fails on any LaTeX error and on any overfull box wider or taller than
-OVERFULL_TOLERANCE_PT. Golden files: tests/golden/*.tex; after an intended change of the
-output, rewrite them with DHSYM_UPDATE_GOLDEN=1.
+Every built-in robot and every test robot (TEST_ROBOTS) is compiled five ways (slides with and
+without --steps, article with --steps, snippet and `fk --format latex` each wrapped in a
+minimal amsmath document), once per module and in parallel. A document fails on any LaTeX
+error and on any overfull box wider or taller than OVERFULL_TOLERANCE_PT. Golden files:
+tests/golden/*.tex; after an intended change of the output, rewrite them with
+DHSYM_UPDATE_GOLDEN=1.
 """
 import os
 import re
@@ -16,13 +17,16 @@ from itertools import pairwise
 from pathlib import Path
 
 import pytest
+from robots import GREEK_PRISMATIC, TEN_JOINTS, TEST_ROBOTS
 
+from dhsym import display
 from dhsym.cli import main
 from dhsym.io.library import builtin_names, load
 from dhsym.io.robotfile import load_robot_text
 from dhsym.latex import document as latexdoc
 from dhsym.latex import layout as texlayout
 from dhsym.latex import width as texwidth
+from dhsym.latex.results import results_latex
 from dhsym.printing.printers import LatexPrinter
 
 GOLDEN = Path(__file__).parent / "golden"
@@ -33,29 +37,37 @@ INSTALL_HINT = ("pdflatex is not installed: run `make tex` (as root it installs 
 needs_tex = pytest.mark.skipif(shutil.which("pdflatex") is None, reason=INSTALL_HINT)
 
 VARIANTS = {"slides-steps": ("slides", True), "slides": ("slides", False),
-            "article-steps": ("article", True), "snippet": ("snippet", False)}
+            "article-steps": ("article", True), "snippet": ("snippet", False), "fk": ("fk", False)}
 SNIPPET_HOST = "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n{}\\end{{document}}\n"
 
-# Robots that are not built in but exercise notation: two-digit joints, Greek names, text to escape.
-TEN_JOINTS = """name: "Ten-link planar arm & co: 100% planar_test, θ"
-source: "made up for the tests; names with # and ~ and {braces}"
-convention: standard
-joints:
-""" + "".join(f"  - {{joint: R, alpha: 0, a: l_{i}, d: 0, theta: theta_{i}}}\n" for i in range(1, 11))
-
-GREEK_PRISMATIC = """name: Greek names
-convention: modified
-joints:
-  - {joint: R, alpha: 0, a: 0, d: 0, theta: phi_1}
-  - {joint: R, alpha: pi, a: lambda_1, d: 0, theta: psi_2}
-  - {joint: P, alpha: -pi/2, a: 0, d: d_3, theta: 0}
-"""
+def _robot(name: str):
+    """A built-in robot, or a test robot by its key in TEST_ROBOTS."""
+    if name in TEST_ROBOTS:
+        return load_robot_text(TEST_ROBOTS[name], f"{name}.yaml").chain
+    return load(name)
 
 
 def _document(robot, variant: str, **options) -> str:
     kind, steps = VARIANTS[variant]
+    if kind == "fk":
+        return SNIPPET_HOST.format(results_latex(robot, [(robot.first_frame, robot.last_frame, robot.fk())]) + "\n")
     text = latexdoc.document(robot, kind, steps=steps, **options)
     return SNIPPET_HOST.format(text) if kind == "snippet" else text
+
+
+ROBOTS = builtin_names() + list(TEST_ROBOTS)
+
+
+def _notebook_displays() -> str:
+    """Every robot's whole transform as a notebook shows it, on a line as wide as the notebook
+    page the layout assumes: pdflatex reads the same LaTeX as MathJax, and nothing overflows."""
+    width = texlayout.PAGES["notebook"].width_pt
+    preamble = (f"\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage[textwidth={width}pt,"
+                f"paperwidth={width + 60}pt,textheight=3000pt,paperheight=3100pt]{{geometry}}\n"
+                "\\begin{document}\n")  # as tall as the 7-axis arm's elements and legend
+    body = "".join(f"\\[\n{display.transform(chain, chain.first_frame, chain.last_frame).latex}\n\\]\n"
+                   for chain in map(_robot, ROBOTS))
+    return preamble + body + "\\end{document}\n"
 
 
 def _width_probe() -> str:
@@ -81,11 +93,10 @@ def _all_elements() -> list[str]:
 def compiled(tmp_path_factory):
     """{job name: (exit status, log text, pdf path)} for every document, compiled once."""
     folder = tmp_path_factory.mktemp("latex")
-    sources = {f"{name}-{variant}": _document(load(name), variant) for name in builtin_names() for variant in VARIANTS}
-    sources["ten-joints-slides"] = _document(load_robot_text(TEN_JOINTS, "ten.yaml").chain, "slides-steps")
-    sources["greek-article"] = _document(load_robot_text(GREEK_PRISMATIC, "greek.yaml").chain, "article-steps")
+    sources = {f"{name}-{variant}": _document(_robot(name), variant) for name in ROBOTS for variant in VARIANTS}
     sources["puma560-inverse-slides"] = _document(load("puma560"), "slides-steps", start="6", end="2")
     sources["width-probe"] = _width_probe()
+    sources["notebook-displays"] = _notebook_displays()
     for job, text in sources.items():
         (folder / f"{job}.tex").write_text(text, encoding="utf-8")
     with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
@@ -108,7 +119,7 @@ def _problems(log: str) -> list[str]:
 
 @needs_tex
 @pytest.mark.parametrize("variant", VARIANTS)
-@pytest.mark.parametrize("name", builtin_names())
+@pytest.mark.parametrize("name", ROBOTS)
 def test_every_robot_compiles_and_fits(compiled, name, variant):
     status, log, pdf = compiled[f"{name}-{variant}"]
     assert status == 0 and pdf.exists(), _problems(log) or log[-2000:]
@@ -116,9 +127,15 @@ def test_every_robot_compiles_and_fits(compiled, name, variant):
 
 
 @needs_tex
-@pytest.mark.parametrize("job", ["ten-joints-slides", "greek-article", "puma560-inverse-slides"])
-def test_notation_and_text_edge_cases_compile(compiled, job):
-    status, log, _ = compiled[job]
+def test_notebook_displays_compile_and_fit_the_notebook_line(compiled):
+    status, log, _ = compiled["notebook-displays"]
+    assert status == 0, _problems(log) or log[-2000:]
+    assert _problems(log) == []
+
+
+@needs_tex
+def test_inverse_slides_compile(compiled):
+    status, log, _ = compiled["puma560-inverse-slides"]
     assert status == 0, _problems(log) or log[-2000:]
     assert _problems(log) == []
 
@@ -146,7 +163,7 @@ def test_puma_slides_render_with_everything_inside_the_page(compiled, tmp_path):
     pages = int(re.search(r"Output written on .*\((\d+) pages?", log).group(1))
     subprocess.run(["pdftoppm", "-r", "40", "-png", str(pdf), str(tmp_path / "page")], check=True, timeout=120)
     images = sorted(tmp_path.glob("page-*.png"))
-    assert len(images) == pages >= 15
+    assert len(images) == pages >= 10  # title, table, notation, links, steps and result, some continued
     for image in images:
         ink = matplotlib.image.imread(image)[:, :, :3].min(axis=2) < 0.6  # dark pixels
         height, width = ink.shape
@@ -209,52 +226,63 @@ def test_break_lines_keeps_every_character_and_never_splits_a_group():
 
 def test_steps_show_the_product_and_simplified_intermediate_results():
     snippet = latexdoc.document(load("spatial3r"), "snippet", steps=True)
-    step1 = snippet.split("% Step 1")[1].split("% Step 2")[0]
+    step1 = snippet.split("% Step 1")[1].split("% Result")[0]
     assert "{}^{0}T_{2} &= {}^{0}T_{1}\\,{}^{1}T_{2} =" in step1 and step1.count("begin{bmatrix}") == 3
     assert "c_{1} c_{2} & -c_{1} s_{2} & s_{1} & a_{2} c_{1} c_{2}" in step1  # simplified, then used again:
-    step2 = snippet.split("% Step 2")[1].split("% Result")[0]
-    assert "c_{1} c_{2} & -c_{1} s_{2} & s_{1} & a_{2} c_{1} c_{2}" in step2
+    step2 = snippet.split("% Result")[1]  # the last step is the result
+    assert "c_{1} c_{2} & -c_{1} s_{2} & s_{1} & a_{2} c_{1} c_{2}" in step2 and "% Step 2" not in snippet
     assert "c_{1} c_{23} & -c_{1} s_{23} & s_{1} & c_{1}(a_{2} c_{2} + a_{3} c_{23})" in step2
     puma = latexdoc.document(load("puma560"), "snippet", steps=True)
     step3 = puma.split("% Step 3")[1].split("% Step 4")[0]
     assert "{}^{0}T_{4} = {}^{0}T_{3}\\,{}^{3}T_{4} =" in step3 and step3.count("begin{bmatrix}") == 1  # names only
     assert "r_{13} &= -c_{1} s_{23}" in step3
-    titles = re.findall(r"\\begin\{frame\}\{(Step \d+): ", latexdoc.document(load("puma560"), "slides", steps=True))
-    assert sorted(set(titles)) == [f"Step {k}" for k in range(1, 6)]
+    slides = latexdoc.document(load("puma560"), "slides", steps=True)
+    titles = re.findall(r"\\begin\{frame\}\{(Step \d+|Result): ", slides)
+    assert list(dict.fromkeys(titles)) == [f"Step {k}" for k in range(1, 5)] + ["Result"]  # 0T6 once, not twice
+    result = "".join(frame for frame in _frames(slides) if "{Result: " in frame)
+    assert "{}^{0}T_{6} = {}^{0}T_{5}\\,{}^{5}T_{6} =" in result and result.count("r_{11} &=") == 1
 
 
-def test_slides_have_title_table_link_and_result_frames():
+def test_slides_have_title_table_notation_link_and_result_frames():
     slides = latexdoc.document(load("stanford"), "slides")
     frames = _frames(slides)
     assert "Stanford manipulator" in frames[0] and "Source: Lecture 003" in frames[0]
+    assert "Robot file: stanford.yaml (built into dhsym)" in frames[0] and "standard DH convention" in frames[0]
     assert frames[1].startswith("\\begin{frame}{DH table}")
     assert "i & \\theta_i & d_i & a_i & \\alpha_i" in frames[1]  # standard column order
     assert "3 & 0 & d_{3}^{*} & 0 & 0" in frames[1]  # the prismatic variable, as it is, starred
-    assert "Standard (distal) DH convention" in frames[1]
-    assert [f"Link {i}" for i in range(1, 7)] == re.findall(r"\{(Link \d): ", slides)
+    # the notation comes before the first product: the convention and every abbreviation used
+    assert frames[2].startswith("\\begin{frame}{Notation}") and "Standard (distal) DH convention" in frames[2]
+    assert "c_{1} &= \\cos{\\theta_{1}} & s_{1} &= \\sin{\\theta_{1}}" in frames[2]
+    used = set(re.findall(r"[cs]_\{\d+\}", slides.split("{Notation}")[1].split("\\end{frame}", 1)[1]))
+    assert used and all(label + " &= " in frames[2] for label in used)
+    assert "c_{3}" not in frames[2]  # joint 3 is prismatic: no c3 anywhere
+    # several link matrices to a frame, each frame titled with the ones it shows
+    links = [frame for frame in frames if "{Link matrices: " in frame]
+    assert 1 <= len(links) < 6 and sum(frame.count("begin{bmatrix}") for frame in links) == 6
+    assert links[0].startswith("\\begin{frame}{Link matrices: ${}^{0}T_{1}$ to ")
     assert "s_{2}(d_{3} + d_{6} c_{5})" in slides
-    legend = slides.split("Abbreviations:" if "Abbreviations:" in slides else "where")[1]
-    assert "c_{1} &= \\cos{\\theta_{1}} & s_{1} &= \\sin{\\theta_{1}}" in legend
-    assert "c_{3}" not in legend  # joint 3 is prismatic: no c3 anywhere
+    assert "where" not in slides  # the legend is in the notation frame only
 
 
 def test_modified_table_order_and_base_tool_frames():
     slides = latexdoc.document(load("finger_rrr"), "slides")
     assert "i & \\alpha_{i-1} & a_{i-1} & d_i & \\theta_i" in slides
     assert "Fixed base transform: ${}^{\\mathrm{base}}T_{0} = T_{y}(-d)\\,T_{z}(h)$." in slides
-    assert "{Base: ${}^{\\mathrm{base}}T_{0}$}" in slides and "{Tool: ${}^{3}T_{\\mathrm{tool}}$}" in slides
-    assert "\\psi_{1}" in slides and "c_{23} &= \\cos(\\psi_{1} + \\phi_{1})" in slides
+    assert "{Link matrices: ${}^{\\mathrm{base}}T_{0}$ to ${}^{3}T_{\\mathrm{tool}}$}" in slides
+    # θ1, ψ1 and φ1 share a subscript: each abbreviation names its angle
+    assert "\\psi_{1}" in slides and "c_{\\psi 1,\\phi 1} &= \\cos(\\psi_{1} + \\phi_{1})" in slides
 
 
 def test_two_digit_joints_greek_names_and_angle_differences():
     ten = latexdoc.document(load_robot_text(TEN_JOINTS, "ten.yaml").chain, "snippet")
     assert "{}^{9}T_{10}" in ten and "c_{10}" in ten and "c_{1,2,3,4,5,6,7,8,9,10}" in ten
-    assert "% where (commas separate the joint numbers when one of them has two digits)" in ten
+    assert "% Abbreviations (commas separate the joint numbers when one of them has two digits):" in ten
     assert "Ten-link planar arm \\& co: 100\\% planar\\_test, $\\theta$" in latexdoc.document(
         load_robot_text(TEN_JOINTS, "ten.yaml").chain, "slides")
     greek = latexdoc.document(load_robot_text(GREEK_PRISMATIC, "greek.yaml").chain, "snippet")
     assert "\\phi_{1}^{*}" in greek and "\\lambda_{1}" in greek and "d_{3}^{*}" in greek
-    assert "\\bar{2}" in greek and "(a bar over a joint number marks an angle that is subtracted)" in greek
+    assert "\\overline{\\psi 2}" in greek and "a bar over a joint number marks an angle that is subtracted" in greek
 
 
 # ---------------------------------------------------------------- golden files
@@ -323,4 +351,4 @@ def test_cli_from_to_and_inverse(capsys):
     assert "% Result: ${}^{3}T_{6}$" in forward and "{}^{0}T_{1}" not in forward.split("% Link")[1]
     assert main(["latex", "puma560", "--document", "snippet", "--from", "6", "--to", "3"]) == 0
     backward = capsys.readouterr().out
-    assert "% Link 6 (inverse): ${}^{6}T_{5}$" in backward and "% Result: ${}^{6}T_{3}$" in backward
+    assert "{}^{6}T_{5} =" in backward and "% Result: ${}^{6}T_{3}$" in backward

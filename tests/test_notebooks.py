@@ -1,10 +1,8 @@
 """Notebooks are tests: each one executes without error, and none is committed with outputs."""
 import json
-from pathlib import Path
 
 import pytest
-
-NOTEBOOKS = sorted((Path(__file__).parent.parent / "notebooks").glob("*.ipynb"))
+from notebook_runs import NOTEBOOKS, executed
 
 
 def test_there_are_notebooks():
@@ -21,8 +19,6 @@ def test_committed_without_outputs(path):
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
 def test_notebook_executes(path):
-    nbformat = pytest.importorskip("nbformat")
-    nbclient = pytest.importorskip("nbclient")
-    notebook = nbformat.read(path, as_version=4)
-    nbclient.NotebookClient(notebook, timeout=300, kernel_name="python3",
-                            resources={"metadata": {"path": str(path.parent)}}).execute()
+    pytest.importorskip("nbclient")
+    notebook = executed(path)  # a cell that raises fails here with its traceback
+    assert any(cell.get("outputs") for cell in notebook.cells), f"{path.name} printed nothing"

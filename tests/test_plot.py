@@ -158,6 +158,14 @@ def test_frame_offset_renumbers_the_picture_only():
     from matplotlib.figure import Figure
 
     from dhsym.io.library import load
-    ax = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=3)
-    labels = " ".join(t.get_text() for t in ax.texts)
-    assert "6" in labels and "_{0" not in labels and "_0" not in labels
+    renumbered = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=3)
+    plain = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=0)
+    by_the_robot_file = plot.draw(load("spherical_wrist"), ax=Figure())  # first_frame: 3
+    assert [t.get_text() for t in by_the_robot_file.texts] == [t.get_text() for t in renumbered.texts]
+    assert sorted(t.get_text() for t in renumbered.texts) == [
+        "$x_{3,4,5}$", "$x_{6}$", "$y_{3,5}$", "$y_{4}$", "$y_{6}$", "$z_{3,5}$", "$z_{4}$", "$z_{6}$"]
+    assert sorted(t.get_text() for t in plain.texts) == [
+        "$x_{0,1,2}$", "$x_{3}$", "$y_{0,2}$", "$y_{1}$", "$y_{3}$", "$z_{0,2}$", "$z_{1}$", "$z_{3}$"]
+    positions = [[t.get_position() for t in sorted(ax.texts, key=lambda t: t.get_text()[1:])]
+                 for ax in (renumbered, plain)]
+    assert positions[0] == positions[1]  # the same picture, only the names differ

@@ -18,15 +18,31 @@ Only some elements printed? Pass them by position:
 
 >>> compare_printed({(1, 2): "l_1*cos(theta_1)"}, derived, "spoken").ok
 True
+
+Say what kind of error each erratum is (see `kinds`) and give the element as the transcript prints
+it; dhsym's reading of it is shown beside it:
+
+>>> slip = compare_printed({(2, 2): "l_1*cos(theta_1)"}, derived, "slide 4",
+...                        reasons={(2, 2): spoken("cos for sin", lines=(87,))}, verbatim={(2, 2): "l1 C1"})
+>>> print(slip.report([t1]))
+slide 4: 0 of 1 elements agree; 1 erratum (1 spoken slip)
+  spoken slip at (2,2) (l.87): printed "l1 C1" (read as l1 c1), correct l1 s1 — cos for sin
+>>> print(tally([result, slip]))
+genuine errors of the lecture: 1 (1 spoken slip), in 1 element; transcription damage: 0; unclassified: 1 element
 """
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, field
 
 import sympy
 
 from ..io.expr import parse_expression
 from ..printing.printers import LatexPrinter, TextPrinter
+
+# the kinds are re-exported, so that a notebook imports one module to classify its errata
+from .kinds import Cause, Kind, counted, hypothetical, inconsistency, ocr, slide, spoken  # noqa: F401
+from .kinds import tally as tally_causes
 from .verify import Verdict, check
 
 
@@ -39,11 +55,27 @@ class ElementCheck:
     printed: sympy.Expr
     derived: sympy.Expr
     verdict: Verdict
-    reason: str = ""
+    cause: Cause | None = None  # why it differs, when the caller knows
+    verbatim: str = ""  # the element as the transcript prints it
 
     @property
     def ok(self) -> bool:
         return bool(self.verdict)
+
+    @property
+    def kind(self) -> Kind | None:
+        return self.cause.kind if self.cause else None
+
+    @property
+    def reason(self) -> str:
+        return self.cause.why if self.cause else ""
+
+    def label(self) -> str:
+        """'spoken slip', 'transcription damage', or plain 'erratum' when unclassified."""
+        return self.kind.value if self.kind else "erratum"
+
+    def where(self) -> str:
+        return f" ({self.cause.where()})" if self.cause and self.cause.where() else ""
 
 
 @dataclass
@@ -67,6 +99,9 @@ class Comparison:
         agree = len(self.elements) - len(self.errata)
         errata = len(self.errata)
         tail = "all agree" if not errata else f"{errata} errat{'um' if errata == 1 else 'a'}"
+        kinds = Counter(e.kind for e in self.errata if e.kind)
+        if kinds:
+            tail += " (" + ", ".join(counted(n, kind.value) for kind, n in kinds.items()) + ")"
         return f"{self.title}: {agree} of {len(self.elements)} elements agree; {tail}"
 
     def report(self, joint_variables=None) -> str:
@@ -74,7 +109,10 @@ class Comparison:
         printer = TextPrinter(self.joint_variables if joint_variables is None else joint_variables)
         lines = [self.summary()]
         for e in self.errata:
-            line = (f"  erratum at ({e.row},{e.column}): printed {printer.doprint(e.printed)}, "
+            printed = printer.doprint(e.printed)
+            if e.verbatim:
+                printed = f'"{e.verbatim}" (read as {printed})'
+            line = (f"  {e.label()} at ({e.row},{e.column}){e.where()}: printed {printed}, "
                     f"correct {printer.doprint(e.derived)}")
             lines.append(line + (f" — {e.reason}" if e.reason else ""))
         return "\n".join(lines)
@@ -87,11 +125,17 @@ class Comparison:
         """
         printer = LatexPrinter(self.joint_variables if joint_variables is None else joint_variables)
         icon = "✅" if self.ok else "❌"
-        table = ["| element | printed | derived | verdict |", "|---|---|---|---|"]
+        as_printed = any(e.verbatim for e in self.elements)
+        if as_printed:
+            table = ["| element | printed (transcript) | read as | derived | verdict |", "|---|---|---|---|---|"]
+        else:
+            table = ["| element | printed | derived | verdict |", "|---|---|---|---|"]
         for e in self.elements:
-            verdict = "agrees" if e.ok else "**erratum**" + (f": {e.reason}" if e.reason else "")
-            table.append(f"| ({e.row},{e.column}) | ${printer.doprint(e.printed)}$ | ${printer.doprint(e.derived)}$ "
-                         f"| {verdict} |")
+            verdict = "agrees" if e.ok else f"**{e.label()}**{e.where()}" + (f": {e.reason}" if e.reason else "")
+            verbatim = [_code_span(e.verbatim) if e.verbatim else "—"] if as_printed else []
+            cells = [f"({e.row},{e.column})", *verbatim, f"${printer.doprint(e.printed)}$",
+                     f"${printer.doprint(e.derived)}$", verdict.replace("|", "\\|")]
+            table.append("| " + " | ".join(cells) + " |")
         headline = f"{icon} {self.summary()}"
         if fold and self.ok:
             return f"<details><summary>{headline}</summary>\n\n" + "\n".join(table) + "\n\n</details>"
@@ -102,24 +146,29 @@ class Comparison:
 
 
 def compare_printed(printed, derived, title: str = "printed result", reasons=None, joint_variables=(),
-                    fold: bool = False) -> Comparison:
+                    fold: bool = False, verbatim=None) -> Comparison:
     """Compare a transcription with the derived matrix, vector or expression.
 
     `printed` is a SymPy object or nested lists of strings/expressions of the derived shape,
     or a dict {(row, column): value} (counted from 1) when the lecture printed only some
     elements; strings are read with dhsym's safe parser. `reasons` maps (row, column), counted from 1,
-    to a sentence explaining an expected erratum (slip, OCR error, disagreement).
-    `joint_variables` (e.g. robot.chain.joint_variables) makes reports use c1, s23; with `fold`
-    the notebook table of a fully agreeing comparison stays folded.
+    to the `kinds.Cause` of an expected erratum (`spoken(...)`, `ocr(...)`, ...; a plain sentence
+    leaves it unclassified). `verbatim` gives elements as the transcript prints them, as a dict
+    {(row, column): text} or nested lists of text. `joint_variables` (e.g. robot.chain.joint_variables)
+    makes reports use c1, s23; with `fold` the notebook table of a fully agreeing comparison stays folded.
     """
     derived = sympy.Matrix(derived) if not isinstance(derived, sympy.Expr) else sympy.Matrix([[derived]])
-    reasons = reasons or {}
+    causes = {place: _cause(reason) for place, reason in (reasons or {}).items()}
+    texts = _by_position(verbatim)
+    result = Comparison(title, joint_variables=tuple(joint_variables), fold=fold)
+
+    def add(r, c, expr):
+        result.elements.append(ElementCheck(r, c, expr, derived[r - 1, c - 1], check(expr, derived[r - 1, c - 1]),
+                                            causes.get((r, c)), texts.get((r, c), "")))
+
     if isinstance(printed, dict):
-        result = Comparison(title, joint_variables=tuple(joint_variables), fold=fold)
         for (r, c), value in sorted(printed.items()):
-            expr = _read(value)
-            result.elements.append(ElementCheck(r, c, expr, derived[r - 1, c - 1], check(expr, derived[r - 1, c - 1]),
-                                                reasons.get((r, c), "")))
+            add(r, c, _read(value))
         return result
     printed = transcribe(printed)
     if printed.shape != derived.shape:
@@ -127,13 +176,15 @@ def compare_printed(printed, derived, title: str = "printed result", reasons=Non
             printed = printed.T
         else:
             raise ValueError(f"printed shape {printed.shape} differs from derived shape {derived.shape}")
-    result = Comparison(title, joint_variables=tuple(joint_variables), fold=fold)
     for r in range(derived.rows):
         for c in range(derived.cols):
-            verdict = check(printed[r, c], derived[r, c])
-            result.elements.append(ElementCheck(r + 1, c + 1, printed[r, c], derived[r, c], verdict,
-                                                reasons.get((r + 1, c + 1), "")))
+            add(r + 1, c + 1, printed[r, c])
     return result
+
+
+def tally(comparisons) -> str:
+    """The errata of several comparisons counted by kind: the lecture's errors apart from OCR damage."""
+    return tally_causes(e.cause for comparison in comparisons for e in comparison.errata)
 
 
 def transcribe(printed) -> sympy.Matrix:
@@ -151,6 +202,27 @@ def transcribe(printed) -> sympy.Matrix:
         printed = [[printed]]
     rows = [row if isinstance(row, (list, tuple)) else [row] for row in printed]
     return sympy.Matrix([[_read(x) for x in row] for row in rows])
+
+
+def _cause(reason) -> Cause | None:
+    if isinstance(reason, Cause) or reason is None:
+        return reason
+    return Cause(None, str(reason)) if reason else None
+
+
+def _by_position(verbatim) -> dict:
+    """Transcript text by (row, column), from a dict or from nested lists (a vector as a flat list)."""
+    if not verbatim:
+        return {}
+    if isinstance(verbatim, dict):
+        return dict(verbatim)
+    rows = [row if isinstance(row, (list, tuple)) else [row] for row in verbatim]
+    return {(r + 1, c + 1): text for r, row in enumerate(rows) for c, text in enumerate(row) if text}
+
+
+def _code_span(text: str) -> str:
+    """Transcript text shown exactly as it is, in a table cell."""
+    return "`" + text.replace("`", "'").replace("|", "\\|") + "`"
 
 
 def _read(value) -> sympy.Expr:

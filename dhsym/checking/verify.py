@@ -71,7 +71,7 @@ def algebraically_equal(a, b) -> bool:
 def numeric_error(a, b, trials: int = 12, seed: int = 0) -> float:
     """The largest |a − b| at random values of every symbol (angles and lengths alike);
     a and b may be expressions or matrices of the same shape."""
-    differences = _elements(a) if b is None else [x - y for x, y in zip(_elements(a), _elements(b))]
+    differences = [x - y for x, y in zip(_elements(a), _elements(b))]
     symbols = sorted(set().union(*(d.free_symbols for d in differences)), key=lambda s: s.name)
     rng = random.Random(seed)
     function = sympy.lambdify(symbols, differences, modules="math")

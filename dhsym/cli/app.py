@@ -24,10 +24,10 @@ from ..errors import Location, UserError
 from ..io import library
 from ..io.robotfile import load_robot_text
 from ..io.yamlsafe import MAX_FILE_BYTES, decode_utf8
-from . import kinematics, latex, listing, plot
-from .options import COMMAND_BUDGET_FACTOR, COMMAND_BUDGET_FLOOR, Parser
+from . import check, convert, jacobian, kinematics, latex, listing, plot, screws, urdf_import
+from .options import COMMAND_BUDGET_FACTOR, COMMAND_BUDGET_FLOOR, Parser, text_width
 
-COMMAND_MODULES = (listing, kinematics, latex, plot)
+COMMAND_MODULES = (listing, kinematics, latex, plot, jacobian, urdf_import, convert, check, screws)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70
@@ -114,6 +114,8 @@ def _dispatch(args, read) -> int:
         robot.chain.timeout = args.timeout
         for warning in robot.warnings:
             print(f"dhsym: warning: {printable(warning)}", file=sys.stderr)
+    if hasattr(args, "width"):
+        args.width = text_width(args.width)  # --width, else $COLUMNS, else the terminal's, else 100
     output = args.run(robot, args)
     if output is not None:
         if sys.stdout is None:  # started with standard output closed (`dhsym fk puma560 >&-`)
@@ -126,7 +128,7 @@ def _dispatch(args, read) -> int:
         except OSError as error:  # a full disk, a device that refuses the bytes
             _silence_stdout()
             raise UserError(f"cannot write the output: {error.strerror or error}") from None
-    return 0
+    return getattr(output, "exit_status", 0)  # `dhsym check` says 1 for "different"
 
 
 def read_standard_input():

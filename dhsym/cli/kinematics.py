@@ -4,14 +4,17 @@ transform, as text, LaTeX or JSON.
     dhsym table puma560
     dhsym links planar3r --ascii
     dhsym fk puma560 --from 3 --to 6 --format latex
+    dhsym fk iiwa7 --format latex --text-width 469
 """
 from __future__ import annotations
 
+import argparse
 import json
 
+from ..latex.results import ARTICLE_TEXT_WIDTH_PT, results_latex
 from ..printing import render
 from .limits import refuse_if_too_large
-from .options import format_options, frame_options, robot_options, text_width
+from .options import format_options, frame_options, robot_options
 
 
 def add_parsers(commands) -> None:
@@ -23,13 +26,33 @@ def add_parsers(commands) -> None:
     links = commands.add_parser("links", parents=parents, help="print every link matrix",
                                 description="Print every link matrix {i-1}T_i, simplified.")
     links.add_argument("--raw", action="store_true", help="plain products, without simplification")
+    text_width_option(links)
     links.set_defaults(run=run_links)
     fk = commands.add_parser("fk", parents=parents, help="print the transform between two frames "
                              "(default: whole chain)", description="Print {FROM}T_{TO}. Frames are 0..n, plus "
                              "base and tool when the robot has them. FROM after TO gives the inverse transform.")
     frame_options(fk)
     fk.add_argument("--raw", action="store_true", help="the plain product, without simplification")
+    text_width_option(fk)
     fk.set_defaults(run=run_fk)
+
+
+def text_width_option(parser) -> None:
+    parser.add_argument("--text-width", type=points, default=ARTICLE_TEXT_WIDTH_PT, metavar="PT",
+                        help="with --format latex: the line width in pt (at 10 pt type) that matrices must fit; "
+                             f"wider ones are written element by element (default {ARTICLE_TEXT_WIDTH_PT:g}, "
+                             "a standard article)")
+
+
+def points(text: str) -> float:
+    """A line width in pt, for --text-width."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a width in pt") from None
+    if not 100 <= value <= 2000:
+        raise argparse.ArgumentTypeError("the text width must be between 100 and 2000 pt")
+    return value
 
 
 def run_table(robot, args) -> str:
@@ -41,10 +64,9 @@ def run_table(robot, args) -> str:
         return json.dumps({"robot": chain.name, "convention": chain.convention, "rows": rows}, indent=2)
     if args.format == "latex":
         return "\\[\n" + render.latex_table(chain) + "\n\\]"
-    width = text_width(args.width)
     note = render.wrap(render.convention_note(chain.convention, ascii=args.ascii) + "; * marks joint variables",
-                       width, "  ")
-    return _header(chain, "DH table", args.ascii, width) + "\n" + note + "\n\n" + \
+                       args.width, "  ")
+    return _header(chain, "DH table", args.ascii) + "\n" + note + "\n\n" + \
         render.text_table(chain, ascii=args.ascii)
 
 
@@ -61,7 +83,7 @@ def run_fk(robot, args) -> str:
     return _results(chain, [(start, end, chain.transform(start, end, raw=args.raw))], args)
 
 
-def _header(chain, what: str, ascii: bool, width: int) -> str:
+def _header(chain, what: str, ascii: bool) -> str:
     title = f"{chain.name}: {what}  ({chain.convention} DH)"
     return title.replace("−", "-") if ascii else title
 
@@ -71,17 +93,13 @@ def _results(chain, results, args) -> str:
         data = [render.json_result(chain, i, j, m) for i, j, m in results]
         return json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False)
     if args.format == "latex":
-        printer = render.latex_printer(chain)
-        blocks = [f"{render.transform_title(i, j, 'latex')} =\n{render.latex_matrix(m, printer)}"
-                  for i, j, m in results]
-        legend = render.latex_legend(printer)
-        return "\n\n".join(f"\\[\n{b}\n\\]" for b in blocks) + (f"\n\nwhere ${legend}$" if legend else "")
+        return results_latex(chain, results, args.text_width)
     printer = render.text_printer(chain, ascii=args.ascii)
     style = "ascii" if args.ascii else "unicode"
-    width = text_width(args.width)
     blocks = []
     for i, j, matrix in results:
-        title = _header(chain, render.transform_title(i, j, style), args.ascii, width)
-        blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, width))
-    legend = render.text_legend(printer, width)
+        title = _header(chain, render.transform_title(chain.frame_number(i), chain.frame_number(j), style),
+                        args.ascii)
+        blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, args.width))
+    legend = render.text_legend(printer, args.width)
     return "\n\n".join(blocks) + ("\n\n" + legend if legend else "")

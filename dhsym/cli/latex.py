@@ -21,6 +21,7 @@ def add_parsers(commands) -> None:
     sub.add_argument("--document", choices=DOCUMENTS, default="slides", help="what to write (default slides)")
     sub.add_argument("--steps", action="store_true",
                      help="derive the result step by step: 0T2 = 0T1 1T2, then 0T3 = 0T2 2T3, ...")
+    sub.add_argument("--jacobian", action="store_true", help="add the Jacobian, its determinant and singularities")
     frame_options(sub)
     sub.add_argument("-o", "--output", metavar="FILE", help="write to FILE (atomically) instead of standard output")
     sub.set_defaults(run=run)
@@ -35,7 +36,8 @@ def run(robot, args) -> str | None:
         pass  # document() names the frame that is wrong, and the option
     else:
         refuse_if_too_large(robot, start, end)
-    text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end)
+    text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end,
+                    jacobian=args.jacobian)
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[robot.path])

@@ -68,8 +68,10 @@ class Chain:
 
     Frames are numbered 0..n; "base" (before the base steps) and "tool" (after the tool
     steps) exist when the chain has such steps. `name`, `source` and `notes` say what robot
-    this is and where its table comes from; `sample` gives numbers for its constants (pictures);
-    `numbers` says how its file wrote numbers (decimals or fractions), for the printers.
+    this is and where its table comes from, `file` the robot file it was read from; `sample`
+    gives numbers for its constants (pictures); `frame_offset` is the number frame 0 is shown
+    with (a robot file's `first_frame`); `numbers` says how its file wrote numbers (decimals or
+    fractions), for the printers.
 
     >>> import sympy
     >>> Chain([DHRow.revolute(sympy.Symbol("theta_1", real=True), a=1)], "standard", name="pendulum")
@@ -79,7 +81,7 @@ class Chain:
     def __init__(self, rows: Sequence[DHRow], convention: str, base: Sequence[Step] = (),
                  tool: Sequence[Step] = (), simplifier: Simplifier = contract, timeout: float | None = None, *,
                  name: str = "", source: str = "", notes: str = "", sample: dict | None = None,
-                 numbers: WrittenNumbers | None = None):
+                 frame_offset: int = 0, file: str = "", numbers: WrittenNumbers | None = None):
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {convention!r}; use standard or modified")
         if not rows:
@@ -89,8 +91,12 @@ class Chain:
         self.simplifier = simplifier
         self.timeout = timeout  # seconds of simplification per result; past it the raw product is returned
         self.name, self.source, self.notes = name, source, notes
+        self.file = file  # the robot file it was read from, if any
         self.sample = dict(sample or {})  # symbol -> exact number
         self.numbers = numbers or WrittenNumbers()
+        # The number printed for frame 0: a wrist that a lecture numbers 3..6 has 3. Only what
+        # is shown (titles, --from/--to, pictures) is renumbered; transform() counts from 0.
+        self.frame_offset = frame_offset
         self._cache: dict = {}
 
     def __repr__(self) -> str:
@@ -130,8 +136,19 @@ class Chain:
     def last_frame(self) -> Frame:
         return self.frames[-1]
 
+    def frame_number(self, frame: Frame) -> Frame:
+        """The number a frame is shown with: frame 0 of a wrist numbered from 3 is 3.
+
+        >>> import sympy
+        >>> wrist = Chain([DHRow.revolute(sympy.Symbol("theta_4", real=True))], "standard", frame_offset=3)
+        >>> [wrist.frame_number(f) for f in wrist.frames], wrist.frame("4")
+        ([3, 4], 1)
+        """
+        return frame + self.frame_offset if isinstance(frame, int) else frame
+
     def frame(self, text: str) -> Frame:
-        """The frame a user names: "3", "03" and "+3" are frame 3; "base"/"tool" where present.
+        """The frame a user names, by the number it is shown with: "3", "03" and "+3" are
+        frame 3; "base"/"tool" where present.
 
         >>> import sympy
         >>> Chain([DHRow.revolute(sympy.Symbol("q", real=True))], "standard").frame(" 01")
@@ -141,11 +158,12 @@ class Chain:
         if wanted.isascii() and wanted.lstrip("+").isdigit() and len(wanted) < 6:
             wanted = str(int(wanted))
         for frame in self.frames:
-            if wanted == str(frame):
+            if wanted == str(self.frame_number(frame)):
                 return frame
         shown = text if len(text) <= 20 else text[:20] + "..."
         shown = shown if shown.lstrip("-").isascii() and shown.lstrip("-").isdigit() else repr(shown)
-        raise UserError(f"no frame {shown} in this robot; frames are {', '.join(map(str, self.frames))}")
+        numbers = ", ".join(str(self.frame_number(f)) for f in self.frames)
+        raise UserError(f"no frame {shown} in this robot; frames are {numbers}")
 
     def link(self, i: int, raw: bool = False) -> sympy.Matrix:
         """The link matrix {i-1}T_i."""
@@ -164,6 +182,20 @@ class Chain:
         if key not in self._cache:
             self._cache[key] = self._compute(*key)
         return self._cache[key].copy()
+
+    def steps(self, i: Frame, j: Frame) -> list[Step]:
+        """The elementary steps from frame i to frame j (inverted and reversed for i after j)."""
+        start, end = self._position(i), self._position(j)
+        if start > end:
+            return [step.inverse() for step in reversed(self._steps()[end:start])]
+        return self._steps()[start:end]
+
+    def jacobian(self, frame: Frame | None = None, point: Frame | None = None) -> sympy.Matrix:
+        """The geometric Jacobian (rows vx vy vz ωx ωy ωz) of the origin of `point` (default:
+        the last frame), expressed in `frame` (default: the first); see dhsym.velocity."""
+        from ..velocity.jacobian import jacobian  # velocity is built on core, not the other way
+
+        return jacobian(self, frame=frame, point=point)
 
     def _compute(self, start: int, end: int, raw: bool) -> sympy.Matrix:
         if start > end:

@@ -16,6 +16,8 @@ from dataclasses import dataclass
 
 import sympy
 
+from ..errors import UserError
+
 CONVENTIONS = ("standard", "modified")
 STEP_KINDS = ("Rx", "Ry", "Rz", "Tx", "Ty", "Tz")
 
@@ -29,7 +31,7 @@ class Step:
 
     def __post_init__(self):
         if self.kind not in STEP_KINDS:
-            raise ValueError(f"unknown step {self.kind!r}; use one of {', '.join(STEP_KINDS)}")
+            raise UserError(f"unknown step {self.kind!r}; use one of {', '.join(STEP_KINDS)}")
         object.__setattr__(self, "value", as_expr(self.value))
 
     @property
@@ -92,7 +94,7 @@ def link_steps(convention: str, theta, d, a, alpha) -> list[Step]:
         return [Step("Rz", theta), Step("Tz", d), Step("Tx", a), Step("Rx", alpha)]
     if convention == "modified":
         return [Step("Rx", alpha), Step("Tx", a), Step("Rz", theta), Step("Tz", d)]
-    raise ValueError(f"unknown convention {convention!r}")
+    raise UserError(f"unknown convention {convention!r}; use standard or modified")
 
 
 def product(steps) -> sympy.Matrix:

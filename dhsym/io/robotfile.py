@@ -29,12 +29,13 @@ import yaml
 from ..core.chain import Chain, DHRow
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
+from .axesfile import axes_chain
 from .expr import Reading, parse_expression
 from .suspicious import misspelt_pi, near_multiple_of_pi, printed_key, printed_text
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
 
 MAX_JOINTS = 24
-TOP_KEYS = ("name", "source", "convention", "joints", "base", "tool", "sample", "notes")
+TOP_KEYS = ("name", "source", "convention", "joints", "axes", "base", "tool", "sample", "notes", "first_frame")
 ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 _DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
@@ -173,13 +174,28 @@ class _Reader:
         top = self.mapping(root, "the robot file", TOP_KEYS)
         if "convention" not in top:
             raise UserError("missing key 'convention' (standard or modified)", self.where(root))
-        if "joints" not in top:
+        if "joints" not in top and "axes" not in top:
             raise UserError("missing key 'joints' (the list of DH rows)", self.where(root))
         convention_node = top["convention"][1]
         convention = self.text(convention_node, "convention").strip().lower()
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {self.text(convention_node, 'convention')!r}; use standard or "
                             f"modified", self.where(convention_node))
+        if "axes" in top:  # the geometric form (io/axesfile.py): joint axes instead of DH rows
+            chain = axes_chain(self, top, convention)
+        else:
+            chain = self.dh_chain(top, convention)
+        chain.file = self.filename
+        self.check_names()
+        chain.numbers = self.reading.numbers  # how the table's fields wrote numbers, for the printers
+        if "sample" in top:
+            chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
+        if "first_frame" in top:
+            chain.frame_offset = self.first_frame(top["first_frame"][1])
+        return RobotFile(chain, path=self.filename, warnings=self.warnings)
+
+    def dh_chain(self, top: dict, convention: str) -> Chain:
+        """The chain of a file that gives DH rows under `joints:`."""
         joints_node = top["joints"][1]
         row_nodes = self.sequence(joints_node, "joints")
         if not row_nodes:
@@ -192,13 +208,8 @@ class _Reader:
         variables = {row.variable for row in dh_rows}
         base = self.steps(top["base"][1], "base", variables) if "base" in top else []
         tool = self.steps(top["tool"][1], "tool", variables) if "tool" in top else []
-        self.check_names()
-        chain = Chain(dh_rows, convention, base, tool, name=self.optional_text(top, "name", Path(self.filename).stem),
-                      source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""),
-                      numbers=self.reading.numbers)
-        if "sample" in top:
-            chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
-        return RobotFile(chain, path=self.filename, warnings=self.warnings)
+        return Chain(dh_rows, convention, base, tool, name=self.optional_text(top, "name", Path(self.filename).stem),
+                     source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""))
 
     def row(self, node: yaml.Node, number: int) -> "_Row":
         """One joint row, checked field by field."""
@@ -329,6 +340,14 @@ class _Reader:
                 self.warn_decimal_angle(value, reading, f"{step_what} {kind}")
             steps.append(Step(kind, value))
         return steps
+
+    def first_frame(self, node: yaml.Node) -> int:
+        """The number of the chain's first frame, as the lecture numbers it (a wrist: 3)."""
+        text = self.text(node, "first_frame").strip()
+        if not (text.isascii() and text.isdigit() and len(text) <= 3):
+            raise UserError(f"first_frame must be a whole number such as 3 (the number of the chain's first "
+                            f"frame), not {text!r}", self.where(node))
+        return int(text)
 
     def sample(self, node: yaml.Node, symbols: dict) -> dict:
         """Numbers for the robot's symbols; a name the robot does not use is a typo."""

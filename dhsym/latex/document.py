@@ -13,29 +13,33 @@ True
 """
 from __future__ import annotations
 
-import unicodedata
+from pathlib import Path
 
 from ..errors import UserError
-from ..printing.notation import GREEK_NAMES, greek_latex
-from ..printing.printers import LatexPrinter
-from .layout import PAGES, Block, Page, aligned_display, lines_under
+from ..io.library import ROBOTS_DIR
+from ..printing.printers import LatexPrinter, chain_settings
+from .layout import PAGES, Block, Page, flat
 from .packing import pack
+from .prose import tex_prose, tex_text
 from .sections import Section, sections
+from .velocity import velocity_sections
 
 DOCUMENTS = ("slides", "article", "snippet")
 
 
 # ---------------------------------------------------------------- the three documents
 
-def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None) -> str:
+def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None, jacobian: bool = False) -> str:
     """The LaTeX text of a document of `kind` for `chain`, about the transform from frame
-    `start` (default: the first) to `end` (default: the last)."""
+    `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics."""
     start = _check_frame(chain, chain.first_frame if start is None else start, "--from")
     end = _check_frame(chain, chain.last_frame if end is None else end, "--to")
     if start == end:
         raise UserError(f"--from and --to name the same frame ({start}); choose two different frames")
     page = PAGES[kind]
-    content = sections(chain, start, end, steps, page, LatexPrinter(chain.joint_variables))
+    content = sections(chain, start, end, steps, page, LatexPrinter(chain_settings(chain)))
+    if jacobian:
+        content += velocity_sections(chain, page, steps=steps)
     return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
 
 
@@ -52,16 +56,33 @@ def _subtitle(chain) -> str:
     return f"Forward kinematics, {chain.convention} DH convention"
 
 
+def robot_file(chain) -> str:
+    """Which robot file the chain comes from: a built-in's name, else the path as given.
+
+    >>> from dhsym.io.library import load
+    >>> robot_file(load("puma560"))
+    'puma560.yaml (built into dhsym)'
+    """
+    if not chain.file:
+        return "none (built in Python)"
+    path = Path(chain.file)
+    return f"{path.name} (built into dhsym)" if path.parent == ROBOTS_DIR else chain.file
+
+
 def _slides(chain, content: list[Section], page: Page) -> str:
     out = [SLIDES_PREAMBLE, "\\begin{document}\n",
            "\\begin{frame}[plain]\n\\centering\n{\\usebeamerfont{title}\\usebeamercolor[fg]{title}"
            f"{tex_text(chain.name)}\\par}}\n\\bigskip\n{tex_text(_subtitle(chain))}\\par\n"
-           f"\\vfill\n{{\\small\\raggedright Source: {tex_text(chain.source or 'not given')}\\par}}\n"
+           f"\\vfill\n{{\\small\\raggedright Source: {tex_prose(chain.source or 'not given')}\\par\n"
+           f"Robot file: {tex_text(robot_file(chain))}\\par}}\n"
            "\\end{frame}\n"]
     for section in content:
         title = section.title
         for number, blocks in enumerate(pack(section.items, page.height_pt)):
-            if number:
+            shows = [name for block in blocks for name in block.shows]
+            if shows:  # link matrices: the frame says which
+                title = f"{section.title}: ${shows[0]}$" + (f" to ${shows[-1]}$" if len(shows) > 1 else "")
+            elif number:
                 title = blocks[0].alone[0] if blocks[0].alone else title.removesuffix(" (cont.)") + " (cont.)"
             out.append(f"\\begin{{frame}}{{{title}}}\n" + _join(blocks) + "\n\\end{frame}\n")
     out.append("\\end{document}\n")
@@ -70,15 +91,16 @@ def _slides(chain, content: list[Section], page: Page) -> str:
 
 def _article(chain, content: list[Section], page: Page) -> str:
     out = [ARTICLE_PREAMBLE, "\\begin{document}\n", f"\\section*{{{tex_text(chain.name)}}}\n",
-           f"{tex_text(_subtitle(chain))}.\n\nSource: {tex_text(chain.source or 'not given')}\n"]
+           f"{tex_text(_subtitle(chain))}.\n\nSource: {tex_prose(chain.source or 'not given')}\n",
+           f"Robot file: {tex_text(robot_file(chain))}\n"]
     if chain.notes:
-        out.append(f"Notes: {tex_text(chain.notes)}\n")
+        out.append(f"Notes: {tex_prose(chain.notes)}\n")
     part = None
     for section in content:
         if section.part != part:
             part = section.part
             out.append(f"\\subsection*{{{part}}}\n")
-        out.extend([_join(_flat(section.items)), ""])
+        out.extend([_join(flat(section.items)), ""])
     out.append("\\end{document}\n")
     return "\n".join(out)
 
@@ -86,21 +108,15 @@ def _article(chain, content: list[Section], page: Page) -> str:
 def _snippet(chain, content: list[Section], page: Page) -> str:
     """Only the math; titles and text become comments."""
     out = [f"% dhsym latex: {_comment(chain.name)} ({chain.convention} DH); needs \\usepackage{{amsmath}}",
-           f"% Source: {_comment(chain.source or 'not given')}"]
+           f"% Source: {_comment(chain.source or 'not given')}", f"% Robot file: {_comment(robot_file(chain))}"]
     for section in content:
         out.append(f"\n% {_comment(section.title)}")
-        out.extend(block.latex if block.is_display else f"% {_comment(block.latex)}" for block in _flat(section.items))
+        out.extend(block.latex if block.is_display else f"% {_comment(block.latex)}" for block in flat(section.items))
     return "\n".join(out) + "\n"
 
 
 def _join(blocks: list[Block]) -> str:
     return "\n".join(b.latex if b.is_display else b.latex + "\\par" for b in blocks)
-
-
-def _flat(items) -> list[Block]:
-    """Blocks in order; each `Rows` becomes one align* that pages may break."""
-    return [item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")
-            for item in items]
 
 
 SLIDES_PREAMBLE = r"""% Made by dhsym latex. Compile with pdflatex (beamer, lmodern).
@@ -124,33 +140,6 @@ ARTICLE_PREAMBLE = r"""% Made by dhsym latex. Compile with pdflatex.
 
 
 # ---------------------------------------------------------------- text from chain files
-
-_TEXT_ESCAPES = {"\\": "\\textbackslash{}", "&": "\\&", "%": "\\%", "$": "\\$", "#": "\\#", "_": "\\_",
-                 "{": "\\{", "}": "\\}", "~": "\\textasciitilde{}", "^": "\\textasciicircum{}",
-                 "−": "$-$", "→": "$\\to$", "×": "$\\times$", "±": "$\\pm$", "≤": "$\\leq$", "≥": "$\\geq$",
-                 "≈": "$\\approx$", "°": "\\textdegree{}", "…": "\\dots{}", "–": "--", "—": "---",
-                 "‘": "`", "’": "'", "“": "``", "”": "''"}
-
-
-def tex_text(text: str) -> str:
-    """Free text of a chain file (name, source, notes) as LaTeX text that always compiles.
-
-    >>> tex_text("θ1 & 50% of a_2 — Craig")
-    '$\\\\theta$1 \\\\& 50\\\\% of a\\\\_2 --- Craig'
-    """
-    out = []
-    for ch in text:
-        if ch in _TEXT_ESCAPES:
-            out.append(_TEXT_ESCAPES[ch])
-        elif ch in GREEK_NAMES:
-            tex = greek_latex(GREEK_NAMES[ch])
-            out.append(f"${tex}$" if tex.startswith("\\") else tex)
-        elif ch.isascii() or unicodedata.name(ch, "").startswith("LATIN"):
-            out.append(ch if ch.isprintable() else " ")
-        else:
-            out.append("?")  # a symbol pdflatex's default fonts may lack
-    return "".join(out)
-
 
 def _comment(text: str) -> str:
     """Text for a LaTeX comment: one line (a newline would end the comment)."""

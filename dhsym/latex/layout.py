@@ -12,7 +12,8 @@ Rules (widths come from `texwidth.math_width`; 3 % of every line is kept free):
   factors and the product fit the line as matrices; otherwise it is laid out as its product.
 
 Pages: slides are beamer 16:9 at 11 pt (398 pt wide); the article is A4 at 11 pt with 25 mm
-margins (455 pt); a snippet fits a plain ``article`` at 10 pt (345 pt) with ``amsmath``.
+margins (455 pt); a snippet (and ``fk --format latex``) fits a plain ``article`` at 10 pt
+(345 pt) with ``amsmath``; a notebook line is taken as 54 em.
 Heights are estimates in pt, measured once with pdflatex, so that slides can be packed.
 
 >>> rotation = [["c_{1}", "- s_{1}", "0", "0"], ["s_{1}", "c_{1}", "0", "0"], ["0", "0", "1", "0"],
@@ -28,6 +29,7 @@ Heights are estimates in pt, measured once with pdflatex, so that slides can be 
 """
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 
 from ..printing.render import ELEMENT_NAMES, bmatrix
@@ -53,14 +55,15 @@ class Page:
         return points / self.font_pt
 
 
-PAGES = {"slides": Page(398.3, 10.95, 222.0), "article": Page(455.2, 10.95), "snippet": Page(345.0, 10.0)}
+PAGES = {"slides": Page(398.3, 10.95, 222.0), "article": Page(455.2, 10.95), "snippet": Page(345.0, 10.0),
+         "notebook": Page(560.0, 10.0)}  # 54 em: about 870 px of MathJax at 16 px, inside Jupyter's column
 
 # Measured with pdflatex in a beamer frame at 11 pt (pt): a row of `aligned` and of a matrix
 # or array (taller with a \frac), a line of text, what a display adds (the first on a frame,
 # each further one), the space between element columns; both bmatrix brackets; the column gap.
 ALIGNED_ROW, ALIGNED_FRACTION_ROW, ARRAY_ROW, ARRAY_FRACTION_ROW = 16.6, 28.5, 13.6, 16.6
 TEXT_LINE, FIRST_DISPLAY, NEXT_DISPLAY, COLUMN_SKIP = 13.6, 16.0, 4.5, 4.0
-BRACKETS_PT, COLUMN_GAP_PT = 13.4, 10.0
+BRACKETS_PT, COLUMN_GAP_PT, NESTED_FRACTION_EXTRA = 13.4, 10.0, 8.0
 ALIGNED_EXTRA, LEGEND_GAP, TEXT_CHARACTER = 1.0, 2.0, 0.5  # em: around `&=`, between entries, per character
 
 
@@ -75,6 +78,8 @@ class Block:
     is_display: bool = True
     keep_with_next: bool = False
     alone: tuple[str, str] | None = None  # (frame title, latex) when this block starts a frame
+    math: str = ""  # a display's math without \[ \], to stack it with others in one display
+    shows: tuple = ()  # the matrices a display shows, e.g. ("{}^{0}T_{1}",), to title its frame
 
 
 @dataclass
@@ -90,9 +95,9 @@ class Rows:
         return sum(height for column in self.columns for element in column for _, height in element)
 
 
-def display(body: str, height: float) -> Block:
+def display(body: str, height: float, shows: tuple = ()) -> Block:
     """`body` as displayed math, \\[ … \\]."""
-    return Block(f"\\[\n{body}\n\\]", height)
+    return Block(f"\\[\n{body}\n\\]", height, math=body, shows=shows)
 
 
 def paragraph(latex: str, page: Page) -> Block:
@@ -101,11 +106,24 @@ def paragraph(latex: str, page: Page) -> Block:
 
 
 def row_height(cells, array: bool) -> float:
-    """The height in pt of a row of a matrix or array (`array`) or of `aligned`."""
+    """The height in pt of a row of a matrix or array (`array`) or of `aligned` (where a
+    fraction inside a fraction is set in display style too, and taller)."""
     fraction = any("\\frac" in cell for cell in cells)
     if array:
         return ARRAY_FRACTION_ROW if fraction else ARRAY_ROW
+    if any(_nested_fraction(cell) for cell in cells):
+        return ALIGNED_FRACTION_ROW + NESTED_FRACTION_EXTRA
     return ALIGNED_FRACTION_ROW if fraction else ALIGNED_ROW
+
+
+def _nested_fraction(tex: str) -> bool:
+    start = tex.find("\\frac{")
+    while start >= 0:
+        groups, _ = _groups(tex, start + 5, 2)
+        if any("\\frac" in group for group in groups):
+            return True
+        start = tex.find("\\frac{", start + 1)
+    return False
 
 
 def lines_under(node, level: int) -> list[tuple[str, float, str]]:
@@ -129,7 +147,38 @@ def aligned_display(lines, environment: str = "aligned") -> Block:
         allow_break = "\\displaybreak[0]" if environment == "align*" and starts != "line" else ""
         body += f"{allow_break} \\\\" + (f"[{COLUMN_SKIP:g}pt]" if starts == "column" else "") + "\n" + latex
     latex = f"\\begin{{{environment}}}\n{body}\n\\end{{{environment}}}"
-    return Block(f"\\[\n{latex}\n\\]" if environment == "aligned" else latex, sum(line[1] for line in lines))
+    height = sum(line[1] for line in lines)
+    if environment == "aligned":
+        return Block(f"\\[\n{latex}\n\\]", height, math=latex)
+    return Block(latex, height)
+
+
+def flat(items) -> list[Block]:
+    """Blocks in order; each `Rows` becomes one align* that pages may break."""
+    return [item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")
+            for item in items]
+
+
+def stacked(items, page: Page | None = None) -> str:
+    """Blocks and `Rows` as the rows of one display (an `array` of one left-aligned column),
+    which MathJax 2, 3 and 4 and pdflatex all lay out the same way: one above the other.
+
+    >>> print(stacked([display("x = 1", 10.0), Block("where", 10.0, is_display=False)]))
+    \\begin{array}{l}
+    x = 1 \\\\[4pt]
+    \\text{where}
+    \\end{array}
+    """
+    rows = []
+    for item in items:
+        if isinstance(item, Rows):
+            rows.append(aligned_display(lines_under(item.columns, 0)).math)
+        elif item.is_display:
+            rows.append(item.math)
+        else:  # text does not break inside \text{}: one row per line that fits the page
+            characters = int(page.width / TEXT_CHARACTER) if page else len(item.latex)
+            rows += [f"\\text{{{line}}}" for line in textwrap.wrap(item.latex, max(20, characters))]
+    return "\\begin{array}{l}\n" + " \\\\[4pt]\n".join(rows) + "\n\\end{array}"
 
 
 # ---------------------------------------------------------------- matrices
@@ -164,7 +213,7 @@ def matrix_items(lhs: str, cells, page: Page, short_lhs: str | None = None) -> l
 def element_rows(label: str, tex: str, page: Page) -> list[tuple[str, float]]:
     """`label &= tex` as lines of an aligned block, broken when wider than the page."""
     first = page.width - math_width(label + " =") - ALIGNED_EXTRA
-    lines = break_lines(tex, first, first - 1.0)
+    lines = break_lines(tex, first, first - 1.0, display=True)
     rows = [f"{label} &= {lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]
     return [(row, row_height([row], array=False)) for row in rows]
 
@@ -202,24 +251,93 @@ def break_points(tex: str) -> list[tuple[int, int]]:
     return points
 
 
-def break_lines(tex: str, first: float, rest: float) -> list[str]:
-    """Split `tex` before '+'/'-' into lines of at most `first`, then `rest` em; the later
-    lines start with their sign (TeX does not mind brackets left open on a line).
+def break_lines(tex: str, first: float, rest: float, display: bool = False) -> list[str]:
+    r"""Split `tex` before '+'/'-' into lines of at most `first`, then `rest` em; the later
+    lines start with their sign (TeX does not mind brackets left open on a line). Fractions
+    are measured in display style if `display` (as in `aligned`). A fraction or square root
+    too wide for a line is opened so that its inside can break: ``\frac{1}{2}(…)``.
 
     >>> break_lines("a + b + c", 3, 3)
     ['a + b', '+ c']
+    >>> break_lines("\\frac{a + b + c}{2}", 3, 3, display=True)
+    ['\\frac{1}{2}(a', '+ b', '+ c)']
     """
+    def width_of(piece: str) -> float:
+        return math_width(piece, display=display)
+
     points, lines, start, width = break_points(tex), [], 0, first
-    while math_width(("{}" if lines else "") + tex[start:]) > width:
+    while width_of(("{}" if lines else "") + tex[start:]) > width:
         prefix = "{}" if lines else ""
         later = [(i, depth) for i, depth in points if i > start]
+        fitting = [(i, depth) for i, depth in later if width_of(prefix + tex[start:i]) <= width]
+        if not fitting:  # the first term alone is too wide: open a fraction or root inside it
+            opened = open_group(tex, start, later[0][0] if later else len(tex))
+            if opened:
+                tex, points = opened, break_points(opened)
+                continue
         if not later:
             break  # one term wider than the line: nothing left to break
-        fitting = [(i, depth) for i, depth in later if math_width(prefix + tex[start:i]) <= width] or later[:1]
+        fitting = fitting or later[:1]
         outermost = min(depth for _, depth in fitting)
         cut = max(i for i, depth in fitting if depth == outermost)
-        if math_width(prefix + tex[start:cut]) < width / 2:  # too short a line: fill it instead
+        if width_of(prefix + tex[start:cut]) < width / 2:  # too short a line: fill it instead
             cut = max(i for i, _ in fitting)
         lines.append(tex[start:cut])
         start, width = cut + 1, rest
     return lines + [tex[start:]]
+
+
+def open_group(tex: str, start: int, end: int) -> str | None:
+    r"""`tex` with the widest \frac or \sqrt that starts between `start` and `end` (outside any
+    {…} group) rewritten so that the signs inside it can break a line, or None if none can:
+    ``\frac{N}{D}`` becomes ``\frac{1}{D}(N)``, ``\sqrt{X}`` becomes ``(X)^{1/2}``.
+
+    >>> open_group("c_{1} \\sqrt{a + b}", 0, 20)
+    'c_{1} (a + b)^{1/2}'
+    """
+    candidates = []
+    for i, depth in _group_starts(tex):
+        if start <= i < end and depth == 0 and tex.startswith(("\\frac{", "\\sqrt{"), i):
+            groups, after = _groups(tex, tex.index("{", i), 2 if tex.startswith("\\frac", i) else 1)
+            inside = groups[0]
+            if break_points(inside):
+                candidates.append((math_width(tex[i:after]), i, groups, after))
+    if not candidates:
+        return None
+    _, i, groups, after = max(candidates)
+    inside = groups[0]
+    opening, closing = ("\\{", "\\}") if "[" in inside else ("[", "]") if "(" in inside else ("(", ")")
+    wrapped = f"{opening}{inside}{closing}" if any(depth == 0 for _, depth in break_points(inside)) else inside
+    if len(groups) == 2:
+        space = "" if wrapped[0] in "([\\" else " "
+        return f"{tex[:i]}\\frac{{1}}{{{groups[1]}}}{space}{wrapped}{tex[after:]}"
+    return f"{tex[:i]}{wrapped}^{{1/2}}{tex[after:]}"
+
+
+def _group_starts(tex: str):
+    """(position, brace depth) of each backslash."""
+    depth = 0
+    for i, ch in enumerate(tex):
+        if ch == "\\":
+            yield i, depth
+        elif ch == "{" and not tex[i - 1:i] == "\\":
+            depth += 1
+        elif ch == "}" and not tex[i - 1:i] == "\\":
+            depth -= 1
+
+
+def _groups(tex: str, i: int, count: int) -> tuple[list[str], int]:
+    """The contents of `count` {…} groups from position `i`, and the position after them."""
+    groups = []
+    for _ in range(count):
+        depth, begin = 0, i
+        while True:
+            if tex.startswith(("\\{", "\\}"), i):
+                i += 2
+                continue
+            depth += (tex[i] == "{") - (tex[i] == "}")
+            i += 1
+            if depth == 0:
+                break
+        groups.append(tex[begin + 1:i - 1])
+    return groups, i

@@ -90,8 +90,8 @@ class _Measure:
             self.i += 1
         self.i += self.i == start  # a one-character command such as \, or \{
         name = self.tex[start:self.i]
-        if name.lower() in _GREEK_WIDTH:
-            return _GREEK_WIDTH.get(name, .75) * scale, True
+        if name.lower() in _GREEK_WIDTH:  # in a script, with a little of its italic correction
+            return (_GREEK_WIDTH.get(name, .75) + (.04 if scale < 1 else 0.0)) * scale, True
         if name in _SPACES:
             return _SPACES[name] * scale, operand
         if name == "frac":
@@ -99,7 +99,7 @@ class _Measure:
             return max(self.argument(inner), self.argument(inner)) + .24 * scale, True
         if name == "sqrt":
             return self.argument(scale) + .833 * scale, True
-        if name in ("bar", "hat", "vec", "mathit", "mathbf"):
+        if name in ("bar", "overline", "hat", "vec", "mathit", "mathbf"):
             return self.argument(scale), True
         if name in ("mathrm", "text", "operatorname"):
             before = self.i

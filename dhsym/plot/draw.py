@@ -36,13 +36,14 @@ FORMATS = ("png", "pdf", "svg")
 # ---------------------------------------------------------------- pictures
 
 def draw(chain, values=None, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
-         frame_offset=0):
+         frame_offset=None):
     """Draw one arm: links, joints (○ revolute, □ prismatic) and every frame's x/y/z triad.
 
     `ax` is an Axes to draw into (a 2D Axes gives the view from above), a Figure to add one
     to, or None for a new pyplot figure. `planar` None decides from the numbers; False forces
     3D. `frame_offset` renumbers the frames in the picture: a wrist that a lecture numbers
-    3..6 is drawn with frame_offset=3. Returns the Axes.
+    3..6 is drawn with frame_offset=3 (default: the chain's own, from its robot file's
+    `first_frame`). Returns the Axes.
 
     >>> from dhsym.io.library import load
     >>> from matplotlib.figure import Figure
@@ -56,7 +57,7 @@ def draw(chain, values=None, ax=None, planar=None, show_frames=True, triad_scale
 
 
 def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
-                frame_offset=0):
+                frame_offset=None):
     """Draw several chains in one world frame, e.g. the two halves of a parallel mechanism.
 
     Each item is (chain, values, colour, label); colour and label may be left off or None.
@@ -81,9 +82,11 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
     arrows = []
     if show_frames:
         triads = _Triads(triad_scale or TRIAD_FRACTION * size, size)
-        for picture, prefix in zip(skeletons, _prefixes([label for _, _, _, label in items]), strict=True):
+        for picture, prefix, (chain, *_) in zip(skeletons, _prefixes([label for *_, label in items]), items,
+                                                strict=True):
+            offset = chain.frame_offset if frame_offset is None else frame_offset
             for frame, pose in picture.poses:
-                triads.add(prefix + _frame_name(frame, frame_offset), pose)
+                triads.add(prefix + _frame_name(frame, offset), pose)
         arrows = triads.draw(ax, flat)
     _set_limits(ax, np.vstack([points] + [[a.origin, a.tip] for a in arrows]), flat, size, skeletons)
     if title:

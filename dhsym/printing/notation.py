@@ -6,6 +6,11 @@ minus sign (after a twist of π) carries a bar: ``c12̄4 = cos(θ1+θ2−θ4)``,
 ``c_{12\\bar{4}}``, ASCII ``c(12-4)``. When any joint number has two digits the indices are
 separated by commas, so ``c_{1,10}`` cannot be misread as joint 110.
 
+The index is the bare joint number when every joint angle is a θ (``c1 = cos θ1``). When the
+angles are named with other Greek letters, or with several (θ1, φ2, ψ3), each index keeps its
+letter, so that ``cφ2 = cos φ2`` (LaTeX ``c_{\\phi 2}``) is never confused with the ``c2 = cos θ2``
+of another chain: ``cθ1,φ2 = cos(θ1 + φ2)``.
+
 Offsets (``theta: theta_2 - pi/4``): an abbreviation stands for the cosine or sine of the joint
 angles *as the table writes them*, offsets included, and the legend says so:
 ``c12 = cos(θ1 + θ2 − π/4)``. An offset that is a multiple of π/2 folds into the notation
@@ -19,6 +24,9 @@ gives each angle its written offset back before printing (an exact identity).
 >>> notation = Notation(t)
 >>> notation.abbreviation(sympy.cos(t[0] + t[1] - t[3]))
 (1, Abbreviation(function='c', indices=((1, 1), (2, 1), (4, -1))))
+>>> mixed = Notation(sympy.symbols("theta_1 phi_2", real=True))
+>>> mixed.abbreviation(sympy.sin(sum(mixed.label)))[1].label("latex")
+'s_{\\\\theta 1,\\\\phi 2}'
 >>> display_name("theta_1", "unicode"), display_name("theta_1", "latex"), display_name("l_13", "ascii")
 ('θ1', '\\\\theta_{1}', 'l13')
 >>> offset = Notation(t[:2], {t[1]: -sympy.pi / 4})
@@ -54,7 +62,7 @@ class Abbreviation:
 
     def label(self, style: str) -> str:
         """c12 (unicode/ascii), c_{12} (latex); c(12-4) in ascii when a joint is subtracted."""
-        joined = ("," if self.wide else "").join(_index_text(n, s, style) for n, s in self.indices)
+        joined = ("," if self.wide else "").join(_index_text(_label_text(n, style), s, style) for n, s in self.indices)
         if style == "latex":
             return f"{self.function}_{{{joined}}}"
         if style == "ascii" and (self.wide or any(s < 0 for _, s in self.indices)):
@@ -69,27 +77,27 @@ class Abbreviation:
 class Notation:
     """Knows the joint variables of one chain, in joint order."""
 
-    def __init__(self, joint_variables, offsets=None, write=None):
+    def __init__(self, joint_variables, offsets=None, write=None, write_sympy=None):
         """Joint labels come from the names' subscripts when every joint variable has a
         distinct one: θ4, θ5, θ6 of a wrist give c4, c5, c6, and a general row in θ_i gives c_i.
-        Otherwise joints are numbered by row. `offsets` maps a joint variable to the offset its
-        angle keeps (see `written_offsets`); `write` prints an offset in a legend (a printer's own)."""
+        Otherwise joints are numbered by row. Angles named with Greek letters other than θ
+        keep their letter in the label: φ2 gives cφ2. `offsets` maps a joint variable to the
+        offset its angle keeps (see `written_offsets`); `write` prints an offset in a legend (a
+        printer's own), `write_sympy` in SymPy's form (the JSON legend)."""
         joint_variables = list(joint_variables)
         self.offsets = {v: sympy.sympify(o) for v, o in (offsets or {}).items() if o != 0}
         self.write = write or sympy.sstr
+        self.write_sympy = write_sympy or sympy.sstr
         self._found: dict = {}  # abbreviation() of each cos/sin seen: term ordering asks again and again
         labels = [_subscript(s.name) for s in joint_variables]
+        if None not in labels and _lettered(joint_variables):
+            labels = [_letter(s.name) + label for s, label in zip(joint_variables, labels)]
         if None in labels or len(set(labels)) != len(labels):
             labels = list(range(1, len(joint_variables) + 1))
         elif all(label.isdigit() for label in labels):
             labels = [int(label) for label in labels]
         self.label = dict(zip(joint_variables, labels))
         self.position = {symbol: k for k, symbol in enumerate(joint_variables, 1)}
-
-    @property
-    def index(self) -> dict:
-        """Joint variable -> its label (a number, or a subscript such as 'i')."""
-        return self.label
 
     def abbreviation(self, expr: sympy.Expr) -> tuple[int, Abbreviation] | None:
         """(sign, abbreviation) if expr is cos/sin of a signed sum of joint angles, each with the
@@ -174,22 +182,34 @@ class Notation:
         return sympy.Add(*(sign * names[label] for label, sign in abbreviation.indices)) + self.offset(abbreviation)
 
     def meaning(self, abbreviation: Abbreviation, style: str) -> str:
-        """What an abbreviation stands for: 'cos θ1', 'sin(θ2 + θ3)' or 'cos(θ2 − π/4)'."""
+        """What an abbreviation stands for: 'cos θ1', 'sin(θ2 + θ3)' or 'cos(θ2 − π/4)'; in the
+        "sympy" style with the robot file's names, as SymPy reads it back: 'sin(theta_2 + theta_3)'."""
+        function = {"c": "cos", "s": "sin"}[abbreviation.function]
+        if style == "sympy":
+            terms = " ".join(("- " if sign < 0 else "+ ") + self.name_of(number)
+                             for number, sign in abbreviation.indices).lstrip("+ ")
+            return f"{function}({terms}{self._offset_text(abbreviation, style)})"
         names = {label: symbol for symbol, label in self.label.items()}
         angle = ""
         for position, (number, sign) in enumerate(abbreviation.indices):
             name = display_name(names[number].name, style)
             angle += (_MINUS[style] if sign < 0 else " + " if position else "") + name
-        offset = self.offset(abbreviation)
-        for term in sorted(sympy.Add.make_args(offset), key=self.angle_key) if offset != 0 else ():
-            negative = term.could_extract_minus_sign()
-            angle += (_MINUS[style] if negative else " + ") + self.write(-term if negative else term)
-        function = {"c": "cos", "s": "sin"}[abbreviation.function]
-        single = len(abbreviation.indices) == 1 and offset == 0
+        angle += self._offset_text(abbreviation, style)
+        single = len(abbreviation.indices) == 1 and self.offset(abbreviation) == 0
         if style == "latex":
             function = "\\" + function
             return f"{function}{{{angle}}}" if single else f"{function}({angle})"
         return f"{function} {angle}" if single else f"{function}({angle})"
+
+    def _offset_text(self, abbreviation: Abbreviation, style: str) -> str:
+        """' − π/4' for an abbreviation whose angle keeps an offset, else ''; symbols before numbers."""
+        offset, text = self.offset(abbreviation), ""
+        write = self.write_sympy if style == "sympy" else self.write
+        minus = " - " if style == "sympy" else _MINUS[style]
+        for term in sorted(sympy.Add.make_args(offset), key=self.angle_key) if offset != 0 else ():
+            negative = term.could_extract_minus_sign()
+            text += (minus if negative else " + ") + write(-term if negative else term)
+        return text
 
     def term_key(self, term: sympy.Expr) -> tuple:
         """Order terms by joint: constants first, then by the lowest joint they involve."""
@@ -254,6 +274,27 @@ def written_offsets(rows) -> dict:
     return offsets
 
 
+def _letter(name: str) -> str:
+    """The letter of a name, Greek as its Unicode character: phi_2 -> 'φ'."""
+    base = split_super_sub(name)[0]
+    return greek_unicode.get(base, base)
+
+
+def _lettered(joint_variables) -> bool:
+    """Whether the joint angles (the variables named with a Greek letter) are not all θ."""
+    letters = {_letter(s.name) for s in joint_variables} & set(GREEK_NAMES)
+    return bool(letters) and letters != {"θ"}
+
+
+def _label_text(label, style: str) -> str:
+    """A joint label in a style: 'φ2' is φ2 (unicode), \\phi 2 (LaTeX), phi2 (ASCII)."""
+    text = str(label)
+    if text[:1] not in GREEK_NAMES or style == "unicode":
+        return text
+    name = GREEK_NAMES[text[0]]
+    return (greek_latex(name) + " " if style == "latex" else name) + text[1:]
+
+
 def _subscript(name: str) -> str | None:
     _, _, subs = split_super_sub(name)
     text = subs[0].strip("{}") if len(subs) == 1 else ""
@@ -264,8 +305,8 @@ def _index_text(label, sign: int, style: str) -> str:
     text = str(label)
     if sign > 0:
         return text
-    if style == "latex":
-        return f"\\bar{{{text}}}"
+    if style == "latex":  # a bar over a whole lettered label: \overline{\phi 2}
+        return f"\\bar{{{text}}}" if text.isalnum() else f"\\overline{{{text}}}"
     return _COMBINING_BAR.join(text) + _COMBINING_BAR if style == "unicode" else f"-{text}"
 
 

@@ -80,7 +80,9 @@ class _TextbookMixin:
     def _setup(self):
         settings = self._settings
         self.numbers = settings["numbers"] or WrittenNumbers()
-        self.notation = Notation(settings["joint_variables"], settings["offsets"], write=self._print)
+        exact = {key: settings[key] for key in ("joint_variables", "offsets", "numbers")}
+        self.notation = Notation(settings["joint_variables"], settings["offsets"], write=self._print,
+                                 write_sympy=lambda expr: ExactPrinter(exact).doprint(expr))
         self.marked = set(settings["marked"])  # symbols printed with a star: the joint variables in a DH table
         self.used: set = set()
         self._angle = 0  # > 0 while printing the angle of a cos or sin: joint variables come first
@@ -274,7 +276,8 @@ class ExactPrinter(StrPrinter):
     def __init__(self, joint_variables=None, settings=None, **keywords):
         StrPrinter.__init__(self, _settings(joint_variables, settings, keywords))
         self.numbers = self._settings["numbers"] or WrittenNumbers()
-        self.notation = Notation(self._settings["joint_variables"], self._settings["offsets"], write=self._print)
+        self.notation = Notation(self._settings["joint_variables"], self._settings["offsets"], write=self._print,
+                                 write_sympy=self._print)
 
     def doprint(self, expr):
         return super().doprint(self.notation.as_written(expr))

@@ -155,9 +155,28 @@ def text_matrix(matrix: sympy.Matrix, printer: TextPrinter, width: int = 100) ->
 
 
 def legend_entries(printer, style: str) -> list[tuple[str, str]]:
-    """(abbreviation, meaning) for exactly the abbreviations the printer has written."""
-    return [(a.label(style), printer.notation.meaning(a, style))
-            for a in sorted(printer.used, key=lambda a: a.sort_key())]
+    """(abbreviation, meaning) for exactly the abbreviations the printer has written, in the
+    order of the joints: the one source of every legend (text, LaTeX, JSON with `style`
+    "sympy")."""
+    label_style = "ascii" if style == "sympy" else style
+    return [(a.label(label_style), printer.notation.meaning(a, style)) for a in used_abbreviations(printer)]
+
+
+def used_abbreviations(printer) -> list:
+    return sorted(printer.used, key=lambda a: a.sort_key())
+
+
+def legend_remarks(printer) -> list[str]:
+    """What a reader of the legend must be told about the labels the printer has written."""
+    used = printer.used
+    remarks = []
+    if any(sign < 0 for a in used for _, sign in a.indices):
+        remarks.append("a bar over a joint number marks an angle that is subtracted")
+    if any(isinstance(label, str) and len(label) > 1 and label[0].isalpha() for a in used for label, _ in a.indices):
+        remarks.append("each index names its joint angle, and commas separate them")
+    elif any(a.wide for a in used):
+        remarks.append("commas separate the joint numbers when one of them has two digits")
+    return remarks
 
 
 def text_legend(printer: TextPrinter, width: int = 100) -> str:
@@ -221,11 +240,6 @@ def bmatrix(cells) -> str:
     return "\\begin{bmatrix}\n" + " \\\\\n".join(" & ".join(row) for row in cells) + "\n\\end{bmatrix}"
 
 
-def latex_legend(printer: LatexPrinter) -> str:
-    entries = legend_entries(printer, "latex")
-    return ",\\quad ".join(f"{label} = {meaning}" for label, meaning in entries)
-
-
 def latex_table(chain) -> str:
     """The DH table of a chain as a LaTeX array; joint variables carry a star."""
     return latex_array(*latex_table_cells(chain, latex_printer(chain, marked=chain.joint_variables)))
@@ -253,22 +267,9 @@ def json_result(chain, i, j, matrix: sympy.Matrix) -> dict:
     return {
         "robot": chain.name,
         "convention": chain.convention,
-        "from": i,
-        "to": j,
+        "from": chain.frame_number(i),
+        "to": chain.frame_number(j),
         "joint_variables": [s.name for s in chain.joint_variables],
         "matrix": [[exact.doprint(matrix[r, c]) for c in range(4)] for r in range(4)],
-        "abbreviations": {label: meaning for label, meaning in _json_legend(printer, exact)},
+        "abbreviations": dict(legend_entries(printer, "sympy")),
     }
-
-
-def _json_legend(printer: TextPrinter, exact: ExactPrinter):
-    """(ascii label, its meaning in SymPy's form), joints in joint order, offsets as written."""
-    for abbreviation in sorted(printer.used, key=lambda a: a.sort_key()):
-        angle = " ".join(("- " if sign < 0 else "+ ") + printer.notation.name_of(label)
-                         for label, sign in abbreviation.indices).lstrip("+ ")
-        offset = printer.notation.offset(abbreviation)
-        for term in sorted(sympy.Add.make_args(offset), key=printer.notation.angle_key) if offset != 0 else ():
-            negative = term.could_extract_minus_sign()
-            angle += (" - " if negative else " + ") + exact.doprint(-term if negative else term)
-        function = "cos" if abbreviation.function == "c" else "sin"
-        yield abbreviation.label("ascii"), f"{function}({angle})"

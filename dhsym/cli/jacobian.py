@@ -1,0 +1,67 @@
+"""`dhsym jacobian`: the geometric Jacobian in any frame, its factored determinant and the
+singular configurations, and (`--steps`) Craig's velocity propagation link by link.
+
+    dhsym jacobian puma560 --frame 3
+    dhsym jacobian planar3r --steps
+    dhsym jacobian stanford --format json
+"""
+from __future__ import annotations
+
+import json
+
+from ..printing import jacobian as show
+from ..printing.printers import chain_settings
+from ..printing.render import convention_note, text_legend
+from ..velocity import determinant, jacobian, propagate, rate_symbols, singularities
+from ..velocity.jacobian import resolve_frames
+from .options import format_options, robot_options
+
+
+def add_parsers(commands) -> None:
+    sub = commands.add_parser("jacobian", parents=[robot_options(), format_options()],
+                              help="print the Jacobian, its determinant and the singular configurations",
+                              description="Print the geometric Jacobian (rows vx vy vz ωx ωy ωz) of the origin of "
+                              "the last frame, expressed in frame F, its factored determinant and the factors whose "
+                              "vanishing makes it singular, each with its meaning.")
+    sub.add_argument("--frame", metavar="F", help="the frame J is expressed in (default: base, else 0)")
+    sub.add_argument("--point", metavar="P", help="the frame whose origin moves (default: tool, else n)")
+    sub.add_argument("--steps", action="store_true",
+                     help="derive it by Craig's outward velocity propagation, link by link")
+    sub.set_defaults(run=run)
+
+
+def run(robot, args) -> str:
+    chain = robot.chain
+    frame, point = resolve_frames(chain, args.frame, args.point)
+    if args.format == "latex":
+        from ..latex.velocity import snippet  # the LaTeX layout lives with the documents
+
+        return snippet(chain, frame, point, args.steps)
+    matrix = jacobian(chain, frame, point)
+    result = determinant(chain, frame, point)
+    found = singularities(chain, result, point)
+    if args.format == "json":
+        return json.dumps(show.json_jacobian(chain, frame, point, matrix, result), indent=2, ensure_ascii=False)
+    steps = propagate(chain) if args.steps else None
+    return _text(chain, frame, point, matrix, result, found, steps, args)
+
+
+def _text(chain, frame, point, matrix, result, found, steps, args) -> str:
+    style = "ascii" if args.ascii else "unicode"
+    printer = show.RateTextPrinter(chain.joint_variables, rate_symbols(chain), ascii=args.ascii,
+                                   settings=chain_settings(chain))
+    title = (f"{chain.name}: Jacobian {show.jacobian_title(frame, point, style)} of the {show.point_words(point)}, "
+             f"in frame {frame}  ({chain.convention} DH)")
+    blocks = [title, "rows vx vy vz ωx ωy ωz; " + convention_note(chain.convention, args.ascii)]
+    if steps:
+        blocks.append("Velocity propagation (Craig): ω and v of each frame in that frame, from the rates "
+                      + ", ".join(printer.doprint(r) for r in rate_symbols(chain)) + "\n"
+                      + show.text_steps(steps, printer, args.width))
+        blocks.append(f"The rates' coefficients in the last step are the columns of J in frame {steps[-1].frame}.")
+    blocks.append(show.text_grid(matrix, printer, args.width))
+    blocks.append(show.text_determinant(result, found, printer, args.width))
+    legend = text_legend(printer, args.width)
+    text = "\n\n".join(blocks) + ("\n\n" + legend if legend else "")
+    if args.ascii:
+        text = text.replace("ω", "w").replace("−", "-").replace("×", "x").replace("–", "-").replace("·", "*")
+    return text

@@ -1,0 +1,46 @@
+"""`dhsym screws`: the product-of-exponentials form of a DH robot, the space-frame screw
+axes S_i = (ω_i, v_i) and the home pose M (Lynch and Park, Modern Robotics, section 4.1).
+
+    dhsym screws ur5
+"""
+from __future__ import annotations
+
+import json
+
+from ..geometry.screws import screw_axes
+from ..printing import render
+from ..printing.printers import LatexPrinter
+from .options import format_options, robot_options
+
+
+def add_parsers(commands) -> None:
+    sub = commands.add_parser("screws", parents=[robot_options(), format_options()],
+                              help="print the screw axes S_i and home pose M",
+                              description="Print the space-frame screw axes S_i = (ω_i, v_i) of every joint and "
+                              "the home pose M (base → tool with every joint variable zero), so that "
+                              "T(q) = exp([S1] q1) ⋯ exp([Sn] qn) M.")
+    sub.set_defaults(run=run)
+
+
+def run(robot, args) -> str:
+    chain = robot.chain
+    screws = screw_axes(chain)
+    variables = chain.joint_variables
+    if args.format == "json":
+        return json.dumps({"robot": chain.name, "frame": str(chain.first_frame),
+                           "screws": {v.name: [str(x) for x in screws.matrix[:, i]] for i, v in enumerate(variables)},
+                           "home": [[str(x) for x in screws.home.row(r)] for r in range(4)]}, indent=2,
+                          ensure_ascii=False)
+    if args.format == "latex":
+        printer = LatexPrinter(variables)
+        return (f"\\[\nS = {render.latex_matrix(screws.matrix, printer)}\n\\]\n\n"
+                f"\\[\nM = {render.latex_matrix(screws.home, printer)}\n\\]")
+    printer = render.text_printer(chain, ascii=args.ascii)
+    title = f"{chain.name}: screw axes in frame {chain.first_frame} at q = 0  (from {chain.convention} DH)"
+    lines = [title, "S_i = (ωx, ωy, ωz; vx, vy, vz)", ""]
+    for i, variable in enumerate(variables):
+        column = [printer.doprint(x) for x in screws.matrix[:, i]]
+        lines.append(f"S{i + 1} ({printer.doprint(variable)}) = ({', '.join(column[:3])}; {', '.join(column[3:])})")
+    lines += ["", "M =", render.text_matrix(screws.home, printer, args.width)]
+    text = "\n".join(lines)
+    return text.replace("ω", "w").replace("−", "-") if args.ascii else text

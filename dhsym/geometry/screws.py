@@ -1,0 +1,108 @@
+"""The product-of-exponentials description of a DH robot (Lynch and Park, Modern Robotics,
+section 4.1): the space-frame screw axes S_i = (ω_i, v_i) and the home pose M, symbolically,
+and the joint axes of any chain at its zero configuration.
+
+>>> from dhsym.io.library import load
+>>> screws = screw_axes(load("planar2r"))
+>>> screws.matrix.T
+Matrix([
+[0, 0, 1, 0,    0, 0],
+[0, 0, 1, 0, -a_1, 0]])
+>>> screws.home[:3, 3].T
+Matrix([[a_1 + a_2, 0, 0]])
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy
+
+from ..core.transforms import product
+from ..errors import UserError
+from .lines import JointAxis
+
+
+@dataclass(frozen=True)
+class Screws:
+    """Screw axes as the columns of a 6×n matrix (ω over v) and the home pose M, in the first
+    frame of the chain (base, else 0), with every joint variable zero."""
+
+    matrix: sympy.Matrix
+    home: sympy.Matrix
+
+
+def zero_poses(chain) -> list[sympy.Matrix]:
+    """The pose of each joint's frame at the zero configuration (the frame whose z is the
+    joint axis: i−1 in standard DH, i in modified), then the last frame's pose (tool, else n)."""
+    zero = {v: 0 for v in chain.joint_variables}
+    pose = product(chain.base)
+    joint_frames = []
+    for row in chain.rows:
+        steps = [step.__class__(step.kind, step.value.xreplace(zero)) for step in row.steps(chain.convention)]
+        if chain.convention == "standard":
+            joint_frames.append(pose)
+            pose = pose * product(steps)
+        else:
+            pose = pose * product(steps)
+            joint_frames.append(pose)
+    pose = pose * product(chain.tool)
+    return [_tidy(p) for p in joint_frames + [pose]]
+
+
+def rate(row) -> sympy.Expr:
+    """How fast the row's θ (revolute) or d (prismatic) changes with its joint variable: ±1 as a rule."""
+    return sympy.diff(row.theta if row.joint == "R" else row.d, row.variable)
+
+
+def chain_axes(chain) -> tuple[list[JointAxis], sympy.Matrix]:
+    """The joint axes at the zero configuration (base coordinates), each pointing along the
+    joint's positive motion (d = −d3 moves along −z), and the tool pose."""
+    poses = zero_poses(chain)
+    axes = []
+    for number, (row, pose) in enumerate(zip(chain.rows, poses), 1):
+        sign = rate(row)
+        if sign not in (1, -1):
+            raise UserError(f"joint {number}: {row.variable} enters its row as {sign}·{row.variable}; only "
+                            f"±{row.variable} has a joint axis of its own")
+        axes.append(JointAxis(row.joint, pose[:3, 3], sign * pose[:3, 2], row.variable.name))
+    return axes, poses[-1]
+
+
+def screw_axes(chain) -> Screws:
+    """S_i = (ω_i, −ω_i × p_i) for a revolute joint, (0, ω_i) for a prismatic one; and M."""
+    poses = zero_poses(chain)
+    columns = []
+    for row, pose in zip(chain.rows, poses):
+        direction, point = rate(row) * pose[:3, 2], pose[:3, 3]
+        if row.joint == "R":
+            columns.append(list(direction) + list(-direction.cross(point)))
+        else:
+            columns.append([0, 0, 0] + list(direction))
+    matrix = sympy.Matrix(columns).T.applyfunc(lambda e: sympy.simplify(sympy.expand(e)))
+    return Screws(matrix, poses[-1])
+
+
+def exponential(screw: sympy.Matrix, q) -> sympy.Matrix:
+    """e^{[S] q} as a 4×4 matrix (Rodrigues' formula; Modern Robotics eq. 3.88 and 3.51)."""
+    omega, v = screw[:3, 0], screw[3:, 0]
+    result = sympy.eye(4)
+    if all(c == 0 for c in omega):
+        result[:3, 3] = v * q
+        return result
+    w = sympy.Matrix([[0, -omega[2], omega[1]], [omega[2], 0, -omega[0]], [-omega[1], omega[0], 0]])
+    rotation = sympy.eye(3) + sympy.sin(q) * w + (1 - sympy.cos(q)) * w * w
+    result[:3, :3] = rotation
+    result[:3, 3] = (sympy.eye(3) * q + (1 - sympy.cos(q)) * w + (q - sympy.sin(q)) * w * w) * v
+    return result
+
+
+def product_of_exponentials(screws: Screws, values) -> sympy.Matrix:
+    """T(q) = e^{[S1] q1} ⋯ e^{[Sn] qn} M (Modern Robotics eq. 4.14)."""
+    result = sympy.eye(4)
+    for i, q in enumerate(values):
+        result = result * exponential(screws.matrix[:, i], q)
+    return result * screws.home
+
+
+def _tidy(matrix: sympy.Matrix) -> sympy.Matrix:
+    return matrix.applyfunc(lambda e: sympy.simplify(e) if e.free_symbols else e)

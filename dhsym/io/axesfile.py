@@ -1,0 +1,94 @@
+"""The geometric form of a robot file: `axes:` (joint type, a point and a direction per joint,
+at the zero configuration, in the base frame) plus `tool:` (the tool frame at the zero
+configuration, as steps from the base frame) instead of `joints:`. The DH table in the file's
+`convention` is derived by dhsym.geometry.frames; joint variables are `q_1..q_n` unless an axis
+names its own with `var:`.
+
+>>> from dhsym.io.robotfile import load_robot_text
+>>> robot = load_robot_text('''
+... convention: standard
+... axes:
+...   - {joint: R, point: [0, 0, 0], direction: [0, 0, 1]}
+...   - {joint: R, point: [l_1, 0, 0], direction: [0, 0, 1]}
+... tool: [{Tx: l_1 + l_2}]
+... ''', "arm.yaml")
+>>> [(row.theta, row.d, row.a, row.alpha) for row in robot.chain.rows]
+[(q_1, 0, l_1, 0), (q_2, 0, l_2, 0)]
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import sympy
+
+from ..core.transforms import product
+from ..errors import UserError
+from ..geometry.exact import is_zero_vector, unit
+from ..geometry.frames import assign_frames
+from ..geometry.lines import JointAxis
+from .expr import real_symbol
+
+AXIS_KEYS = ("joint", "point", "direction", "var")
+_JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
+
+
+def axes_chain(reader, top: dict, convention: str):
+    """The chain of an `axes:` robot file; `reader` is the robot-file reader (it places errors)."""
+    for key in ("joints", "base"):
+        if key in top:
+            raise UserError(f"{key}: cannot be used with axes: (the axes are given in the base frame)",
+                            reader.where(top[key][0]))
+    if "tool" not in top:
+        raise UserError("axes: needs tool: too, the tool frame at the zero configuration as steps from the base",
+                        reader.where(top["axes"][0]))
+    axes_node = top["axes"][1]
+    nodes = reader.sequence(axes_node, "axes")
+    if not nodes:
+        raise UserError("axes is empty; a robot needs at least one joint", reader.where(axes_node))
+    axes, variables = [], []
+    for number, node in enumerate(nodes, 1):
+        axis, variable = _axis(reader, node, number)
+        if variable in variables:
+            raise UserError(f"axis {number} var: {variable} is already the variable of axis "
+                            f"{variables.index(variable) + 1}", reader.where(node))
+        axes.append(axis)
+        variables.append(variable)
+    tool_steps = reader.steps(top["tool"][1], "tool", set(variables))
+    try:
+        assignment = assign_frames(axes, product(tool_steps), convention, variables)
+    except UserError as error:
+        raise error.at(reader.where(axes_node)) from None
+    return assignment.chain(name=reader.optional_text(top, "name", Path(reader.filename).stem),
+                            source=reader.optional_text(top, "source", ""),
+                            notes=reader.optional_text(top, "notes", ""))
+
+
+def _axis(reader, node, number: int):
+    what = f"axis {number}"
+    items = reader.mapping(node, what, AXIS_KEYS)
+    for key in ("joint", "point", "direction"):
+        if key not in items:
+            raise UserError(f"{what} is missing {key!r}", reader.where(node))
+    joint_node = items["joint"][1]
+    kind = _JOINT_TYPES.get(reader.text(joint_node, f"{what} joint").strip().lower())
+    if kind is None:
+        raise UserError(f"{what} joint: must be R (revolute) or P (prismatic), not {joint_node.value!r}",
+                        reader.where(joint_node))
+    point = _triple(reader, items["point"][1], f"{what} point")
+    direction_node = items["direction"][1]
+    direction = _triple(reader, direction_node, f"{what} direction")
+    if any(not c.is_number for c in direction):
+        raise UserError(f"{what} direction: must be numbers, not symbols", reader.where(direction_node))
+    if is_zero_vector(direction):
+        raise UserError(f"{what} direction: has zero length", reader.where(direction_node))
+    name = reader.text(items["var"][1], f"{what} var").strip() if "var" in items else f"q_{number}"
+    if not name.isidentifier() or name.startswith("_"):
+        raise UserError(f"{what} var: {name!r} is not a name", reader.where(items["var"][1]))
+    return JointAxis(kind, point, unit(direction)), real_symbol(name)
+
+
+def _triple(reader, node, what: str) -> sympy.Matrix:
+    values = reader.sequence(node, what)
+    if len(values) != 3:
+        raise UserError(f"{what} must be a list of 3 values [x, y, z], not {len(values)}", reader.where(node))
+    return sympy.Matrix([reader.expression(value, f"{what}") for value in values])

@@ -1,0 +1,39 @@
+r"""Transforms as LaTeX to paste into a document (``dhsym fk/links --format latex``), laid out
+by the documents' rule for a given text width: a matrix that fits is a ``bmatrix``, a wider
+one is the matrix of names and its elements in ``align*`` (long ones broken), and the legend
+follows as ``where`` and rows of ``align*``. Needs ``amsmath``.
+
+>>> from dhsym.io.library import load
+>>> arm = load("planar2r")
+>>> print(results_latex(arm, [(0, 1, arm.link(1))]))  # doctest: +ELLIPSIS
+\[
+{}^{0}T_{1} =
+\begin{bmatrix}
+c_{1} & -s_{1} & 0 & a_{1} c_{1} \\
+...
+where
+\begin{align*}
+c_{1} &= \cos{\theta_{1}} & s_{1} &= \sin{\theta_{1}}
+\end{align*}
+"""
+from __future__ import annotations
+
+from ..printing.printers import LatexPrinter, chain_settings
+from ..printing.render import transform_title
+from .layout import PAGES, Page, flat, matrix_items
+from .legend import legend_items
+
+ARTICLE_TEXT_WIDTH_PT = PAGES["snippet"].width_pt  # a standard `article` at 10 pt
+
+
+def results_latex(chain, results, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) -> str:
+    """(i, j, matrix) results of a chain as displays that fit `text_width_pt` at 10 pt."""
+    page = Page(text_width_pt, PAGES["snippet"].font_pt)
+    printer = LatexPrinter(chain_settings(chain))  # decimals and offsets as the file wrote them
+    parts = []
+    for i, j, matrix in results:
+        cells = [[printer.doprint(matrix[r, c]) for c in range(4)] for r in range(4)]
+        title = transform_title(chain.frame_number(i), chain.frame_number(j), "latex")
+        parts.append("\n".join(block.latex for block in flat(matrix_items(title, cells, page))))
+    legend = flat(legend_items(printer, page))
+    return "\n\n".join(parts + (["\n".join(block.latex for block in legend)] if legend else []))

@@ -1,0 +1,206 @@
+"""Jacobians for people: 6×n matrices in the c/s notation, their determinant and singular
+configurations, the velocity propagation step by step, and JSON.
+
+Same layout rule as `dhsym fk`: a matrix that fits the width is printed as a matrix; otherwise
+its elements are listed one by one, J11 … J6n, and an element wider than the line breaks
+before a + or −, at the outermost bracket level that has such a sign.
+
+>>> import dhsym
+>>> from dhsym.printing.render import text_printer
+>>> arm = dhsym.load("planar2r")
+>>> print(text_grid(arm.jacobian(frame=2), text_printer(arm)))
+⎡ a1 s2        0  ⎤
+⎢ a2 + a1 c2   a2 ⎥
+⎢ 0            0  ⎥
+⎢ 0            0  ⎥
+⎢ 0            0  ⎥
+⎣ 1            1  ⎦
+"""
+from __future__ import annotations
+
+import textwrap
+
+import sympy
+from sympy.printing.conventions import split_super_sub
+
+from .notation import display_name, subscript, superscript
+from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
+
+ROW_NAMES = ("vx", "vy", "vz", "ωx", "ωy", "ωz")
+
+
+class _Rates:
+    """Prints the joint rates θ̇1, ḋ3 (LaTeX \\dot{\\theta}_{1}; ASCII theta1dot)."""
+
+    def _print_Symbol(self, expr):
+        variable = self.rates.get(expr)
+        if variable is None:
+            return super()._print_Symbol(expr)
+        if self.style == "latex":
+            base, _, subs = split_super_sub(variable.name)
+            return f"\\dot{{{display_name(base, 'latex')}}}" + "".join(f"_{{{s}}}" for s in subs[:1])
+        name = display_name(variable.name, self.style)
+        return name + "dot" if self.style == "ascii" else _dotted(name)
+
+
+def _dotted(name: str) -> str:
+    """θ1 -> θ̇1: a combining dot over the letters before the index."""
+    letters = len(name.rstrip("0123456789₀₁₂₃₄₅₆₇₈₉"))
+    return name[:letters] + "\u0307" + name[letters:]
+
+
+class RateTextPrinter(_Rates, TextPrinter):
+    def __init__(self, joint_variables, rates, ascii=False, settings=None):
+        TextPrinter.__init__(self, joint_variables, settings, ascii=ascii)
+        self.rates = dict(zip(rates, joint_variables))
+
+
+class RateLatexPrinter(_Rates, LatexPrinter):
+    def __init__(self, joint_variables, rates, settings=None):
+        LatexPrinter.__init__(self, joint_variables, settings)
+        self.rates = dict(zip(rates, joint_variables))
+
+
+def jacobian_title(frame, point, style: str = "unicode") -> str:
+    """⁰J (unicode), 0J (ascii), {}^{0}J (latex) for the Jacobian in `frame`; the point is
+    said in words by the caller."""
+    if style == "latex":
+        name = f"\\mathrm{{{frame}}}" if isinstance(frame, str) else str(frame)
+        return f"{{}}^{{{name}}}J"
+    if style == "unicode" and isinstance(frame, int):
+        return f"{superscript(str(frame))}J"
+    return f"{frame}J" if isinstance(frame, int) else f"J({frame})"
+
+
+def point_words(point) -> str:
+    """'origin of frame 6', 'origin of the tool frame'."""
+    return f"origin of frame {point}" if isinstance(point, int) else f"origin of the {point} frame"
+
+
+def element_name(row: int, column: int, n: int, style: str) -> str:
+    """J11 … J6n; J_{1,10} once a column number has two digits."""
+    index = f"{row + 1}{',' if n > 9 else ''}{column + 1}"
+    if style == "latex":
+        return f"J_{{{index}}}"
+    return f"J{index}" if style == "ascii" else f"J{subscript(index)}"
+
+
+def text_grid(matrix: sympy.Matrix, printer: TextPrinter, width: int = 100) -> str:
+    """An aligned matrix, or its named elements J11 … J6n (long ones broken) when too wide."""
+    cells = [[printer.doprint(matrix[r, c]) for c in range(matrix.cols)] for r in range(matrix.rows)]
+    widths = [max(len(row[c]) for row in cells) for c in range(matrix.cols)]
+    ascii = printer.style == "ascii"
+    if sum(widths) + 3 * matrix.cols + 1 <= width:
+        rows = []
+        for r, row in enumerate(cells):
+            left, right = _edges(r, matrix.rows, ascii)
+            rows.append(f"{left} " + "   ".join(cell.ljust(w) for cell, w in zip(row, widths)) + f" {right}")
+        return "\n".join(rows)
+    lines = []
+    style = "ascii" if ascii else "unicode"
+    for c in range(matrix.cols):
+        for r in range(matrix.rows):
+            label = element_name(r, c, matrix.cols, style) + " = "
+            lines.extend(break_text(cells[r][c], width, label))
+    return "\n".join(lines)
+
+
+def _edges(row: int, rows: int, ascii: bool) -> tuple[str, str]:
+    if ascii:
+        return "[", "]"
+    return ("⎡", "⎤") if row == 0 else ("⎣", "⎦") if row == rows - 1 else ("⎢", "⎥")
+
+
+def break_text(text: str, width: int, label: str) -> list[str]:
+    """`label + text` in lines of at most `width`, broken before ' + ' / ' − ' at the
+    shallowest bracket depth; continuation lines are indented under the text.
+
+    >>> break_text("a1 c1 + a2 c12 + a3 c123", 20, "J11 = ")
+    ['J11 = a1 c1 + a2 c12', '      + a3 c123']
+    """
+    indent = " " * len(label)
+    points = _break_points(text)
+    lines, start, prefix = [], 0, label
+    while len(prefix) + len(text) - start > width:
+        later = [(i, depth) for i, depth in points if i > start]
+        fitting = [(i, depth) for i, depth in later if len(prefix) + i - start <= width]
+        if not fitting:
+            break
+        shallowest = min(depth for _, depth in fitting)
+        cut = max(i for i, depth in fitting if depth == shallowest)
+        if len(prefix) + cut - start < width // 2:  # too short a line: fill it instead
+            cut = max(i for i, _ in fitting)
+        lines.append(prefix + text[start:cut])
+        start, prefix = cut + 1, indent
+    return lines + [prefix + text[start:]]
+
+
+def _break_points(text: str) -> list[tuple[int, int]]:
+    points, depth = [], 0
+    for i, ch in enumerate(text):
+        depth += (ch in "([{") - (ch in ")]}")
+        if text.startswith((" + ", " − ", " - "), i):
+            points.append((i, depth))
+    return points
+
+
+def text_determinant(result, found, printer: TextPrinter, width: int = 100) -> str:
+    """'det J = …', what was computed, and one line per singular factor with its meaning."""
+    label = "det J = " if result.block == "J" else f"det J[{result.block}] = "
+    lines = []
+    if result.value is not None:
+        lines.extend(break_text(printer.doprint(result.value), width, label))
+    if result.note:
+        lines.append(textwrap.fill(result.note, width))
+    if found:
+        lines.append("singular where")
+        for singularity in found:
+            first = f"  {printer.doprint(singularity.factor)} = 0: "
+            lines.append(textwrap.fill(singularity.describe(joint_label(printer)), width, initial_indent=first,
+                                       subsequent_indent="    "))
+    elif result.value is not None:
+        lines.append("no factor with joint variables: never singular" if result.value != 0
+                     else "identically zero: singular in every configuration")
+    return "\n".join(lines)
+
+
+def joint_label(printer):
+    """Row number -> the joint's label in the notation (a wrist's rows 1..3 are joints 4..6)."""
+    labels = list(printer.notation.label.values())
+    return lambda row: str(labels[row - 1])
+
+
+def text_steps(steps, printer: TextPrinter, width: int = 100) -> str:
+    """Craig's outward iteration: ¹ω₁ = (…), ¹v₁ = (…) for each frame, in that frame."""
+    lines = []
+    for step in steps:
+        for symbol, vector in (("ω", step.omega), ("v", step.velocity)):
+            entries = ", ".join(printer.doprint(x) for x in vector)
+            lines.extend(break_text(f"({entries})", width, f"{vector_name(symbol, step.frame, printer.style)} = "))
+    return "\n".join(lines)
+
+
+def vector_name(symbol: str, frame, style: str) -> str:
+    """¹ω₁ (unicode), 1w1 (ascii), ω(tool) for a named frame."""
+    if style == "ascii":
+        symbol = {"ω": "w"}.get(symbol, symbol)
+        return f"{frame}{symbol}{frame}" if isinstance(frame, int) else f"{symbol}({frame})"
+    if not isinstance(frame, int):
+        return f"{symbol}({frame})"
+    return f"{superscript(str(frame))}{symbol}{subscript(str(frame))}"
+
+
+def json_jacobian(chain, frame, point, matrix: sympy.Matrix, result) -> dict:
+    """Full cos/sin strings with the robot file's symbol names, decimals and offsets as written;
+    sympy.sympify reads them."""
+    sstr = ExactPrinter(chain_settings(chain)).doprint
+    return {
+        "robot": chain.name,
+        "convention": chain.convention,
+        "frame": frame,
+        "point": point,
+        "joint_variables": [s.name for s in chain.joint_variables],
+        "matrix": [[sstr(matrix[r, c]) for c in range(matrix.cols)] for r in range(matrix.rows)],
+        "determinant": None if result.value is None else sstr(result.value),
+        "singularities": [sstr(f) for f in result.factors],
+    }

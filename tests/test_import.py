@@ -1,0 +1,121 @@
+"""`dhsym import` and the `axes:` form: URDF in, a robot file out that dhsym reads back and that
+has the URDF's kinematics; errors are one line with exit status 2 and no output file."""
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy
+
+from dhsym.cli import app as cli
+from dhsym.geometry.urdf import MAX_URDF_BYTES
+from dhsym.io.library import load
+from dhsym.io.robotfile import load_robot_file
+from tests.urdf_builder import urdf_fk
+
+DATA = Path(__file__).parent / "data"
+
+
+def run(argv, capsys):
+    status = cli.main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+@pytest.mark.parametrize("convention", ["standard", "modified"])
+def test_an_imported_panda_reads_back_with_the_urdf_kinematics(convention, tmp_path, capsys):
+    out_file = tmp_path / "panda.yaml"
+    status, out, err = run(["import", DATA / "panda.urdf", "--convention", convention, "-o", out_file], capsys)
+    assert (status, out) == (0, "")
+    assert err.startswith("dhsym: warning: ") and "1.5707963267948966 → π/2" in err
+    chain = load_robot_file(out_file).chain
+    assert chain.convention == convention and chain.joint_variables == list(sympy.symbols("q_1:8", real=True))
+    assert chain.source == "panda.urdf, links panda_link0 → panda_link8"
+    q = [0.3, -0.7, 1.1, -2.0, 0.4, 1.9, -0.6]
+    numeric = chain.fk(raw=True).xreplace(dict(zip(chain.joint_variables, q))).evalf()
+    urdf_text = (DATA / "panda.urdf").read_text().replace("1.5707963267948966", repr(float(np.pi / 2)))
+    assert np.allclose(np.array(numeric, dtype=float), urdf_fk(urdf_text, q, "panda_link0", "panda_link8"), atol=1e-9)
+
+
+def test_joint_names_become_variables_when_asked(capsys):
+    status, out, _ = run(["import", DATA / "ur5.urdf", "--tip", "tool0", "--variables", "urdf"], capsys)
+    assert status == 0 and "theta: shoulder_pan_joint" in out and "theta: wrist_3_joint" in out
+
+
+def test_several_leaves_are_listed(capsys):
+    status, out, err = run(["import", DATA / "ur5.urdf"], capsys)
+    assert (status, out) == (2, "")
+    assert err == "dhsym: error: the URDF has 2 leaf links below 'world' (tool0, ee_link); choose one with --tip\n"
+
+
+def test_a_tip_that_is_not_below_the_base_is_refused(capsys):
+    status, _, err = run(["import", DATA / "ur5.urdf", "--base", "forearm_link", "--tip", "shoulder_link"], capsys)
+    assert status == 2 and "'shoulder_link' is not below link 'forearm_link'" in err
+
+
+def test_a_file_over_2_mib_is_refused_without_reading_it_all(tmp_path, capsys):
+    huge = tmp_path / "huge.urdf"
+    huge.write_bytes(b"<robot name='x'>" + b" " * (3 << 20) + b"</robot>")
+    assert MAX_URDF_BYTES < huge.stat().st_size
+    status, out, err = run(["import", huge], capsys)
+    assert (status, out) == (2, "")
+    assert err == f"dhsym: error: {huge}:1:1: file is larger than 2 MiB, the limit for URDF files\n"
+
+
+def test_an_error_leaves_no_output_file(tmp_path, capsys):
+    target = tmp_path / "out.yaml"
+    target.write_text("old")
+    status, _, _ = run(["import", Path(__file__).parent / "bad_inputs" / "urdf_zero_axis.urdf", "-o", target], capsys)
+    assert status == 2 and target.read_text() == "old" and os.listdir(tmp_path) == ["out.yaml"]
+
+
+AXES_ARM = """name: SCARA from its axes
+convention: standard
+axes:
+  - {joint: R, point: [0, 0, 0], direction: [0, 0, 1]}
+  - {joint: R, point: [a_1, 0, 0], direction: [0, 0, 1]}
+  - {joint: P, point: [a_1 + a_2, 0, 0], direction: [0, 0, -1], var: d_3}
+  - {joint: R, point: [a_1 + a_2, 0, 0], direction: [0, 0, -1]}
+tool: [{Tx: a_1 + a_2}, {Tz: -d_4}, {Rx: pi}]
+sample: {a_1: 0.4, a_2: 0.3, d_4: 0.1}
+"""
+
+
+def test_the_axes_form_gives_a_table_that_the_commands_use(tmp_path, capsys):
+    path = tmp_path / "scara.yaml"
+    path.write_text(AXES_ARM)
+    status, out, _ = run(["table", path], capsys)
+    assert status == 0 and "d3*" in out and "π" in out
+    chain = load_robot_file(path).chain
+    assert chain.sample and [row.joint for row in chain.rows] == list("RRPR")
+    reference = load("scara_spong")  # the same arm, tabled by hand after Spong
+    status, out, _ = run(["check", path, "--against", "scara_spong"], capsys)
+    assert status == 0, out
+    assert reference.n == chain.n
+
+
+def test_import_turns_an_axes_file_into_a_dh_robot_file(tmp_path, capsys):
+    path = tmp_path / "scara.yaml"
+    path.write_text(AXES_ARM)
+    status, out, _ = run(["import", path], capsys)
+    assert status == 0 and "axes:" not in out and "joints:" in out
+    written = tmp_path / "dh.yaml"
+    written.write_text(out)
+    assert run(["check", written, "--against", path], capsys)[0] == 0
+
+
+def test_screws_prints_every_joint_and_the_home_pose(capsys):
+    status, out, _ = run(["screws", "scara_spong"], capsys)
+    assert status == 0
+    assert "S3 (d3) = (0, 0, 0; 0, 0, −1)" in out and "M =" in out
+
+
+def test_screws_as_json_and_latex(capsys):
+    import json
+
+    status, out, _ = run(["screws", "planar2r", "--format", "json"], capsys)
+    data = json.loads(out)
+    assert status == 0 and data["screws"]["theta_2"] == ["0", "0", "1", "0", "-a_1", "0"]
+    assert data["home"][0] == ["1", "0", "0", "a_1 + a_2"]
+    status, out, _ = run(["screws", "planar2r", "--format", "latex"], capsys)
+    assert status == 0 and out.startswith("\\[\nS = \\begin{bmatrix}") and "M = \\begin{bmatrix}" in out

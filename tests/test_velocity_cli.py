@@ -1,0 +1,129 @@
+"""`dhsym jacobian` and `dhsym latex --jacobian`: what a user sees, JSON that reads back,
+errors in one line, and documents that compile without overfull boxes."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+import pytest
+import sympy
+
+from dhsym.checking.verify import check, numeric_error
+from dhsym.io.library import load
+from dhsym.latex.document import document
+from dhsym.velocity import jacobian
+
+OVERFULL_TOLERANCE_PT = 1.0
+
+
+def run(*args):
+    return subprocess.run([sys.executable, "-m", "dhsym.cli", *args], capture_output=True, text=True,
+                          env=dict(os.environ), timeout=120)
+
+
+def test_puma_in_frame_3_is_craigs_jacobian_with_its_singularities():
+    result = run("jacobian", "puma560", "--frame", "3")
+    assert result.returncode == 0 and result.stderr == ""
+    out = result.stdout
+    assert "Jacobian ³J of the origin of frame 6, in frame 3" in out
+    assert "−d3 c23" in out and "a2 c2 + a3 c23 − d4 s23" in out and "a3 + a2 c3" in out
+    assert "det J = −a2 s5(d4 c3 + a3 s3)(a2 c2 + a3 c23 − d4 s23)" in out
+    assert "s5 = 0: wrist: axes 4 and 6 line up" in out
+    assert "c23 = cos(θ2 + θ3)" in out
+
+
+def test_wide_jacobian_is_listed_element_by_element_and_fits_the_width():
+    out = run("jacobian", "iiwa7", "--width", "80").stdout
+    assert "J₁₁ = " in out and "J₆₇ = " in out and "⎡" not in out
+    words = " ".join(out.split())
+    assert "the arm is redundant, and no determinant is computed" in words and "not worked out" in words
+    assert max(len(line) for line in out.splitlines()[:-3] if line.startswith(("J", " "))) <= 80
+
+
+def test_json_reads_back_and_has_the_documented_keys():
+    data = json.loads(run("jacobian", "stanford", "--format", "json").stdout)
+    assert set(data) == {"robot", "convention", "frame", "point", "joint_variables", "matrix", "determinant",
+                         "singularities"}
+    assert (data["frame"], data["point"]) == (0, 6)
+    chain = load("stanford")
+    names = {s.name: s for s in chain.symbols}
+    read = lambda text: sympy.sympify(text, locals=names)  # noqa: E731
+    assert numeric_error(sympy.Matrix([[read(x) for x in row] for row in data["matrix"]]), jacobian(chain)) < 1e-9
+    assert check(read(data["determinant"]), sympy.factor(jacobian(chain).det(method="berkowitz"))).numeric
+    assert {str(read(s)) for s in data["singularities"]} == {"sin(theta_5)", "d_3", "sin(theta_2)"}
+
+
+def test_json_for_a_redundant_arm_has_no_determinant():
+    data = json.loads(run("jacobian", "iiwa7", "--format", "json").stdout)
+    assert data["determinant"] is None and data["singularities"] == []
+    assert len(data["matrix"]) == 6 and len(data["matrix"][0]) == 7
+
+
+def test_steps_print_the_propagation_link_by_link():
+    out = run("jacobian", "planar2r", "--steps", "--frame", "2").stdout
+    assert "¹ω₁ = (0, 0, θ̇1)" in out and "²v₂ = (a1 θ̇1 s2, a2 θ̇2 + θ̇1(a2 + a1 c2), 0)" in out
+    assert "⎡ a1 s2        0  ⎤" in out
+    ascii_out = run("jacobian", "planar2r", "--steps", "--ascii").stdout
+    assert ascii_out.isascii() and "theta1dot" in ascii_out
+
+
+def test_a_frame_that_does_not_exist_is_one_line_and_status_2():
+    result = run("jacobian", "puma560", "--frame", "9")
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and "no frame 9" in result.stderr
+
+
+def test_latex_format_is_math_for_a_document():
+    out = run("jacobian", "planar3r", "--format", "latex").stdout
+    assert "{}^{0}J =" in out and "\\det J" in out and "l_{1} l_{2} s_{2}" in out
+
+
+needs_tex = pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
+ROBOTS = ["puma560", "planar3r", "stanford", "scara_spong", "iiwa7", "spherical_wrist"]
+
+
+@pytest.fixture(scope="module")
+def compiled(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("velocity-latex")
+    jobs = {}
+    for name in ROBOTS:
+        for kind in ("slides", "article"):
+            jobs[f"{name}-{kind}"] = document(load(name), kind, steps=name == "planar3r", jacobian=True)
+    for job, text in jobs.items():
+        (folder / f"{job}.tex").write_text(text, encoding="utf-8")
+
+    def compile_one(job):
+        command = ["pdflatex", "-halt-on-error", "-interaction=nonstopmode", "-no-shell-escape", f"{job}.tex"]
+        result = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=180)
+        return result.returncode, (folder / f"{job}.log").read_text(encoding="latin-1")
+
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        return dict(zip(jobs, pool.map(compile_one, jobs)))
+
+
+def _problems(log):
+    import re
+
+    errors = re.findall(r"^! .*", log, re.MULTILINE)
+    overfull = [m.group(0) for m in re.finditer(r"Overfull \\[hv]box \(([\d.]+)pt too (?:wide|high)\)", log)
+                if float(m.group(1)) > OVERFULL_TOLERANCE_PT]
+    return errors + overfull
+
+
+@needs_tex
+@pytest.mark.parametrize("kind", ["slides", "article"])
+@pytest.mark.parametrize("name", ROBOTS)
+def test_documents_with_the_jacobian_compile_and_fit(compiled, name, kind):
+    status, log = compiled[f"{name}-{kind}"]
+    assert status == 0, _problems(log) or log[-2000:]
+    assert _problems(log) == []
+
+
+def test_documents_show_the_jacobian_determinant_and_singularities():
+    tex = document(load("puma560"), "article", jacobian=True)
+    assert "\\subsection*{Velocity kinematics}" in tex
+    assert "J_{11} &= -d_{3} c_{1} - s_{1}(a_{2} c_{2} + a_{3} c_{23} - d_{4} s_{23})" in tex
+    assert "$s_{5} = 0$: wrist: axes 4 and 6 line up." in tex
+    assert "\\det J" in tex
