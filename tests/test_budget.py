@@ -6,12 +6,13 @@ for); the others check what happens, not how fast.
 """
 import signal
 import time
+import warnings
 
 import pytest
 
 from dhsym import Chain, DHRow, real_symbol
 from dhsym.cli import app as cli
-from dhsym.core.budget import SimplificationTimeout, time_budget
+from dhsym.core.budget import SimplificationTimeout, time_budget, within
 from dhsym.io.library import read
 
 BUDGET = 0.5  # seconds
@@ -104,3 +105,17 @@ def _cli(argv, capsys, **injected):
     status = cli.main(argv, **injected)
     stdout, stderr = capsys.readouterr()
     return status, stdout, stderr
+
+
+def test_an_outer_budget_of_the_same_kind_is_not_taken_for_the_simplifications_own():
+    """A determinant's budget runs out while a transform simplifies: the transform must not fall
+    back to its raw product (that was the fallback of a budget that had not run out)."""
+    patient = Chain(two_link_rows(), "standard", simplifier=never_finishes, timeout=30)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", SimplificationTimeout)
+        assert within(0.2, patient.fk, lambda: "outer fallback") == "outer fallback"
+
+
+def test_within_gives_the_result_or_the_fallback():
+    assert within(None, lambda: 1, lambda: 2) == 1
+    assert within(0.05, lambda: never_finishes(None, None), lambda: 2) == 2

@@ -149,7 +149,13 @@ def test_the_ur5_determinant_factors_without_a_wrist_centre():
     a2, a3, d5 = (dhsym.real_symbol(name) for name in ("a_2", "a_3", "d_5"))
     expected = a2 * a3 * sympy.sin(t[2]) * sympy.sin(t[4]) * (
         a2 * sympy.cos(t[1]) + a3 * sympy.cos(t[1] + t[2]) + d5 * sympy.sin(t[1] + t[2] + t[3]))
-    result = determinant(ur5)
+    result = determinant(ur5, budget=None)  # no limit: a loaded CI machine must not change the answer
     assert numeric_error(result.value, expected) < 1e-9
     assert numeric_error(result.value, ur5.jacobian().det(method="berkowitz")) < 1e-9
     assert len(result.factors) == 3
+
+
+def test_a_determinant_past_its_budget_says_it_was_not_computed():
+    result = determinant(dhsym.load("ur5"), budget=0.001)
+    assert result.value is None and result.factors == []
+    assert "not computed" in result.note and "0.001 s" in result.note

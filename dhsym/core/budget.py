@@ -8,6 +8,12 @@ hanging, and one for a whole command, so that nothing (printing included) runs f
 ...         pass
 Traceback (most recent call last):
 dhsym.core.budget.CommandTooSlow
+
+Budgets nest. `within` runs a computation and falls back only when its own time is up; an
+outer budget that runs out inside passes through to whoever set it:
+
+>>> within(5, lambda: "done", lambda: "fallback")
+'done'
 """
 from __future__ import annotations
 
@@ -15,6 +21,9 @@ import signal
 import threading
 import time
 from contextlib import contextmanager
+from typing import Callable, TypeVar
+
+Result = TypeVar("Result")
 
 
 class BudgetExceeded(BaseException):
@@ -32,7 +41,7 @@ class SimplificationTimeout(UserWarning):
 
 
 @contextmanager
-def time_budget(seconds: float | None, exception: type = BudgetExceeded):
+def time_budget(seconds: float | None, exception: type = BudgetExceeded, owner: object = None):
     """Raise `exception` in the block after `seconds`; no limit for None or off the main thread.
 
     Uses SIGALRM, so it interrupts Python code (SymPy's included) but not one long call into C.
@@ -50,7 +59,9 @@ def time_budget(seconds: float | None, exception: type = BudgetExceeded):
         return
 
     def expire(signum, frame):
-        raise exception()
+        error = exception()
+        error.owner = owner  # which budget ran out, for `within`
+        raise error
 
     started = time.monotonic()
     previous = signal.signal(signal.SIGALRM, expire)
@@ -63,3 +74,16 @@ def time_budget(seconds: float | None, exception: type = BudgetExceeded):
         if outer_delay:
             left = max(outer_delay - (time.monotonic() - started), 1e-3)
             signal.setitimer(signal.ITIMER_REAL, left, outer_interval)
+
+
+def within(seconds: float | None, compute: Callable[[], Result], fallback: Callable[[], Result]) -> Result:
+    """compute(), or fallback() when it takes longer than `seconds` (None: no limit). Only this
+    budget's expiry falls back: a budget set outside that runs out meanwhile is raised on."""
+    mine = object()
+    try:
+        with time_budget(seconds, owner=mine):
+            return compute()
+    except BudgetExceeded as error:
+        if getattr(error, "owner", None) is not mine:
+            raise
+    return fallback()

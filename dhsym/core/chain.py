@@ -17,7 +17,7 @@ from typing import Callable, Sequence
 import sympy
 
 from ..errors import UserError
-from .budget import BudgetExceeded, SimplificationTimeout, time_budget
+from .budget import SimplificationTimeout, within
 from .numbers import WrittenNumbers
 from .simplify import contract
 from .transforms import CONVENTIONS, Step, as_expr, inverse_transform, link_steps, product
@@ -206,13 +206,13 @@ class Chain:
             steps = self._steps()[start:end]
         if raw:
             return self._raw_links(start, end)
-        try:
-            with time_budget(self.timeout):
-                return self.simplifier(steps, frozenset(self.joint_variables))
-        except BudgetExceeded:
-            warnings.warn(SimplificationTimeout(f"simplification took longer than {self.timeout:g} s; "
-                                                "showing the unsimplified product"), stacklevel=3)
-            return self._compute(start, end, raw=True)
+        return within(self.timeout, lambda: self.simplifier(steps, frozenset(self.joint_variables)),
+                      lambda: self._unsimplified(start, end))
+
+    def _unsimplified(self, start: int, end: int) -> sympy.Matrix:
+        warnings.warn(SimplificationTimeout(f"simplification took longer than {self.timeout:g} s; "
+                                            "showing the unsimplified product"), stacklevel=4)
+        return self._compute(start, end, raw=True)
 
     def _raw_links(self, start: int, end: int) -> sympy.Matrix:
         """The plain product of whole link matrices (and base/tool matrices)."""

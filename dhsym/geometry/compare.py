@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import sympy
 
 from ..checking.verify import algebraically_equal
-from ..core.budget import BudgetExceeded, time_budget
+from ..core.budget import within
 from ..core.chain import Chain
 from ..core.transforms import product
 from .screws import rate
@@ -88,11 +88,8 @@ def _algebra_agrees(candidate: Chain, reference: Chain) -> bool | None:
     exact = {s: sample[s.name] for s in reference.symbols | set(renamed.values()) if s.name in sample}
     mine = candidate.fk(raw=True).xreplace(renamed).xreplace(exact)
     theirs = reference.fk(raw=True).xreplace(exact)
-    try:
-        with time_budget(ALGEBRA_SECONDS):
-            return all(algebraically_equal(a, b) for a, b in zip(mine, theirs))
-    except BudgetExceeded:
-        return None
+    return within(ALGEBRA_SECONDS, lambda: all(algebraically_equal(a, b) for a, b in zip(mine, theirs)),
+                  lambda: None)
 
 
 def _type(joint: str) -> str:

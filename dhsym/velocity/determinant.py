@@ -24,11 +24,13 @@ is used and `block` says which. Otherwise `value` is None and `note` says why.
 from __future__ import annotations
 
 import random
+import time
 from dataclasses import dataclass
+from functools import partial
 
 import sympy
 
-from ..core.budget import BudgetExceeded, time_budget
+from ..core.budget import within
 from ..core.simplify import collect_by_trig
 from .geometry import wrist_centre
 from .jacobian import ROWS, angular_part, axis_frame, jacobian, linear_part, resolve_frames
@@ -47,8 +49,9 @@ class Determinant:
     note: str
 
 
-def determinant(chain, frame=None, point=None) -> Determinant:
-    """The factored determinant of ᵏJ (or of the square block of the rows that move)."""
+def determinant(chain, frame=None, point=None, budget: float | None = FULL_DETERMINANT_BUDGET) -> Determinant:
+    """The factored determinant of ᵏJ (or of the square block of the rows that move). `budget`
+    (seconds, None for no limit) bounds only the one slow case, a 6×6 J without a wrist centre."""
     frame, point = resolve_frames(chain, frame, point)
     matrix = jacobian(chain, frame, point)
     n = chain.n
@@ -56,7 +59,7 @@ def determinant(chain, frame=None, point=None) -> Determinant:
         centre = wrist_centre(chain)
         if centre is not None:
             return _wrist_partitioned(chain, centre)
-        return _full(chain, matrix)
+        return _full(chain, budget)
     if n > 6:
         return Determinant(None, "", [], f"J is 6×{n}: the arm is redundant, and no determinant is computed. "
                            f"It is singular where all {sympy.binomial(n, 6)} of its 6×6 minors vanish (rank < 6); "
@@ -104,19 +107,29 @@ def _same_sign(a, b) -> bool:
     return True  # zero everywhere we looked: the sign cannot matter
 
 
-def _full(chain, matrix) -> Determinant:
+def _full(chain, budget: float | None) -> Determinant:
     """det J of a 6-joint arm without a wrist centre. det J is the same in every frame (a rotation of
     both halves has determinant 1), and in a frame near the middle of the arm the entries are
-    short: the UR5's factors in about a second from frame 4, where frame 0 takes minutes."""
+    short: the UR5's factors in under a second from frame 4, where frame 0 takes minutes.
+
+    Frames are tried from the middle out; each try gets half of the time left (the last one all
+    of it), so the likeliest frame has most of the budget and a slow machine still finishes it."""
     middle = [4, 3, 5, 2, 1]  # frames by their distance from the middle of a six-joint arm
+    deadline = None if budget is None else time.monotonic() + budget
     for other in middle:
-        try:
-            with time_budget(FULL_DETERMINANT_BUDGET / len(middle)):
-                return _result(chain, jacobian(chain, other).det(method="berkowitz"), "J", "")
-        except BudgetExceeded:
-            continue
+        left = None if deadline is None else deadline - time.monotonic()
+        if left is not None and left <= 0:
+            break
+        share = left if left is None or other == middle[-1] else left / 2
+        result = within(share, partial(_full_in, chain, other), lambda: None)
+        if result is not None:
+            return result
     return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
-                       f"determinant did not factor within {FULL_DETERMINANT_BUDGET:g} s: not computed.")
+                       f"determinant did not factor within {budget:g} s: not computed.")
+
+
+def _full_in(chain, frame: int) -> Determinant:
+    return _result(chain, jacobian(chain, frame).det(method="berkowitz"), "J", "")
 
 
 def _wrist_partitioned(chain, centre) -> Determinant:
