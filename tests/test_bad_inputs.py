@@ -123,10 +123,12 @@ def test_an_internal_bug_asks_for_a_report_and_exits_70(capsys):
     assert "Traceback" not in stderr
 
 
-def test_a_closed_pipe_ends_quietly(capsys):
+def test_a_closed_pipe_is_one_error_line(capsys):
     def reader_left(name):
         raise BrokenPipeError()
-    assert _run_in_process(["fk", "planar2r"], capsys, read=reader_left) == (cli.EXIT_BROKEN_PIPE, "", "")
+    status, stdout, stderr = _run_in_process(["fk", "planar2r"], capsys, read=reader_left)
+    assert (status, stdout) == (cli.EXIT_BROKEN_PIPE, "")
+    assert stderr.startswith("dhsym: error: standard output was closed by its reader") and stderr.count("\n") == 1
 
 
 def test_an_ascii_terminal_gets_advice_not_a_traceback():

@@ -10,8 +10,9 @@ Each command lives in its own module (listing, kinematics, latex, plot) with
 
 Exit status: 0, with warnings (if any) on stderr; 2 after one `dhsym: error:` line (a mistake in
 the input or the command line, or output that cannot be written: a full disk, a closed standard
-output, an unwritable file); 141 when the reader of a pipe leaves early (`| head`), quietly, as
-shell tools do; 130 on Ctrl-C; 70 for a bug in dhsym itself.
+output, an unwritable file); 141, the status of a tool stopped by a closed pipe, after one
+`dhsym: error:` line when the reader of a pipe leaves before the output is written (`| head -0`);
+130 on Ctrl-C; 70 for a bug in dhsym itself.
 """
 from __future__ import annotations
 
@@ -58,8 +59,10 @@ def main(argv=None, read=library.read) -> int:
             if issubclass(warning.category, SimplificationTimeout):
                 print(f"dhsym: warning: {printable(str(warning.message))}", file=sys.stderr)
         return status
-    except BrokenPipeError:  # `dhsym fk puma560 | head`: the reader left; stop quietly, like a shell tool
+    except BrokenPipeError:  # `dhsym fk iiwa7 | head -0`: the reader left; say so, the output is cut short
         _silence_stdout()
+        print("dhsym: error: standard output was closed by its reader before all of the output was written "
+              "(a pipe into head?); the output is incomplete", file=sys.stderr)
         return EXIT_BROKEN_PIPE
     except UserError as error:
         print(f"dhsym: error: {printable(str(error))}", file=sys.stderr)
