@@ -16,7 +16,7 @@ from dhsym.core.budget import SimplificationTimeout, time_budget, within
 from dhsym.io.library import read
 
 BUDGET = 0.5  # seconds
-MARGIN = 1.0  # seconds allowed on top of the budget: returning the raw product, a busy machine
+MARGIN = 3.0  # seconds allowed on top of the budget: returning the raw product on a busy CI machine
 
 
 def never_finishes(steps, joint_variables):

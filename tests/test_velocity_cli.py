@@ -10,6 +10,7 @@ from concurrent.futures import ThreadPoolExecutor
 import pytest
 import sympy
 
+from dhsym import Chain, DHRow
 from dhsym.checking.verify import check, numeric_error
 from dhsym.io.library import load
 from dhsym.latex.document import document
@@ -127,3 +128,37 @@ def test_documents_show_the_jacobian_determinant_and_singularities():
     assert "J_{11} &= -d_{3} c_{1} - s_{1}(a_{2} c_{2} + a_{3} c_{23} - d_{4} s_{23})" in tex
     assert "$s_{5} = 0$: wrist: axes 4 and 6 line up." in tex
     assert "\\det J" in tex
+
+
+def general_chain_file(tmp_path, links: int):
+    rows = "".join(f"  - {{joint: R, alpha: alpha_{i}, a: a_{i}, d: d_{i}, theta: theta_{i}}}\n"
+                   for i in range(1, links + 1))
+    path = tmp_path / "general.yaml"
+    path.write_text("name: general\nconvention: standard\njoints:\n" + rows)
+    return path
+
+
+def test_a_jacobian_too_large_to_print_is_refused_by_its_estimate_naming_a_frame_that_fits(tmp_path):
+    path = general_chain_file(tmp_path, 12)
+    result = run("jacobian", str(path))
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr == (f"dhsym: error: {path}: the Jacobian of frame 12 in frame 0 would take about 19.2 "
+                             "million characters, too large to print or read; express it in a frame nearer the "
+                             "point with --frame (--frame 5 fits)\n")
+    latex = run("latex", str(path), "--to", "3", "--jacobian")
+    assert latex.returncode == 2 and "the Jacobian of frame 12 in frame 0 would take" in latex.stderr
+
+
+def test_a_general_six_link_jacobian_in_a_middle_frame_is_built():
+    """The shortest of the candidate forms is chosen by a linear-time length for large entries
+    (count_ops took minutes here); by numbers it is the plain ᵏz × (ᵏp − ᵏp_i), ᵏz."""
+    symbols = [sympy.symbols(f"alpha_{i} a_{i} d_{i} theta_{i}", real=True) for i in range(1, 7)]
+    general = Chain([DHRow.revolute(t, d, a, al) for al, a, d, t in symbols], "standard")
+    frame = 3
+    origin = general.transform(frame, 6)[:3, 3]
+    columns = []
+    for joint in range(1, 7):
+        axis = general.transform(frame, joint - 1)
+        z, p = axis[:3, 2], axis[:3, 3]
+        columns.append(list(z.cross(origin - p)) + list(z))
+    assert numeric_error(jacobian(general, frame), sympy.Matrix(columns).T, trials=3) < 1e-9

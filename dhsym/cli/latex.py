@@ -7,7 +7,7 @@ from __future__ import annotations
 from ..errors import UserError
 from ..io.output import write_atomic
 from ..latex.document import DOCUMENTS, document
-from .limits import refuse_if_too_large
+from .limits import refuse_if_too_large, refuse_jacobian_if_too_large
 from .options import frame_options, robot_options
 
 
@@ -36,6 +36,8 @@ def run(robot, args) -> str | None:
         pass  # document() names the frame that is wrong, and the option
     else:
         refuse_if_too_large(robot, start, end)
+    if args.jacobian:
+        refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame)
     text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end,
                     jacobian=args.jacobian)
     if args.output is None:

@@ -17,6 +17,7 @@ from __future__ import annotations
 import sympy
 
 from .simplify import block_matrix, merge_steps, split_into_blocks
+from .size import tree_size
 from .transforms import product
 
 Sizes = list  # 4×4 of ints: 0 for a zero element, else the size of its expression tree
@@ -61,15 +62,7 @@ def _link_spans(chain, first: int, last: int) -> list[tuple[int, int]]:
 
 def _sizes(matrix: sympy.Matrix) -> Sizes:
     memo: dict = {}
-    return [[_tree_size(matrix[r, c], memo) if matrix[r, c] != 0 else 0 for c in range(4)] for r in range(4)]
-
-
-def _tree_size(expr: sympy.Expr, memo: dict) -> int:
-    """Nodes of the expression tree, counting a shared subtree every time it occurs."""
-    key = id(expr)
-    if key not in memo:
-        memo[key] = 1 + sum(_tree_size(arg, memo) for arg in expr.args)
-    return memo[key]
+    return [[tree_size(matrix[r, c], memo) if matrix[r, c] != 0 else 0 for c in range(4)] for r in range(4)]
 
 
 def _product_sizes(a: Sizes, b: Sizes) -> Sizes:

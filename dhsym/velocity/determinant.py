@@ -32,6 +32,7 @@ import sympy
 
 from ..core.budget import within
 from ..core.simplify import collect_by_trig
+from ..core.size import length
 from .geometry import wrist_centre
 from .jacobian import ROWS, angular_part, axis_frame, jacobian, linear_part, resolve_frames
 
@@ -86,7 +87,7 @@ def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
         candidate = matrix if other == frame else jacobian(chain, other, point)
         if [r for r in range(6) if any(x != 0 for x in candidate.row(r))] == moving:
             results.append(_result(chain, candidate.extract(rows, list(range(n))).det(method="berkowitz"), block, note))
-    shortest = min(results, key=lambda result: sympy.count_ops(result.value))
+    shortest = min(results, key=lambda result: length(result.value))
     if _same_sign(shortest.value, results[0].value):  # results[0] is the block in the frame asked for
         return shortest
     return _result(chain, -shortest.value, block, note)
@@ -176,13 +177,13 @@ def factored(expr: sympy.Expr) -> sympy.Expr:
 
 def _pythagoras(factor: sympy.Expr) -> sympy.Expr:
     base, exponent = (factor.base, factor.exp) if factor.is_Pow else (factor, 1)
-    if base.is_Add and len(base.args) == 2 and sympy.count_ops(base) <= 12:  # s2 c23 − s23 c2 = −s3
+    if base.is_Add and len(base.args) == 2 and length(base) <= 12:  # s2 c23 − s23 c2 = −s3
         summed = sympy.trigsimp(base)
-        if sympy.count_ops(summed) < sympy.count_ops(base):
+        if length(summed) < length(base):
             return summed ** exponent
     squares = {p: (1 - sympy.cos(p.base.args[0]) ** 2) * p.base ** (p.exp - 2) for p in base.atoms(sympy.Pow)
                if isinstance(p.base, sympy.sin) and p.exp.is_Integer and p.exp >= 2}
     if not squares:
         return factor
     reduced = sympy.expand(base.xreplace(squares))
-    return (reduced if sympy.count_ops(reduced) < sympy.count_ops(base) else base) ** exponent
+    return (reduced if length(reduced) < length(base) else base) ** exponent

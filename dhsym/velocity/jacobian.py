@@ -34,6 +34,7 @@ from __future__ import annotations
 import sympy
 
 from ..core.simplify import block_matrix, collect_by_trig, merge_steps, split_into_blocks
+from ..core.size import length
 from ..errors import UserError
 
 ROWS = ("vx", "vy", "vz", "ωx", "ωy", "ωz")
@@ -124,7 +125,7 @@ def lever(chain, joint: int, frame, point) -> list:
     for pivot in pivots(chain, axis, frame, point):
         turned = rotate(chain, frame, pivot, lever_in(chain, axis, pivot, point))
         candidates.append([collect_by_trig(x, variables) for x in turned])
-    return min(candidates, key=sympy.count_ops)
+    return min(candidates, key=length)
 
 
 def pivots(chain, axis, frame, point) -> list:

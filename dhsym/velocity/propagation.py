@@ -29,6 +29,7 @@ import sympy
 from sympy.simplify.fu import TR10i
 
 from ..core.simplify import collect_by_trig
+from ..core.size import length
 from .jacobian import ZERO, cross, derivative, gain, rotate
 
 
@@ -113,4 +114,4 @@ def _sum_formulas(expr, joints):
     if not expr.has(sympy.sin, sympy.cos):
         return expr
     candidates = [expr, TR10i(expr), collect_by_trig(TR10i(sympy.expand(expr)), joints)]
-    return min(candidates, key=sympy.count_ops)
+    return min(candidates, key=length)
