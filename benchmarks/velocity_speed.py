@@ -5,15 +5,19 @@ and z_i of the unsimplified frames) followed by `sympy.trigsimp` on each element
 in this process, so the ratio means something on a busy machine. Also timed: the PUMA's
 factored determinant, against SymPy's determinant of the trigsimped Jacobian, factored.
 dhsym's times are the best of five cold runs (fresh chain, empty SymPy cache).
+Last, the Jacobian of a general 5-link chain in its middle frame against the same code
+choosing among its candidate forms by `sympy.count_ops` (as it did before `core.size.length`).
 Run with `make bench`. Targets: 7-axis Jacobian at least 100× faster and under 0.1 s; PUMA
-determinant under 1 s.
+determinant under 1 s; the general chain's middle-frame Jacobian under 2 s.
 """
 from __future__ import annotations
 
+import importlib
 import sys
 import time
 
 import sympy
+from simplify_speed import general_chain
 from sympy.core.cache import clear_cache
 
 from dhsym.core.budget import BudgetExceeded, time_budget
@@ -21,6 +25,7 @@ from dhsym.io.library import load
 from dhsym.velocity import determinant, jacobian
 from dhsym.velocity.jacobian import axis_frame
 
+jacobian_module = importlib.import_module("dhsym.velocity.jacobian")  # the package re-exports its function
 BASELINE_BUDGET = 120.0  # seconds; past it the baseline is reported as "> budget"
 ROBOTS = ["planar3r", "scara_spong", "puma560", "stanford", "iiwa7"]
 
@@ -43,7 +48,7 @@ def plain_jacobian(chain) -> sympy.Matrix:
 def timed(function, robot: str):
     """Seconds and result of function(chain) on a fresh chain with an empty SymPy cache (the
     loading of the robot file is not timed), or (None, None) past the budget."""
-    chain = load(robot)
+    chain = general_chain(int(robot.split("-")[1])) if robot.startswith("general-") else load(robot)
     clear_cache()
     start = time.perf_counter()
     try:
@@ -89,7 +94,25 @@ def main() -> int:
           f"target < 1 s {'ok' if ok else 'MISSED'}")
     print(f"  dhsym: det J = {result.value}")
     print(f"  SymPy: det J = {theirs}")
+    failures += middle_frame_of_a_general_chain()
     return 1 if failures else 0
+
+
+def middle_frame_of_a_general_chain() -> int:
+    """²J of a general 5-link chain, choosing forms by core.size.length and by count_ops."""
+    in_frame_2 = lambda chain: jacobian(chain, 2)  # noqa: E731
+    seconds, _ = best_of(3, in_frame_2, "general-5")
+    chosen_by = jacobian_module.length
+    jacobian_module.length = sympy.count_ops
+    try:
+        baseline, _ = timed(in_frame_2, "general-5")
+    finally:
+        jacobian_module.length = chosen_by
+    ok = seconds < 2.0
+    base_text = f"{baseline:.2f} s" if baseline else f"> {BASELINE_BUDGET:g} s"
+    print(f"\ngeneral 5-link Jacobian in frame 2: dhsym {seconds:.2f} s, choosing forms by count_ops {base_text} "
+          f"(ratio {(baseline or BASELINE_BUDGET) / seconds:.0f}x); target < 2 s {'ok' if ok else 'MISSED'}")
+    return 0 if ok else 1
 
 
 if __name__ == "__main__":
