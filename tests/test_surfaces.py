@@ -125,6 +125,21 @@ def test_first_frame_numbers_every_output(capsys, tmp_path):
     assert "no frame 0 in this robot; frames are 3, 4, 5, 6" in capsys.readouterr().err
 
 
+def test_first_frame_numbers_the_labels_of_angles_without_subscripts(capsys, tmp_path):
+    """Euler-style angles α, β, γ have no joint numbers of their own: the labels count from the
+    first joint, c4 c5 c6 for frames 3..6, as the lecture writes the wrist."""
+    robot = tmp_path / "euler.yaml"
+    robot.write_text("name: wrist\nconvention: standard\nfirst_frame: 3\njoints:\n"
+                     "  - {joint: R, alpha: -pi/2, a: 0, d: 0, theta: alpha}\n"
+                     "  - {joint: R, alpha: pi/2, a: 0, d: 0, theta: beta}\n"
+                     "  - {joint: R, alpha: 0, a: 0, d: d_6, theta: gamma}\n", encoding="utf-8")
+    text = _run(capsys, "fk", str(robot))
+    assert "c4 c5 c6 − s4 s6" in text and "where c4 = cos α, s4 = sin α, c5 = cos β" in text
+    data = json.loads(_run(capsys, "fk", str(robot), "--format", "json"))
+    assert list(data["abbreviations"])[:2] == ["c4", "s4"]
+    assert "c_{4} c_{5} c_{6}" in _run(capsys, "fk", str(robot), "--format", "latex")
+
+
 def test_first_frame_in_notebooks_and_pictures():
     from matplotlib.figure import Figure
 

@@ -77,10 +77,10 @@ class Abbreviation:
 class Notation:
     """Knows the joint variables of one chain, in joint order."""
 
-    def __init__(self, joint_variables, offsets=None, write=None, write_sympy=None):
+    def __init__(self, joint_variables, offsets=None, write=None, write_sympy=None, first_joint=1):
         """Joint labels come from the names' subscripts when every joint variable has a
         distinct one: θ4, θ5, θ6 of a wrist give c4, c5, c6, and a general row in θ_i gives c_i.
-        Otherwise joints are numbered by row. Angles named with Greek letters other than θ
+        Otherwise joints are numbered by row, from `first_joint`. Angles named with Greek letters other than θ
         keep their letter in the label: φ2 gives cφ2. `offsets` maps a joint variable to the
         offset its angle keeps (see `written_offsets`); `write` prints an offset in a legend (a
         printer's own), `write_sympy` in SymPy's form (the JSON legend)."""
@@ -93,7 +93,7 @@ class Notation:
         if None not in labels and _lettered(joint_variables):
             labels = [_letter(s.name) + label for s, label in zip(joint_variables, labels)]
         if None in labels or len(set(labels)) != len(labels):
-            labels = list(range(1, len(joint_variables) + 1))
+            labels = list(range(first_joint, first_joint + len(joint_variables)))
         elif all(label.isdigit() for label in labels):
             labels = [int(label) for label in labels]
         self.label = dict(zip(joint_variables, labels))

@@ -14,9 +14,11 @@ or as one dict, `TextPrinter(joint_variables=[t1, t2], ascii=True)` or
 - `offsets`: {joint variable: offset} kept in the joint's angle (see dhsym.printing.notation);
 - `numbers`: a `WrittenNumbers`, how the robot file wrote its numbers (decimals print as
   decimals: 0.425 c2, not (17 c2)/40; see dhsym.core.numbers);
+- `first_joint`: the number of the first joint, for labels numbered by row (a wrist whose
+  angles are α, β, γ and whose frames start at 3 gets c4, c5, c6);
 - `ascii` (text only): plain ASCII.
 
-`chain_settings(chain)` gives the first four for a chain; `render.text_printer(chain)` and
+`chain_settings(chain)` gives those but `marked` and `ascii` for a chain; `render.text_printer(chain)` and
 `render.latex_printer(chain)` build printers with them.
 
 Numbers: integers, fractions and multiples of π print as fractions (`π/4`, `1/3`); a rational
@@ -51,13 +53,13 @@ from .notation import Notation, display_name, superscript, written_offsets
 
 _BRACKETS = {"text": [("(", ")"), ("[", "]"), ("{", "}")],
              "latex": [("(", ")"), ("[", "]"), ("\\{", "\\}")]}
-TEXTBOOK_SETTINGS = {"joint_variables": (), "marked": (), "offsets": None, "numbers": None}
+TEXTBOOK_SETTINGS = {"joint_variables": (), "marked": (), "offsets": None, "numbers": None, "first_joint": 1}
 
 
 def chain_settings(chain) -> dict:
     """The printer settings a chain implies: its joint variables, offsets and written numbers."""
     return {"joint_variables": chain.joint_variables, "offsets": written_offsets(chain.rows),
-            "numbers": getattr(chain, "numbers", None)}
+            "numbers": getattr(chain, "numbers", None), "first_joint": getattr(chain, "frame_offset", 0) + 1}
 
 
 def _settings(joint_variables, settings, keywords) -> dict:
@@ -82,7 +84,8 @@ class _TextbookMixin:
         self.numbers = settings["numbers"] or WrittenNumbers()
         exact = {key: settings[key] for key in ("joint_variables", "offsets", "numbers")}
         self.notation = Notation(settings["joint_variables"], settings["offsets"], write=self._print,
-                                 write_sympy=lambda expr: ExactPrinter(exact).doprint(expr))
+                                 write_sympy=lambda expr: ExactPrinter(exact).doprint(expr),
+                                 first_joint=settings["first_joint"])
         self.marked = set(settings["marked"])  # symbols printed with a star: the joint variables in a DH table
         self.used: set = set()
         self._angle = 0  # > 0 while printing the angle of a cos or sin: joint variables come first
@@ -277,7 +280,7 @@ class ExactPrinter(StrPrinter):
         StrPrinter.__init__(self, _settings(joint_variables, settings, keywords))
         self.numbers = self._settings["numbers"] or WrittenNumbers()
         self.notation = Notation(self._settings["joint_variables"], self._settings["offsets"], write=self._print,
-                                 write_sympy=self._print)
+                                 write_sympy=self._print, first_joint=self._settings["first_joint"])
 
     def doprint(self, expr):
         return super().doprint(self.notation.as_written(expr))
