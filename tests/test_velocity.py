@@ -153,9 +153,25 @@ def test_the_ur5_determinant_factors_without_a_wrist_centre():
     assert numeric_error(result.value, expected) < 1e-9
     assert numeric_error(result.value, ur5.jacobian().det(method="berkowitz")) < 1e-9
     assert len(result.factors) == 3
+    meanings = [singularity.meaning for singularity in singularities(ur5, result)]
+    # the shoulder is where axes 5 and 6 meet crossing the plane of axes 1 and 2; the flange is always
+    # in the plane through axis 5 parallel to axis 6, which is no description at all
+    assert meanings == ["wrist: axes 4 and 6 are parallel",
+                        "shoulder: the origin of frame 5 lies in the plane through axis 1 parallel to axis 2 "
+                        "(on axis 1 when there is no offset)",
+                        "elbow stretched or folded: axis 4 lies in the plane of axes 2 and 3"]
 
 
 def test_a_determinant_past_its_budget_says_it_was_not_computed():
     result = determinant(dhsym.load("ur5"), budget=0.001)
     assert result.value is None and result.factors == []
     assert "not computed" in result.note and "0.001 s" in result.note
+
+
+def test_axes_that_line_up_and_axes_that_are_only_parallel_are_told_apart():
+    """PUMA, s5 = 0: axes 4 and 6 coincide. Stanford, s2 = 0: the boom (axis 4) is parallel to
+    axis 1 but d2 away from it, so 'line up' would be wrong."""
+    puma, stanford = load("puma560"), load("stanford")
+    assert singularities(puma, determinant(puma))[0].meaning == "wrist: axes 4 and 6 line up"
+    meanings = [s.meaning for s in singularities(stanford, determinant(stanford))]
+    assert "axes 1 and 4 are parallel" in meanings and "wrist: axes 4 and 6 line up" in meanings
