@@ -55,8 +55,13 @@ def test_dh_table_marks_joint_variables_in_convention_order():
 
 def test_wide_matrices_become_element_lists():
     robot = load("puma560")
-    text = text_matrix(robot.fk(), TextPrinter(robot.joint_variables), width=100)
-    assert text.splitlines()[3] == "px  = c1(a2 c2 + a3 c23 − d4 s23) − d3 s1"
+    lines = text_matrix(robot.fk(), TextPrinter(robot.joint_variables), width=100).splitlines()
+    # the matrix of names over the fixed bottom row, then the elements column by column (Craig's order)
+    assert lines[:5] == ["⎡ r11   r12   r13   px ⎤", "⎢ r21   r22   r23   py ⎥", "⎢ r31   r32   r33   pz ⎥",
+                         "⎣ 0     0     0     1  ⎦", ""]
+    labels = [line[:3] for line in lines if line[:1] in "rp" and " = " in line]
+    assert labels == ["r11", "r21", "r31", "r12", "r22", "r32", "r13", "r23", "r33", "px ", "py ", "pz "]
+    assert "px  = c1(a2 c2 + a3 c23 − d4 s23) − d3 s1" in lines
 
 
 def test_squares_of_sin_and_cos():

@@ -2,8 +2,8 @@
 configurations, the velocity propagation step by step, and JSON.
 
 Same layout rule as `dhsym fk`: a matrix that fits the width is printed as a matrix; otherwise
-its elements are listed one by one, J11 … J6n, and an element wider than the line breaks
-before a + or −, at the outermost bracket level that has such a sign.
+the matrix of names J11 … J6n is printed, then the elements column by column, and an element
+wider than the line breaks before a + or − (`render.text_grid`).
 
 >>> import dhsym
 >>> from dhsym.printing.render import text_printer
@@ -23,6 +23,7 @@ import textwrap
 import sympy
 from sympy.printing.conventions import split_super_sub
 
+from . import render
 from .notation import display_name, subscript, superscript
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
@@ -86,62 +87,12 @@ def element_name(row: int, column: int, n: int, style: str) -> str:
 
 
 def text_grid(matrix: sympy.Matrix, printer: TextPrinter, width: int = 100) -> str:
-    """An aligned matrix, or its named elements J11 … J6n (long ones broken) when too wide."""
+    """An aligned matrix, or the matrix of names J11 … J6n and the elements column by column
+    (long ones broken) when too wide: `render.text_grid`, the rule of every surface."""
     cells = [[printer.doprint(matrix[r, c]) for c in range(matrix.cols)] for r in range(matrix.rows)]
-    widths = [max(len(row[c]) for row in cells) for c in range(matrix.cols)]
-    ascii = printer.style == "ascii"
-    if sum(widths) + 3 * matrix.cols + 1 <= width:
-        rows = []
-        for r, row in enumerate(cells):
-            left, right = _edges(r, matrix.rows, ascii)
-            rows.append(f"{left} " + "   ".join(cell.ljust(w) for cell, w in zip(row, widths)) + f" {right}")
-        return "\n".join(rows)
-    lines = []
-    style = "ascii" if ascii else "unicode"
-    for c in range(matrix.cols):
-        for r in range(matrix.rows):
-            label = element_name(r, c, matrix.cols, style) + " = "
-            lines.extend(break_text(cells[r][c], width, label))
-    return "\n".join(lines)
-
-
-def _edges(row: int, rows: int, ascii: bool) -> tuple[str, str]:
-    if ascii:
-        return "[", "]"
-    return ("⎡", "⎤") if row == 0 else ("⎣", "⎦") if row == rows - 1 else ("⎢", "⎥")
-
-
-def break_text(text: str, width: int, label: str) -> list[str]:
-    """`label + text` in lines of at most `width`, broken before ' + ' / ' − ' at the
-    shallowest bracket depth; continuation lines are indented under the text.
-
-    >>> break_text("a1 c1 + a2 c12 + a3 c123", 20, "J11 = ")
-    ['J11 = a1 c1 + a2 c12', '      + a3 c123']
-    """
-    indent = " " * len(label)
-    points = _break_points(text)
-    lines, start, prefix = [], 0, label
-    while len(prefix) + len(text) - start > width:
-        later = [(i, depth) for i, depth in points if i > start]
-        fitting = [(i, depth) for i, depth in later if len(prefix) + i - start <= width]
-        if not fitting:
-            break
-        shallowest = min(depth for _, depth in fitting)
-        cut = max(i for i, depth in fitting if depth == shallowest)
-        if len(prefix) + cut - start < width // 2:  # too short a line: fill it instead
-            cut = max(i for i, _ in fitting)
-        lines.append(prefix + text[start:cut])
-        start, prefix = cut + 1, indent
-    return lines + [prefix + text[start:]]
-
-
-def _break_points(text: str) -> list[tuple[int, int]]:
-    points, depth = [], 0
-    for i, ch in enumerate(text):
-        depth += (ch in "([{") - (ch in ")]}")
-        if text.startswith((" + ", " − ", " - "), i):
-            points.append((i, depth))
-    return points
+    style = "ascii" if printer.style == "ascii" else "unicode"
+    names = [[element_name(r, c, matrix.cols, style) for c in range(matrix.cols)] for r in range(matrix.rows)]
+    return render.text_grid(cells, names, matrix.rows, printer.style == "ascii", width)
 
 
 def text_determinant(result, found, printer: TextPrinter, width: int = 100) -> str:
@@ -149,7 +100,7 @@ def text_determinant(result, found, printer: TextPrinter, width: int = 100) -> s
     label = "det J = " if result.block == "J" else f"det J[{result.block}] = "
     lines = []
     if result.value is not None:
-        lines.extend(break_text(printer.doprint(result.value), width, label))
+        lines.extend(render.break_element(label, printer.doprint(result.value), width).splitlines())
     if result.note:
         lines.append(textwrap.fill(result.note, width))
     if found:
@@ -176,7 +127,8 @@ def text_steps(steps, printer: TextPrinter, width: int = 100) -> str:
     for step in steps:
         for symbol, vector in (("ω", step.omega), ("v", step.velocity)):
             entries = ", ".join(printer.doprint(x) for x in vector)
-            lines.extend(break_text(f"({entries})", width, f"{vector_name(symbol, step.frame, printer.style)} = "))
+            label = f"{vector_name(symbol, step.frame, printer.style)} = "
+            lines.extend(render.break_element(label, f"({entries})", width).splitlines())
     return "\n".join(lines)
 
 

@@ -1,7 +1,8 @@
 """Whole results for people: matrices, DH tables, legends and JSON, built on the printers.
 
-Text fits its width: a matrix that fits is printed as a matrix, otherwise element by element
-(r11 … pz), and an element longer than the line breaks before a + or − with a hanging indent,
+Text fits its width: a matrix that fits is printed as a matrix, otherwise as the matrix of
+element names followed by the elements column by column (r11, r21, r31, r12, … pz), and an
+element longer than the line breaks before a + or − with a hanging indent,
 at the outermost bracket level that leaves the line at least half full. The legend, the title
 and the notes wrap at the same width.
 
@@ -135,22 +136,52 @@ def transform_title(i, j, style: str = "unicode") -> str:
 
 
 def text_matrix(matrix: sympy.Matrix, printer: TextPrinter, width: int = 100) -> str:
-    """An aligned 4×4 matrix, or the named elements r11 … pz when the matrix is too wide."""
+    """A 4×4 transform as an aligned matrix, or, when too wide, the matrix of names r11 … pz
+    over its fixed row 0 0 0 1 and the elements column by column (see `text_grid`)."""
     cells = [[printer.doprint(matrix[r, c]) for c in range(4)] for r in range(4)]
-    widths = [max(len(cells[r][c]) for r in range(4)) for c in range(4)]
-    ascii = printer.style == "ascii"
-    if sum(widths) + 3 * 4 + 1 <= width:
-        edges = [("[", "]")] * 4 if ascii else [("⎡", "⎤"), ("⎢", "⎥"), ("⎢", "⎥"), ("⎣", "⎦")]
-        rows = []
-        for r in range(4):
-            body = "   ".join(cells[r][c].ljust(widths[c]) for c in range(4))
-            rows.append(f"{edges[r][0]} {body} {edges[r][1]}")
-        return "\n".join(rows)
+    return text_grid(cells, ELEMENT_NAMES + [cells[3]], 3, printer.style == "ascii", width)
+
+
+def text_grid(cells, names, listed_rows: int, ascii: bool, width: int = 100) -> str:
+    """Printed `cells` as an aligned matrix when it fits in `width`. Otherwise the rule of every
+    surface: the matrix of `names` (when that fits), then the elements of the first
+    `listed_rows` rows column by column, as Craig lists them (r11, r21, r31, r12, …), each
+    broken at a top-level + or − when longer than the line.
+
+    >>> print(text_grid([["a1 c1 + a2 c12", "0"], ["1", "1"]], [["J11", "J12"], ["J21", "J22"]], 2, False, 18))
+    ⎡ J11   J12 ⎤
+    ⎣ J21   J22 ⎦
+    <BLANKLINE>
+    J11 = a1 c1
+            + a2 c12
+    J21 = 1
+    <BLANKLINE>
+    J12 = 0
+    J22 = 1
+    """
+    matrix = aligned_matrix(cells, ascii)
+    if max(map(display_width, matrix.splitlines())) <= width:
+        return matrix
+    blocks = []
+    named = aligned_matrix(names, ascii)
+    if max(map(display_width, named.splitlines())) <= width:
+        blocks.append(named)
+    label_width = max(display_width(names[r][c]) for r in range(listed_rows) for c in range(len(names[0])))
+    for c in range(len(cells[0])):
+        labels = [names[r][c] + " " * (label_width - display_width(names[r][c])) + " = " for r in range(listed_rows)]
+        blocks.append("\n".join(break_element(labels[r], cells[r][c], width) for r in range(listed_rows)))
+    return "\n\n".join(blocks)
+
+
+def aligned_matrix(cells, ascii: bool) -> str:
+    """Rows of cells in aligned columns between brackets (⎡ ⎢ ⎣, or [ ] in ASCII)."""
+    widths = [max(display_width(row[c]) for row in cells) for c in range(len(cells[0]))]
     lines = []
-    for r in range(3):
-        for c in range(4):
-            lines.append(break_element(f"{ELEMENT_NAMES[r][c]:<3} = ", cells[r][c], width))
-    lines.append("bottom row: 0 0 0 1")
+    for r, row in enumerate(cells):
+        left, right = ("[", "]") if ascii else ("⎡", "⎤") if r == 0 else ("⎣", "⎦") if r == len(cells) - 1 \
+            else ("⎢", "⎥")
+        body = "   ".join(cell + " " * (w - display_width(cell)) for cell, w in zip(row, widths))
+        lines.append(f"{left} {body} {right}")
     return "\n".join(lines)
 
 
