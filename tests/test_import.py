@@ -119,3 +119,18 @@ def test_screws_as_json_and_latex(capsys):
     assert data["home"][0] == ["1", "0", "0", "a_1 + a_2"]
     status, out, _ = run(["screws", "planar2r", "--format", "latex"], capsys)
     assert status == 0 and out.startswith("\\[\nS = \\begin{bmatrix}") and "M = \\begin{bmatrix}" in out
+
+
+def test_screws_keep_the_decimals_as_written_in_every_format(capsys, tmp_path):
+    import json
+
+    path = tmp_path / "decimals.yaml"
+    path.write_text("name: decimals\nconvention: standard\njoints:\n"
+                    "  - {joint: R, alpha: pi/2, a: 0, d: 0.089159, theta: theta_1}\n"
+                    "  - {joint: R, alpha: 0, a: -0.425, d: 0, theta: theta_2}\n")
+    data = json.loads(run(["screws", path, "--format", "json"], capsys)[1])
+    assert data["screws"]["theta_2"] == ["0", "-1", "0", "0.089159", "0", "0"]
+    assert data["home"][0][3] == "-0.425"
+    latex = run(["screws", path, "--format", "latex"], capsys)[1]
+    assert "0.089159" in latex and "frac{89159}" not in latex
+    assert "0.089159" in run(["screws", path], capsys)[1]

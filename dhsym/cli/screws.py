@@ -9,7 +9,6 @@ import json
 
 from ..geometry.screws import screw_axes
 from ..printing import render
-from ..printing.printers import LatexPrinter
 from .options import format_options, robot_options
 
 
@@ -26,13 +25,14 @@ def run(robot, args) -> str:
     chain = robot.chain
     screws = screw_axes(chain)
     variables = chain.joint_variables
-    if args.format == "json":
+    if args.format == "json":  # exact, with the decimals as the file wrote them, as every JSON output
+        exact = render.exact_printer(chain).doprint
         return json.dumps({"robot": chain.name, "frame": str(chain.first_frame),
-                           "screws": {v.name: [str(x) for x in screws.matrix[:, i]] for i, v in enumerate(variables)},
-                           "home": [[str(x) for x in screws.home.row(r)] for r in range(4)]}, indent=2,
+                           "screws": {v.name: [exact(x) for x in screws.matrix[:, i]] for i, v in enumerate(variables)},
+                           "home": [[exact(x) for x in screws.home.row(r)] for r in range(4)]}, indent=2,
                           ensure_ascii=False)
     if args.format == "latex":
-        printer = LatexPrinter(variables)
+        printer = render.latex_printer(chain)
         return (f"\\[\nS = {render.latex_matrix(screws.matrix, printer)}\n\\]\n\n"
                 f"\\[\nM = {render.latex_matrix(screws.home, printer)}\n\\]")
     printer = render.text_printer(chain, ascii=args.ascii)
