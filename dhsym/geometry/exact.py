@@ -12,6 +12,7 @@ Matrix([[0, 3/5, 4/5]])
 """
 from __future__ import annotations
 
+import functools
 import re
 from fractions import Fraction
 
@@ -22,9 +23,6 @@ DIRECTION_TOLERANCE = 1e-5  # per component of a unit vector
 LENGTH_NOISE = 1e-9  # metres: a written -1.2e-17 is rounding noise, not a length
 ANGLE_STEP = sympy.pi / 12
 _DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)(?:[eE](?P<exponent>[+-]?\d{1,4}))?")
-# The cosines of the multiples of π/12: what a snapped unit-vector component may be.
-_NICE_COMPONENTS = sorted({sympy.nsimplify(sympy.cos(k * ANGLE_STEP)) for k in range(7)},
-                          key=lambda c: float(c))
 
 
 def vector(*components) -> sympy.Matrix:
@@ -174,6 +172,13 @@ def snap_direction(components: list[sympy.Rational]) -> tuple[sympy.Matrix, bool
     return unit(written), False
 
 
+@functools.cache
+def _nice_components() -> tuple:
+    """The cosines of the multiples of π/12: what a snapped unit-vector component may be
+    (worked out on first use, not when every command imports this module)."""
+    return tuple(sorted({sympy.nsimplify(sympy.cos(k * ANGLE_STEP)) for k in range(7)}, key=float))
+
+
 def _nearest_component(value: float) -> sympy.Expr:
-    best = min(_NICE_COMPONENTS, key=lambda c: abs(float(c) - abs(value)))
+    best = min(_nice_components(), key=lambda c: abs(float(c) - abs(value)))
     return best if value >= 0 else -best
