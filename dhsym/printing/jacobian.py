@@ -27,8 +27,6 @@ from . import render
 from .notation import display_name, subscript, superscript
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
-ROW_NAMES = ("vx", "vy", "vz", "ωx", "ωy", "ωz")
-
 
 class _Rates:
     """Prints the joint rates θ̇1, ḋ3 (LaTeX \\dot{\\theta}_{1}; ASCII theta1dot)."""
