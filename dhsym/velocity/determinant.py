@@ -53,10 +53,9 @@ class Determinant:
 def determinant(chain, frame=None, point=None, budget: float | None = FULL_DETERMINANT_BUDGET) -> Determinant:
     """The factored determinant of ᵏJ (or of the square block of the rows that move). `budget`
     (seconds, None for no limit) bounds only the one slow case, a 6×6 J without a wrist centre."""
-    frame, point = resolve_frames(chain, frame, point)
-    matrix = jacobian(chain, frame, point)
+    frame, point = resolve_frames(chain, frame, point)  # checked even where J in `frame` is not needed
     n = chain.n
-    if n == 6:
+    if n == 6:  # the same in every frame: worked out where it is short, not from J in `frame`
         centre = wrist_centre(chain)
         if centre is not None:
             return _wrist_partitioned(chain, centre)
@@ -65,6 +64,7 @@ def determinant(chain, frame=None, point=None, budget: float | None = FULL_DETER
         return Determinant(None, "", [], f"J is 6×{n}: the arm is redundant, and no determinant is computed. "
                            f"It is singular where all {sympy.binomial(n, 6)} of its 6×6 minors vanish (rank < 6); "
                            "those configurations are not worked out.")
+    matrix = jacobian(chain, frame, point)
     moving = [r for r in range(6) if any(x != 0 for x in matrix.row(r))]
     blocks = [moving] if len(moving) == n else [[r for r in moving if r < 3], [r for r in moving if r >= 3]]
     results = [_block(chain, frame, point, matrix, moving, rows) for rows in blocks if len(rows) == n]
