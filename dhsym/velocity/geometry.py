@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 import random
 
+from .jacobian import cross  # one cross product, for symbols and for numbers
+
 TOLERANCE = 1e-9
 
 
@@ -63,10 +65,6 @@ def axis_line(chain, joint: int, frame_poses: dict) -> tuple:
     frame = joint - 1 if chain.convention == "standard" else joint
     rotation, origin = frame_poses[frame]
     return origin, [rotation[r][2] for r in range(3)]
-
-
-def cross(u, v) -> list:
-    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
 
 
 def dot(u, v) -> float:
