@@ -13,8 +13,8 @@ PACKAGE = Path(__file__).parent.parent / "dhsym"
 # Each layer may import the layers before it (and itself), never one after it.
 # `checking.verify` (equality by algebra and numbers) is plain math, so it sits right under core;
 # `geometry` (frames from joint axes) is math on core that the robot-file reader uses for `axes:`.
-LAYERS = ["errors", "core", "checking.verify", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot", "checking",
-          "cli"]
+LAYERS = ["errors", "core", "checking.verify", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot",
+          "checking", "cli"]
 # Two conveniences on Chain reach up, lazily inside a method: Jupyter shows a chain as its DH
 # table, and `chain.jacobian()` hands over to the velocity layer built on core.
 ALLOWED_UPWARD = {("core.chain", "printing.render"), ("core.chain", "velocity.jacobian")}
