@@ -6,7 +6,8 @@ RUNTIME := $(VENV)/.ready-runtime
 DEV := $(VENV)/.ready-dev
 PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
 
-.PHONY: demo test install tex browser node-packages bench lint notebooks clean
+# The fast lane for the edit-test loop: no notebooks, browser, pdflatex, pip or fuzzing (under a minute).
+.PHONY: demo test check install tex browser node-packages bench lint notebooks clean
 
 # The demo needs only what dhsym itself imports; the tests add pytest, jupyter, ruff and friends.
 $(RUNTIME): pyproject.toml requirements.txt
@@ -37,6 +38,10 @@ demo: $(RUNTIME)
 test: install tex browser node-packages
 	$(BIN)/ruff check dhsym tests benchmarks
 	$(BIN)/python -m pytest
+
+check: install
+	$(BIN)/ruff check dhsym tests benchmarks
+	$(BIN)/python -m pytest -m "not slow" -x
 
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py

@@ -12,3 +12,25 @@ settings.register_profile("dev", deadline=None, max_examples=40, suppress_health
 settings.register_profile("ci", deadline=None, max_examples=40, suppress_health_check=[HealthCheck.too_slow],
                           derandomize=True)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
+
+
+# The fast lane (`make check`) leaves out what takes minutes: notebooks, the browser, pdflatex,
+# a fresh pip install, fuzzing, property tests and dhsym run as a process. `make test` runs everything.
+# The CLI files run dhsym as a process per case; the property files draw many random chains.
+SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_fuzz.py", "test_cli.py", "test_velocity_cli.py",
+              "test_readme.py", "test_velocity_properties.py")
+SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_through_subprocess",
+              "test_commands_without_pictures_import_no_numpy", "test_transform_times_its_inverse_is_identity",
+              "test_every_frame_matches_the_raw_product_numerically",
+              "test_the_ur5_determinant_factors_without_a_wrist_centre")
+SLOW_FIXTURES = ("compiled",)  # tests that run pdflatex
+
+
+def pytest_collection_modifyitems(config, items):
+    import pytest
+
+    for item in items:
+        fixtures = getattr(item, "fixturenames", ())
+        if (item.path.name in SLOW_FILES or getattr(item, "originalname", item.name) in SLOW_TESTS
+                or any(name in fixtures for name in SLOW_FIXTURES)):
+            item.add_marker(pytest.mark.slow)
