@@ -102,3 +102,12 @@ def test_printed_terms_keep_the_lectures_order_and_grouping():
     pieces = regroup(printed_terms("c*(a + b) + 1"), c * (a - b) + 1)
     assert [differs for _, differs in pieces] == [True, False]
     assert pieces[0][0].args and sympy.expand(pieces[0][0]) == sympy.expand(c * (a - b))
+
+
+def test_a_cause_shared_by_elements_is_said_once_and_each_element_shown():
+    flip = errata.spoken("read the other way round", lines=(331,))
+    result = errata.compare_printed(["1", "2"], sympy.Matrix([0, 3]), "t", reasons={(1, 1): flip, (2, 1): flip})
+    page = result.markdown()
+    assert page.count("read the other way round") == 1
+    assert "- **(1,1), (2,1)** spoken slip (l.331)" in page
+    assert page.count("printed − dhsym") == 2

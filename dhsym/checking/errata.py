@@ -153,13 +153,19 @@ class Comparison:
         agreeing = [f"({e.row},{e.column})" for e in self.elements if e.ok]
         if agreeing:
             lines += ["agree: " + ", ".join(agreeing), ""]
-        for e in self.errata:
-            why = f": {e.reason}" if e.reason else ""
-            lines.append(f"- **({e.row},{e.column})** {e.label()}{e.where()}{why}")
-            shown = _code_span(e.verbatim) if e.verbatim else _terms_latex(_printed_order(e), printer)
-            lines.append(f"    - printed: {shown}")
-            lines.append(f"    - dhsym, in the printed order: {_terms_latex(_regrouped(e), printer)}")
-            lines.append(f"    - printed − dhsym: ${printer.doprint(difference(e.printed, e.derived))}$")
+        for group in _by_cause(self.errata):
+            first = group[0]
+            why = f": {first.reason}" if first.reason else ""
+            places = ", ".join(f"({e.row},{e.column})" for e in group)
+            lines.append(f"- **{places}** {first.label()}{first.where()}{why}")
+            for e in group:  # one cause shared by several elements is said once, then each element shown
+                indent = "    " if len(group) == 1 else "        "
+                if len(group) > 1:
+                    lines.append(f"    - **({e.row},{e.column})**")
+                shown = _code_span(e.verbatim) if e.verbatim else _terms_latex(_printed_order(e), printer)
+                lines.append(f"{indent}- printed: {shown}")
+                lines.append(f"{indent}- dhsym, in the printed order: {_terms_latex(_regrouped(e), printer)}")
+                lines.append(f"{indent}- printed − dhsym: ${printer.doprint(difference(e.printed, e.derived))}$")
         return "\n".join(lines)
 
     def _repr_markdown_(self) -> str:
@@ -245,6 +251,14 @@ def _by_position(verbatim) -> dict:
         return dict(verbatim)
     rows = [row if isinstance(row, (list, tuple)) else [row] for row in verbatim]
     return {(r + 1, c + 1): text for r, row in enumerate(rows) for c, text in enumerate(row) if text}
+
+
+def _by_cause(errata: list[ElementCheck]) -> list[list[ElementCheck]]:
+    """Errata grouped by their cause, in order of first appearance; unclassified ones stay alone."""
+    groups: dict = {}
+    for e in errata:
+        groups.setdefault(e.cause if e.cause is not None else id(e), []).append(e)
+    return list(groups.values())
 
 
 def _all_agree(count: int, partial: bool) -> str:
