@@ -12,6 +12,12 @@ expanded value that it stands for, and what is left over is added at the end.
 >>> difference(a*b + c - b, a*b + c + a)
 -(a + b)
 
+A difference is factored where that shortens it, with cos and sin kept as they are:
+
+>>> c6, s6 = sympy.cos(a), sympy.sin(a)
+>>> difference(-b*s6 + c*c6, -b*c6 + c*s6)
+(b + c)*(-sin(a) + cos(a))
+
 A printed term that is a product with a bracket is compared inside the bracket:
 
 >>> [(str(term), differs) for term, differs in regroup(["c*(a + b)"], c*(a - b))]
@@ -87,8 +93,11 @@ def difference(printed: sympy.Expr, derived: sympy.Expr) -> sympy.Expr:
     plain = sympy.expand(printed - derived)
     candidates = [plain, sympy.factor_terms(plain)]
     if sympy.count_ops(plain) <= MAX_SIMPLIFY_OPS:
-        candidates.append(sympy.factor_terms(sympy.trigsimp(plain)))
-    return min(candidates, key=sympy.count_ops)
+        candidates.append(sympy.factor(plain))  # cos and sin as unknowns: (c6 - s6)(c1 s5 + s1 s4)
+        simpler = sympy.factor_terms(sympy.trigsimp(plain))
+        if not simpler.has(sympy.sqrt(2), sympy.pi) or plain.has(sympy.pi):  # not √2 cos(θ6 + π/4) for c6 − s6
+            candidates.append(simpler)
+    return min(candidates, key=sympy.count_ops)  # the first of the shortest: no rewriting unless it shortens
 
 
 def _monomials(expr) -> dict:
