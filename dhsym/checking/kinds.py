@@ -156,7 +156,15 @@ def printed_differences(causes) -> int:
 
 
 def counted(number: int, noun: str) -> str:
-    """'1 spoken slip', '2 inconsistencies': a count and its noun, in the plural where needed."""
-    if number == 1 or noun.endswith("damage"):  # damage is uncountable
+    """'1 spoken slip', '2 inconsistencies': a count and its noun, in the plural where needed.
+
+    >>> counted(2, Kind.CORRECTED.value), counted(2, "hypothetical"), counted(3, "transcription damage")
+    ('2 slips corrected by the lecturer', '2 hypothetical', '3 transcription damage')
+    """
+    if number == 1 or noun.endswith("damage") or noun == Kind.HYPOTHETICAL.value:  # uncountable, an adjective
         return f"{number} {noun}"
+    head, by, tail = noun.partition(" by ")  # 'slip corrected by the lecturer': the plural is of 'slip'
+    if by:
+        first, _, rest = head.partition(" ")
+        return f"{number} {first}s {rest}{by}{tail}"
     return f"{number} {noun[:-1] + 'ies' if noun.endswith('y') else noun + 's'}"
