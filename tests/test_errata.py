@@ -111,3 +111,14 @@ def test_a_cause_shared_by_elements_is_said_once_and_each_element_shown():
     assert page.count("read the other way round") == 1
     assert "- **(1,1), (2,1)** spoken slip (l.331)" in page
     assert page.count("printed − dhsym") == 2
+
+
+def test_a_bracketed_printed_term_keeps_its_outer_factor_with_one_sign():
+    from dhsym.checking.regroup import printed_terms, regroup
+    from dhsym.printing.printers import LatexPrinter
+    t1, t2 = sympy.symbols("theta_1 theta_2", real=True)
+    a2, a3 = sympy.symbols("a_2 a_3", real=True)
+    derived = -sympy.cos(t1) * (a2 * sympy.cos(t2) + a3)
+    pieces = regroup(printed_terms("-cos(theta_1)*(a_2*cos(theta_2) - a_3)"), derived)
+    assert [LatexPrinter([t1, t2]).doprint(term) for term, _ in pieces] == ["-c_{1}(a_{3} + a_{2} c_{2})"]
+    assert sympy.expand(pieces[0][0] - derived) == 0 and pieces[0][1]

@@ -124,7 +124,11 @@ def _in_grouping(printed: sympy.Expr, value: sympy.Expr) -> sympy.Expr:
     outer = sympy.Mul(*[f for f in sympy.Mul.make_args(printed) if not f.is_Add])
     if value == 0 or outer == 1 or not any(f.is_Add for f in sympy.Mul.make_args(printed)):
         return value
-    inner = sympy.expand(value / outer)
-    if any(p.is_Pow and p.exp.is_negative for m in sympy.Add.make_args(inner) for p in sympy.Mul.make_args(m)):
-        return value
-    return sympy.Mul(outer, inner, evaluate=False)
+    number, symbols = outer.as_coeff_Mul()
+    for factor in (outer, sympy.sign(number) * symbols):  # 2c1(…) only if the bracket keeps whole numbers
+        inner = sympy.expand(value / factor)
+        if all(k.is_Integer for k in inner.as_coefficients_dict().values()) and not any(
+                p.is_Pow and p.exp.is_negative for m in sympy.Add.make_args(inner) for p in sympy.Mul.make_args(m)):
+            sign, rest = factor.as_coeff_Mul()  # the number first, so that the printer sees one sign: -c1(a + b)
+            return sympy.Mul(*([sign] if sign != 1 else []), *sympy.Mul.make_args(rest), inner, evaluate=False)
+    return value
