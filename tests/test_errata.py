@@ -122,3 +122,13 @@ def test_a_bracketed_printed_term_keeps_its_outer_factor_with_one_sign():
     pieces = regroup(printed_terms("-cos(theta_1)*(a_2*cos(theta_2) - a_3)"), derived)
     assert [LatexPrinter([t1, t2]).doprint(term) for term, _ in pieces] == ["-c_{1}(a_{3} + a_{2} c_{2})"]
     assert sympy.expand(pieces[0][0] - derived) == 0 and pieces[0][1]
+
+
+def test_a_single_printed_expression_keeps_its_term_order_too():
+    t1, t2 = sympy.symbols("theta_1 theta_2", real=True)
+    l1, l2 = sympy.symbols("L_1 L_2", real=True)
+    derived = l1 * sympy.cos(t1) + l2 * sympy.cos(t1 + t2)
+    result = errata.compare_printed("L_1*cos(theta_1) + L_2*cos(theta_2)", derived, "q_x",
+                                    reasons={(1, 1): errata.spoken("theta_2 for theta_1 + theta_2")},
+                                    joint_variables=[t1, t2])
+    assert r"dhsym, in the printed order: $L_{1} c_{1}$ $+ \boxed{L_{2} c_{12}}$" in result.markdown()

@@ -200,12 +200,13 @@ def compare_printed(printed, derived, title: str = "printed result", reasons=Non
             add(r, c, value)
         result.partial = len(printed) < len(derived)
         return result
-    sources = _by_position(printed) if not isinstance(printed, (sympy.MatrixBase, sympy.Expr, str, int)) else {}
+    sources = {(1, 1): printed} if isinstance(printed, str) else \
+        _by_position(printed) if not isinstance(printed, (sympy.MatrixBase, sympy.Expr, int)) else {}
     matrix = transcribe(printed)
     if matrix.shape != derived.shape:
         if matrix.shape == derived.T.shape and 1 in matrix.shape:
             matrix = matrix.T
-            sources = {(c, r): text for (r, c), text in sources.items()} if derived.cols == 1 else sources
+            sources = {(c, r): text for (r, c), text in sources.items()}
         else:
             raise ValueError(f"printed shape {matrix.shape} differs from derived shape {derived.shape}")
     for r in range(derived.rows):
