@@ -68,3 +68,63 @@ def test_no_floats_in_any_builtin_result():
     from dhsym.io.library import builtin_names
     for name in builtin_names():
         assert not load(name).fk().atoms(sympy.Float), name
+
+
+# ViSP's Viper 650/850 (lagadic/visp, vpViper.h: standard DH; the wrist frame w is frame 6, the
+# end effector e is d6 further along z6), with its published forward kinematics get_fMw and get_fMe.
+VIPER = """
+name: Viper
+convention: standard
+joints:
+  - {joint: R, a: a_1, d: d_1, alpha: -pi/2, theta: q_1}
+  - {joint: R, a: a_2, d: 0,   alpha: 0,     theta: q_2}
+  - {joint: R, a: a_3, d: 0,   alpha: -pi/2, theta: q_3 - pi}
+  - {joint: R, a: 0,   d: d_4, alpha: pi/2,  theta: q_4}
+  - {joint: R, a: 0,   d: 0,   alpha: -pi/2, theta: q_5}
+  - {joint: R, a: 0,   d: 0,   alpha: 0,     theta: q_6 - pi}
+tool: [{Tz: d_6}]
+"""
+
+
+def visp_viper():
+    """fMw and fMe as vpViper.cpp writes them (c23 = cos(q2 + q3))."""
+    q = {i: sympy.Symbol(f"q_{i}", real=True) for i in range(1, 7)}
+    a1, a2, a3, d1, d4, d6 = sympy.symbols("a_1 a_2 a_3 d_1 d_4 d_6", real=True)
+    c1, c2, c4, c5, c6 = (sympy.cos(q[i]) for i in (1, 2, 4, 5, 6))
+    s1, s2, s4, s5, s6 = (sympy.sin(q[i]) for i in (1, 2, 4, 5, 6))
+    c23, s23 = sympy.cos(q[2] + q[3]), sympy.sin(q[2] + q[3])
+    rotation = [
+        [c1 * (c23 * (c4 * c5 * c6 - s4 * s6) - s23 * s5 * c6) - s1 * (s4 * c5 * c6 + c4 * s6),
+         -c1 * (c23 * (c4 * c5 * s6 + s4 * c6) - s23 * s5 * s6) + s1 * (s4 * c5 * s6 - c4 * c6),
+         c1 * (c23 * c4 * s5 + s23 * c5) - s1 * s4 * s5],
+        [-s1 * (c23 * (-c4 * c5 * c6 + s4 * s6) + s23 * s5 * c6) + c1 * (s4 * c5 * c6 + c4 * s6),
+         -s1 * (c23 * (c4 * c5 * s6 + s4 * c6) - s23 * s5 * s6) - c1 * (s4 * c5 * s6 - c4 * c6),
+         s1 * (c23 * c4 * s5 + s23 * c5) + c1 * s4 * s5],
+        [s23 * (s4 * s6 - c4 * c5 * c6) - c23 * s5 * c6, s23 * (c4 * c5 * s6 + s4 * c6) + c23 * s5 * s6,
+         -s23 * c4 * s5 + c23 * c5]]
+    reach = -c23 * a3 + s23 * d4 + a1 + a2 * c2
+    wrist = [c1 * reach, s1 * reach, s23 * a3 + c23 * d4 - a2 * s2 + d1]
+    reach_e = c23 * (c4 * s5 * d6 - a3) + s23 * (c5 * d6 + d4) + a1 + a2 * c2
+    flange = [c1 * reach_e - s1 * s4 * s5 * d6, s1 * reach_e + c1 * s4 * s5 * d6,
+              s23 * (a3 - c4 * s5 * d6) + c23 * (c5 * d6 + d4) - a2 * s2 + d1]
+
+    def matrix(position):
+        return sympy.Matrix([row + [p] for row, p in zip(rotation, position)] + [[0, 0, 0, 1]])
+    return {"fMw": matrix(wrist), "fMe": matrix(flange)}
+
+
+@pytest.mark.parametrize("name", ["fMw", "fMe"])
+def test_visp_viper_text_and_json_are_no_longer_than_visp(name):
+    """The JSON, read back by SymPy, has the text form's brackets: −c23(a + b), never c23(−a − b)."""
+    from dhsym.io.robotfile import load_robot_text
+    from dhsym.printing import render
+    chain = load_robot_text(VIPER).chain
+    ours = chain.transform(0, 6) if name == "fMw" else chain.fk()
+    printed = visp_viper()[name]
+    assert check(ours, printed)
+    exact = render.exact_printer(chain)
+    names = {symbol.name: symbol for symbol in ours.free_symbols}
+    for k in range(12):
+        back = sympy.sympify(exact.doprint(ours[k]), locals=names)
+        assert back == ours[k], (name, k)
+        assert sympy.count_ops(back) <= sympy.count_ops(printed[k]), (name, k, exact.doprint(ours[k]), printed[k])

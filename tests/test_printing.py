@@ -187,3 +187,19 @@ def test_long_elements_break_at_top_level_signs_and_the_legend_wraps():
     wide = TextPrinter(t, ascii=True)
     wide.doprint(sympy.cos(t[0] + t[1] - t[3] + t[9]))
     assert all(len(line) <= 40 for line in text_legend(wide, 40).splitlines())
+
+
+def test_json_form_reads_back_to_the_same_expression_with_no_extra_sign():
+    """'-(a + b)*c1' would read back as c1*(-a - b), one operation more than the text form's
+    −c1(a + b); the exact form puts the minus on a factor that is not a sum."""
+    from dhsym.io.library import builtin_names
+    from dhsym.printing.printers import ExactPrinter
+    a, b, c = sympy.symbols("a b c", real=True)
+    assert ExactPrinter().doprint(-sympy.cos(c) * (a + b)) == "-cos(c)*(a + b)"
+    assert ExactPrinter().doprint(-2 * sympy.cos(c) * (a + b) / c) == "-2*cos(c)*(a + b)/c"
+    for name in builtin_names():
+        robot = load(name)
+        exact = ExactPrinter(robot.joint_variables)
+        for element in robot.fk():
+            names = {symbol.name: symbol for symbol in element.free_symbols}
+            assert sympy.sympify(exact.doprint(element), locals=names) == element, (name, element)

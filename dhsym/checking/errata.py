@@ -28,7 +28,21 @@ it; dhsym's reading of it is shown beside it:
 slide 4: 0 of 1 elements agree; 1 erratum (1 spoken slip)
   spoken slip at (2,2) (l.87): printed "l1 C1" (read as l1 c1), correct l1 s1 — cos for sin
 >>> print(tally([result, slip]))
-genuine errors of the lecture: 1 (1 spoken slip), in 1 element; transcription damage: 0; unclassified: 1 element
+genuine errors of the lecture: 1 (1 spoken slip), in 1 element; unsure: 0; unclassified: 1 element
+
+In a notebook a comparison shows itself as markdown: one line when all agree, and for each erratum
+the element as printed, dhsym's value in the printed term order with the differing terms boxed,
+and the difference:
+
+>>> print(compare_printed({(1, 2): "l_1*cos(theta_1)"}, derived, "slide 4", joint_variables=[t1]).markdown())
+✅ slide 4: the printed element agrees
+>>> print(slip.markdown([t1]))
+❌ **slide 4: 0 of 1 elements agree; 1 erratum (1 spoken slip)**
+<BLANKLINE>
+- **(2,2)** spoken slip (l.87): cos for sin
+    - printed: `l1 C1`
+    - dhsym, in the printed order: $\\boxed{l_{1} s_{1}}$
+    - printed − dhsym: $l_{1}(c_{1} - s_{1})$
 """
 from __future__ import annotations
 
@@ -42,7 +56,10 @@ from ..printing.printers import LatexPrinter, TextPrinter
 
 # the kinds are re-exported, so that a notebook imports one module to classify its errata
 from .kinds import Cause, Kind, counted, hypothetical, inconsistency, ocr, slide, spoken  # noqa: F401
+from .kinds import corrected as corrected  # noqa: F401
+from .kinds import printed_differences as printed_differences  # noqa: F401
 from .kinds import tally as tally_causes
+from .regroup import difference, printed_terms, regroup
 from .verify import Verdict, check
 
 
@@ -57,6 +74,7 @@ class ElementCheck:
     verdict: Verdict
     cause: Cause | None = None  # why it differs, when the caller knows
     verbatim: str = ""  # the element as the transcript prints it
+    source: str = ""  # the printed element as given to compare_printed, in the lecture's term order
 
     @property
     def ok(self) -> bool:
@@ -85,7 +103,8 @@ class Comparison:
     title: str
     elements: list[ElementCheck] = field(default_factory=list)
     joint_variables: tuple = ()  # for the c/s notation of reports and tables
-    fold: bool = False  # in a notebook, keep the table of a fully agreeing comparison folded
+    fold: bool = False  # kept for old callers: a fully agreeing comparison is always one line
+    partial: bool = False  # only some elements of the matrix were printed, and so compared
 
     @property
     def ok(self) -> bool:
@@ -97,8 +116,10 @@ class Comparison:
 
     def summary(self) -> str:
         agree = len(self.elements) - len(self.errata)
+        if not self.errata:
+            return f"{self.title}: {_all_agree(len(self.elements), self.partial)}"
         errata = len(self.errata)
-        tail = "all agree" if not errata else f"{errata} errat{'um' if errata == 1 else 'a'}"
+        tail = f"{errata} errat{'um' if errata == 1 else 'a'}"
         kinds = Counter(e.kind for e in self.errata if e.kind)
         if kinds:
             tail += " (" + ", ".join(counted(n, kind.value) for kind, n in kinds.items()) + ")"
@@ -118,28 +139,28 @@ class Comparison:
         return "\n".join(lines)
 
     def markdown(self, joint_variables=None, fold: bool = False) -> str:
-        """A table for notebooks: every element with its verdict; errata in bold.
+        """The verdict for a notebook: one line when every element agrees; else the elements that
+        agree on one line and, for each erratum, the element as printed, dhsym's value in the
+        printed term order with the differing terms boxed, and printed − dhsym.
 
-        With `fold`, a comparison that fully agrees shows only its verdict line and keeps the
-        table behind a click, so that the errata stand out in a long notebook.
+        Long expressions are written term by term, so that the page breaks them between terms
+        instead of shrinking them. (`fold` is kept for old callers; agreement is always one line.)
         """
         printer = LatexPrinter(self.joint_variables if joint_variables is None else joint_variables)
-        icon = "✅" if self.ok else "❌"
-        as_printed = any(e.verbatim for e in self.elements)
-        if as_printed:
-            table = ["| element | printed (transcript) | read as | derived | verdict |", "|---|---|---|---|---|"]
-        else:
-            table = ["| element | printed | derived | verdict |", "|---|---|---|---|"]
-        for e in self.elements:
-            verdict = "agrees" if e.ok else f"**{e.label()}**{e.where()}" + (f": {e.reason}" if e.reason else "")
-            verbatim = [_code_span(e.verbatim) if e.verbatim else "—"] if as_printed else []
-            cells = [f"({e.row},{e.column})", *verbatim, f"${printer.doprint(e.printed)}$",
-                     f"${printer.doprint(e.derived)}$", verdict.replace("|", "\\|")]
-            table.append("| " + " | ".join(cells) + " |")
-        headline = f"{icon} {self.summary()}"
-        if fold and self.ok:
-            return f"<details><summary>{headline}</summary>\n\n" + "\n".join(table) + "\n\n</details>"
-        return "\n".join([f"**{headline}**", ""] + table)
+        if self.ok:
+            return f"✅ {self.summary()}"
+        lines = [f"❌ **{self.summary()}**", ""]
+        agreeing = [f"({e.row},{e.column})" for e in self.elements if e.ok]
+        if agreeing:
+            lines += ["agree: " + ", ".join(agreeing), ""]
+        for e in self.errata:
+            why = f": {e.reason}" if e.reason else ""
+            lines.append(f"- **({e.row},{e.column})** {e.label()}{e.where()}{why}")
+            shown = _code_span(e.verbatim) if e.verbatim else _terms_latex(_printed_order(e), printer)
+            lines.append(f"    - printed: {shown}")
+            lines.append(f"    - dhsym, in the printed order: {_terms_latex(_regrouped(e), printer)}")
+            lines.append(f"    - printed − dhsym: ${printer.doprint(difference(e.printed, e.derived))}$")
+        return "\n".join(lines)
 
     def _repr_markdown_(self) -> str:
         return self.markdown(fold=self.fold)
@@ -162,23 +183,29 @@ def compare_printed(printed, derived, title: str = "printed result", reasons=Non
     texts = _by_position(verbatim)
     result = Comparison(title, joint_variables=tuple(joint_variables), fold=fold)
 
-    def add(r, c, expr):
+    def add(r, c, value):
+        expr = _read(value)
         result.elements.append(ElementCheck(r, c, expr, derived[r - 1, c - 1], check(expr, derived[r - 1, c - 1]),
-                                            causes.get((r, c)), texts.get((r, c), "")))
+                                            causes.get((r, c)), texts.get((r, c), ""),
+                                            value if isinstance(value, str) else ""))
 
     if isinstance(printed, dict):
         for (r, c), value in sorted(printed.items()):
-            add(r, c, _read(value))
+            add(r, c, value)
+        result.partial = len(printed) < len(derived)
         return result
-    printed = transcribe(printed)
-    if printed.shape != derived.shape:
-        if printed.shape == derived.T.shape and 1 in printed.shape:
-            printed = printed.T
+    sources = _by_position(printed) if not isinstance(printed, (sympy.MatrixBase, sympy.Expr, str, int)) else {}
+    matrix = transcribe(printed)
+    if matrix.shape != derived.shape:
+        if matrix.shape == derived.T.shape and 1 in matrix.shape:
+            matrix = matrix.T
+            sources = {(c, r): text for (r, c), text in sources.items()} if derived.cols == 1 else sources
         else:
-            raise ValueError(f"printed shape {printed.shape} differs from derived shape {derived.shape}")
+            raise ValueError(f"printed shape {matrix.shape} differs from derived shape {derived.shape}")
     for r in range(derived.rows):
         for c in range(derived.cols):
-            add(r + 1, c + 1, printed[r, c])
+            source = sources.get((r + 1, c + 1))
+            add(r + 1, c + 1, source if isinstance(source, str) else matrix[r, c])
     return result
 
 
@@ -218,6 +245,40 @@ def _by_position(verbatim) -> dict:
         return dict(verbatim)
     rows = [row if isinstance(row, (list, tuple)) else [row] for row in verbatim]
     return {(r + 1, c + 1): text for r, row in enumerate(rows) for c, text in enumerate(row) if text}
+
+
+def _all_agree(count: int, partial: bool) -> str:
+    """'all 16 elements agree', 'all 3 printed elements agree', 'the element agrees'."""
+    if count == 1:
+        return "the printed element agrees" if partial else "the element agrees"
+    return f"all {count} {'printed ' if partial else ''}elements agree"
+
+
+def _printed_order(e: ElementCheck) -> list[tuple[sympy.Expr, bool]]:
+    """The printed element's terms in the lecture's order (from its text when it was given as text)."""
+    terms = printed_terms(e.source) if e.source else [e.printed]
+    try:
+        return [(_read(term), False) for term in terms]
+    except Exception:  # a piece the parser cannot read alone: the whole element, in SymPy's order
+        return [(e.printed, False)]
+
+
+def _regrouped(e: ElementCheck) -> list[tuple[sympy.Expr, bool]]:
+    return regroup([term for term, _ in _printed_order(e)], e.derived)
+
+
+def _terms_latex(terms, printer) -> str:
+    """Terms as separate inline formulas, '$a$ $+ \\boxed{b}$', so that a long sum breaks between
+    terms; a term marked as differing is boxed."""
+    pieces = []
+    for position, (term, differs) in enumerate(terms):
+        text = printer.doprint(term)
+        negative = text.startswith("-")
+        body = text[1:].strip() if negative else text
+        body = f"\\boxed{{{body}}}" if differs else body
+        sign = ("-" if negative else "") if position == 0 else ("- " if negative else "+ ")
+        pieces.append(f"${sign}{body}$")
+    return " ".join(pieces)
 
 
 def _code_span(text: str) -> str:

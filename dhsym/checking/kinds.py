@@ -29,6 +29,7 @@ class Kind(Enum):
     INCONSISTENCY = "inconsistency"  # two places of the lecture disagree and one must be wrong
     OCR = "transcription damage"  # the transcript garbled what the lecture shows (OCR, speech-to-text)
     HYPOTHETICAL = "hypothetical"  # not printed: a product of misprinted factors, worked out here
+    CORRECTED = "slip corrected by the lecturer"  # said wrong and put right a moment later
 
     @property
     def genuine(self) -> bool:
@@ -86,43 +87,72 @@ def hypothetical(why: str, lines=(), confidence: str = "certain") -> Cause:
     return Cause(Kind.HYPOTHETICAL, why, lines, confidence)
 
 
+def corrected(why: str, lines=(), confidence: str = "certain") -> Cause:
+    """A slip the lecturer puts right a moment later: worth a note, not an error of the lecture."""
+    return Cause(Kind.CORRECTED, why, lines, confidence)
+
+
 UNCLASSIFIED = "unclassified"
 
 
 def tally(causes) -> str:
-    """One line that keeps the lecture's own errors apart from transcription damage.
+    """One line that counts the lecture's certain errors apart from the unsure ones, the slips it
+    corrects at once, the damage done by transcribing it and what is only worked out here.
 
     `causes` holds the Cause of each differing element (None where nobody classified it). One
     cause shared by several elements is one error, so both are counted: errors and elements.
+    A genuine cause counts as an error of the lecture only when it is certain; a "likely" or
+    "unsure" one is listed apart. Parts after the first two are left out when they are zero.
 
     >>> slip, damage = spoken("pi - phi1"), ocr("l lost")
-    >>> print(tally([slip, slip, damage, slide("1 for 0"), hypothetical("product")]).replace("; ", ";\\n"))
+    >>> doubt = slide("c1 missing?", confidence="unsure")
+    >>> causes = [slip, slip, damage, slide("1 for 0"), doubt, doubt, corrected("pi/2, then -pi/2"),
+    ...           hypothetical("product")]
+    >>> print(tally(causes).replace("; ", ";\\n"))
     genuine errors of the lecture: 2 (1 slide error, 1 spoken slip), in 3 elements;
+    unsure: 1 (1 slide error), in 2 elements;
+    corrected at once: 1;
     transcription damage: 1, in 1 element;
     hypothetical: 1 element
     >>> print(tally([None]))
-    genuine errors of the lecture: 0; transcription damage: 0; unclassified: 1 element
+    genuine errors of the lecture: 0; unsure: 0; unclassified: 1 element
     """
     causes = list(causes)
+    known = [cause for cause in causes if cause is not None and cause.kind is not None]
 
-    def count(kinds):
-        mine = [cause for cause in causes if cause is not None and cause.kind in kinds]
-        return set(mine), len(mine)
+    def part(label, chosen, detail=True, elements=True):
+        errors = set(chosen)
+        by_kind = Counter(cause.kind for cause in errors)
+        kinds = ", ".join(counted(by_kind[kind], kind.value) for kind in Kind if by_kind[kind])
+        text = f"{label}: {len(errors)}" + (f" ({kinds})" if detail and kinds else "")
+        return text + (f", in {counted(len(chosen), 'element')}" if elements and chosen else "")
 
-    errors, elements = count([kind for kind in Kind if kind.genuine])
-    by_kind = Counter(cause.kind for cause in errors)
-    detail = ", ".join(counted(by_kind[kind], kind.value) for kind in Kind if by_kind[kind])
-    line = f"genuine errors of the lecture: {len(errors)}" + (f" ({detail})" if detail else "")
-    parts = [line + (f", in {counted(elements, 'element')}" if elements else "")]
-    damages, damaged = count([Kind.OCR])
-    parts.append(f"transcription damage: {len(damages)}" + (f", in {counted(damaged, 'element')}" if damaged else ""))
-    _, worked_out = count([Kind.HYPOTHETICAL])
+    certain = [c for c in known if c.kind.genuine and c.confidence == "certain"]
+    unsure = [c for c in known if c.kind.genuine and c.confidence != "certain"]
+    parts = [part("genuine errors of the lecture", certain), part("unsure", unsure)]
+    fixed = [c for c in known if c.kind is Kind.CORRECTED]
+    if fixed:
+        parts.append(part("corrected at once", fixed, detail=False, elements=False))
+    damaged = [c for c in known if c.kind is Kind.OCR]
+    if damaged:
+        parts.append(part("transcription damage", damaged, detail=False))
+    worked_out = sum(c.kind is Kind.HYPOTHETICAL for c in known)
     if worked_out:
         parts.append(f"hypothetical: {counted(worked_out, 'element')}")
-    unclassified = sum(cause is None or cause.kind is None for cause in causes)
+    unclassified = len(causes) - len(known)
     if unclassified:
         parts.append(f"{UNCLASSIFIED}: {counted(unclassified, 'element')}")
     return "; ".join(parts)
+
+
+def printed_differences(causes) -> int:
+    """How many printed elements differ: every erratum but the hypothetical ones, which are worked
+    out here and were never printed.
+
+    >>> printed_differences([spoken("d3 for -d3"), hypothetical("product"), None])
+    2
+    """
+    return sum(not (cause is not None and cause.kind is Kind.HYPOTHETICAL) for cause in causes)
 
 
 def counted(number: int, noun: str) -> str:

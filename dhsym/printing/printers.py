@@ -45,7 +45,7 @@ from __future__ import annotations
 
 import sympy
 from sympy.printing.latex import LatexPrinter as _SympyLatex
-from sympy.printing.precedence import precedence
+from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
 from ..core.numbers import WrittenNumbers
@@ -272,6 +272,13 @@ class ExactPrinter(StrPrinter):
     >>> ExactPrinter(numbers=WrittenNumbers(places=3), offsets={t2: -sympy.pi / 4},
     ...              joint_variables=[t2]).doprint(-sympy.Rational(17, 40) * sympy.sin(t2 + sympy.pi / 4))
     '-0.425*cos(theta_2 - pi/4)'
+
+    A minus before a bracket goes on a factor that is not a sum, so that reading back keeps the
+    grouping (`-(a + b)*cos(c)` would come back as (-a - b)*cos(c), a sign more):
+
+    >>> a, b, c = sympy.symbols("a b c")
+    >>> ExactPrinter().doprint(-sympy.cos(c) * (a + b))
+    '-cos(c)*(a + b)'
     """
 
     _default_settings = {**StrPrinter._default_settings, **TEXTBOOK_SETTINGS}
@@ -290,11 +297,19 @@ class ExactPrinter(StrPrinter):
 
     def _print_Mul(self, expr):
         coefficient, rest = expr.as_coeff_Mul()
-        decimal = decimal_factor(abs(coefficient), sympy.Mul.make_args(rest), self.numbers)
-        if not decimal:
-            return super()._print_Mul(expr)
+        factors = sympy.Mul.make_args(rest)
+        decimal = decimal_factor(abs(coefficient), factors, self.numbers)
         sign = "-" if coefficient < 0 else ""
-        return f"{sign}{decimal}*{self.parenthesize(rest, precedence(expr), strict=True)}"
+        if decimal:
+            return f"{sign}{decimal}*{self.parenthesize(rest, precedence(expr), strict=True)}"
+        if not (sign and any(f.is_Add for f in factors)):
+            return super()._print_Mul(expr)
+        # -c1*(a + b), as the text form groups it: "-(a + b)*c1" would read back as c1*(-a - b)
+        lead = next((f for f in factors if not f.is_Add and not (f.is_Pow and f.exp.is_negative)), None)
+        if lead is None:
+            return f"-({super()._print_Mul(-expr)})"
+        pieces = ([abs(coefficient)] if coefficient != -1 else []) + [lead, sympy.Mul(*(set(factors) - {lead}))]
+        return "-" + "*".join(self.parenthesize(piece, PRECEDENCE["Mul"], strict=True) for piece in pieces)
 
 
 def decimal_factor(coefficient, factors, numbers: WrittenNumbers) -> str | None:
