@@ -13,8 +13,8 @@ from dhsym.geometry.exact import vector
 from dhsym.geometry.frames import assign_frames
 from dhsym.geometry.lines import JointAxis
 from dhsym.geometry.screws import chain_axes, product_of_exponentials, screw_axes
-from dhsym.geometry.urdf import read_urdf, read_urdf_text
 from dhsym.io.library import builtin_names, load
+from dhsym.io.urdf import read_urdf, read_urdf_text
 from tests.urdf_builder import serial_urdf, urdf_fk
 
 DATA = "tests/data"
@@ -88,7 +88,7 @@ def test_rounded_angles_become_exact_with_a_warning():
     chain = assign_frames(urdf.axes, urdf.tool, "modified").chain()
     assert all((row.alpha / (sympy.pi / 12)).is_integer for row in chain.rows)
     assert not any(value.has(sympy.Float) for row in chain.rows for value in (row.theta, row.d, row.a, row.alpha))
-    assert urdf.warnings[0].startswith("edge.urdf:9: angles snapped to exact multiples of π/12")
+    assert urdf.warnings[0].startswith("edge.urdf:9:102: angles snapped to exact multiples of π/12")
     assert all(f"{text} → {exact}" in urdf.warnings[0]
                for text, exact in (("1.570796325", "π/2"), ("-1.5708", "-π/2"), ("0.5236", "π/6")))
     assert "axis directions snapped" in urdf.warnings[-1]

@@ -8,9 +8,9 @@ import pytest
 import sympy
 
 from dhsym.cli import app as cli
-from dhsym.geometry.urdf import MAX_URDF_BYTES
 from dhsym.io.library import load
 from dhsym.io.robotfile import load_robot_file
+from dhsym.io.urdf import MAX_URDF_BYTES
 from tests.urdf_builder import urdf_fk
 
 DATA = Path(__file__).parent / "data"
