@@ -4,7 +4,7 @@
 >>> imported = import_urdf(Path(__file__).parents[2] / "tests" / "data" / "panda.urdf", convention="modified")
 >>> imported.chain.n, imported.chain.convention, imported.chain.rows[0].d
 (7, 'modified', 333/1000)
->>> imported.notes[:60]
+>>> imported.notes[:61]
 'Derived by dhsym import; joint variables: q_1 = panda_joint1,'
 
 Joint i is the i-th revolute, continuous or prismatic joint from base to tip; its variable

@@ -12,9 +12,9 @@ before it is opened, so that reading never blocks.
 >>> link = source.root[0]
 >>> str(source.place(link)), str(source.place(link, "name"))
 ('a.urdf:2:3', 'a.urdf:2:15')
->>> parse_xml_text(b'<robot>\\n<link name="${x}"/></robot>', "b.urdf")
+>>> parse_xml_text(b'<robot>\\n<link name="${x}"/></robot>', "b.urdf")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
-dhsym.errors.UserError: b.urdf:2:13: ${x} is a xacro substitution, not URDF; name the file *.xacro to have dhsym expand it, or expand it with xacro first
+dhsym.errors.UserError: b.urdf:2:13: ${x} is a xacro substitution, not URDF; ...
 """
 from __future__ import annotations
 
