@@ -43,14 +43,14 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     if str(path).lower().endswith(".xacro"):
         from .xacro import expand_xacro
 
-        urdf = read_urdf_text(expand_xacro(path), str(path), base, tip)
+        urdf = read_urdf_text(expand_xacro(path), f"{path} (expanded by xacro)", base, tip)
     else:
         urdf = read_urdf(path, base, tip)
     if variables not in ("q", "urdf"):
         raise UserError(f"unknown variable style {variables!r}; use q or urdf")
     symbols = joint_symbols(urdf.joint_names, variables)
     chain = assign_frames(urdf.axes, urdf.tool, convention, symbols).chain(
-        name=urdf.name, source=f"{Path(urdf.path).name}, links {urdf.base} → {urdf.tip}")
+        name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}")
     notes = "Derived by dhsym import; joint variables: " + ", ".join(
         f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
     return Imported(chain, notes, urdf.warnings)
