@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import os
 import re
 from pathlib import Path
 
@@ -84,6 +85,7 @@ class _Expander:
         self.tree = folder.parent.parent if folder.name in PACKAGE_FOLDERS and folder.parent.parent != folder.parent \
             else folder
         self.names = {}  # resolved path -> the name the user knows it by
+        self.written = {}  # the path xacro opens -> the include's filename as written
         self.texts = {}
         self.files = self.bytes = self.elements = 0
 
@@ -124,12 +126,15 @@ class _Expander:
         """One file's text, checked: inside the tree, a kind xacro includes, within the limits,
         and every expression and substitution in it of an allowed form."""
         path = Path(filename).resolve()
-        shown = str(self.top) if path == self.top.resolve() else str(path)
+        written = self.written.get(filename, filename)
+        shown = str(self.top) if path == self.top.resolve() else self.shown(path)
         if path != self.top.resolve():
             if path.suffix.lower() not in INCLUDABLE:
-                raise self.refuse(f"xacro:include of {shown}: only .xacro, .urdf and .xml files are included")
+                raise self.refuse(f"xacro:include of {written}: only .xacro, .urdf and .xml files are included",
+                                  written)
             if not path.is_relative_to(self.tree):
-                raise self.refuse(f"xacro:include of {shown}: outside the robot's folder {self.tree}")
+                raise self.refuse(f"xacro:include of {written}: outside the robot's folder {self.shown(self.tree)}",
+                                  written)
         self.files += 1
         if self.files > MAX_FILES:
             raise self.refuse(f"more than {MAX_FILES} files included")
@@ -167,14 +172,23 @@ class _Expander:
         for folder in [self.tree, *sorted(self.tree.iterdir()), *sorted(self.tree.glob("*/*"))]:
             if folder.is_dir() and folder.name in names:
                 return folder
-        raise self.refuse(f"$(find {package}): the ROS package {package} is not in the robot's folder {self.tree} "
+        raise self.refuse(f"$(find {package}): the ROS package {package} is not in the robot's folder "
+                          f"{self.shown(self.tree)} "
                           "(dhsym does not search ROS_PACKAGE_PATH)", f"$(find {package}")
 
     def include_files(self, spec: str, symbols):
         name = str(self.xacro.eval_text(spec, symbols))
         if re.search(r"[*?\[]", name):
             raise self.refuse(f"xacro:include {name}: wildcards are not allowed", spec)
-        yield self.xacro.abs_filename_spec(name)
+        resolved = self.xacro.abs_filename_spec(name)
+        self.written[resolved] = name
+        yield resolved
+
+    def shown(self, path: Path) -> str:
+        """A path as the user would write it: from the folder of the file they named."""
+        relative = os.path.relpath(path, self.top.resolve().parent)
+        shown = os.path.normpath(os.path.join(self.top.parent, relative))
+        return f"{shown} (the folder of {self.top.name})" if relative == "." else shown
 
     def refuse(self, message: str, needle: str | None = None) -> UserError:
         """A UserError at the place of `needle` in the file being expanded (else at the file)."""
