@@ -48,6 +48,7 @@ from .xmlsource import MAX_XML_BYTES, parse_xml_text, read_regular_file
 
 MAX_URDF_BYTES = MAX_XML_BYTES
 MAX_MOVING_JOINTS = 24  # as in a robot file
+MAX_PATH_JOINTS = 200  # fixed ones included; a humanoid's hand is some 20 joints from its pelvis
 MAX_OFF_GRID_TURNS = 64  # rotations through rational cosines on the path: each one lengthens every number
 MOVING = {"revolute": "R", "continuous": "R", "prismatic": "P"}
 UNSUPPORTED = {"floating": "a floating joint has 6 degrees of freedom", "planar": "a planar joint has 3"}
@@ -184,6 +185,10 @@ class _Reader:
     def check_size(self, base: str, tip: str, path: list) -> None:
         """Refuse, before any arithmetic, a path with more joints than a table holds or more
         off-grid rotations than exact numbers can carry; name a nearer tip that fits."""
+        if len(path) > MAX_PATH_JOINTS:
+            nearer = path[MAX_PATH_JOINTS - 1].find("child").get("link").strip()
+            raise UserError(f"the path {base} → {tip} has {len(path)} joints, more than the {MAX_PATH_JOINTS} dhsym "
+                            f"reads on one path; choose a nearer tip (--tip {nearer})")
         moving = [joint for joint in path if joint.get("type", "").strip() in MOVING]
         if len(moving) > MAX_MOVING_JOINTS:
             nearer = moving[MAX_MOVING_JOINTS - 1].find("child").get("link").strip()

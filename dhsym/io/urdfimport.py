@@ -33,6 +33,7 @@ class Imported:
     chain: object
     notes: str
     warnings: list = field(default_factory=list)
+    joint_names: list = field(default_factory=list)  # the URDF joint of each row
 
 
 def import_urdf(path: str | Path, base: str | None = None, tip: str | None = None, convention: str = "standard",
@@ -53,7 +54,7 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
         name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}")
     notes = "Derived by dhsym import; joint variables: " + ", ".join(
         f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
-    return Imported(chain, notes, urdf.warnings)
+    return Imported(chain, notes, urdf.warnings, urdf.joint_names)
 
 
 def joint_symbols(names: list[str], style: str) -> list[sympy.Symbol]:
