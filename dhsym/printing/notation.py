@@ -290,13 +290,13 @@ def is_word_name(name: str) -> bool:
 
 
 def _suffix_labels(names: list) -> list:
-    """Short joint labels for word names: what follows their common prefix, when that is at
-    most four letters or digits (panda_joint1 → 1, right_s0 → s0); else None for each.
+    """Short joint labels for word names: what follows their common prefix up to an underscore,
+    when that is at most four letters or digits (right_s0 → s0, left_j1 → j1); else None for each.
 
     >>> _suffix_labels(["right_s0", "right_s1", "right_e0"]), _suffix_labels(["shoulder_pan", "elbow"])
     (['s0', 's1', 'e0'], [None, None])
     """
-    common = len(os.path.commonprefix(names))
+    common = os.path.commonprefix(names).rfind("_") + 1  # cut after an underscore: right_s0 → s0, not 0
     rests = [name[common:] for name in names]
     if len(names) > 1 and all(rest.isalnum() and rest.isascii() and len(rest) <= 4 for rest in rests):
         return rests
