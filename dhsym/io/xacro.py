@@ -11,7 +11,7 @@ taken out of its hands.
   for a file in a package's `urdf/` or `robots/` folder, the folder that holds the package.
 - `xacro:include` reads only .xacro, .urdf and .xml files inside that tree, each a regular file
   of at most 2 MiB, no DOCTYPE, at most 200 files and 8 MiB in all; no wildcards.
-- Expansion stops after 100,000 elements (macros can call themselves, or double at each level)
+- Expansion stops after 50,000 elements (macros can call themselves, or double at each level)
   or 64 nested macro calls.
 
 >>> from pathlib import Path
@@ -43,7 +43,7 @@ from .xmlsource import MAX_XML_BYTES, decode_xml, read_regular_file
 
 MAX_FILES = 200
 MAX_TOTAL_BYTES = 8 << 20
-MAX_ELEMENTS = 100_000
+MAX_ELEMENTS = 50_000
 MAX_MACRO_DEPTH = 64
 INCLUDABLE = (".xacro", ".urdf", ".xml")
 PACKAGE_FOLDERS = ("urdf", "robots", "xacro", "model", "models")

@@ -8,7 +8,7 @@ sqrt radians degrees fabs floor ceil, also as `math.sin`), arithmetic `+ - * / /
 comparisons, `and`/`or`/`not` and `a if c else b`. Anything else (attributes, subscripts,
 comprehensions, lambdas, other calls, names with an underscore in front) is refused, and so are
 results that are not the size of a robot: powers above 64, numbers beyond 1e15, strings longer
-than 10,000 characters.
+than 1,000 characters.
 
 >>> evaluate("2 * pi / 4 + radians(90) - l", {"l": 1.0})
 2.141592653589793
@@ -25,7 +25,7 @@ import math
 import operator
 
 MAX_NUMBER = 1e15
-MAX_TEXT = 10_000
+MAX_TEXT = 1_000
 MAX_POWER = 64
 MAX_EXPRESSION = 1_000
 FUNCTIONS = {name: getattr(math, name) for name in ("sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt",
@@ -63,7 +63,7 @@ def check_syntax(text: str) -> str | None:
         if isinstance(node, ast.Call) and (node.keywords or _function_name(node.func) not in FUNCTIONS):
             return f"calling {ast.unparse(node.func)!r} is not allowed in a xacro expression; {_WHAT}"
         if isinstance(node, ast.Constant) and isinstance(node.value, str) and len(node.value) > MAX_TEXT:
-            return "a string longer than 10,000 characters"
+            return f"a string longer than {MAX_TEXT:,} characters"
     return None
 
 
@@ -172,7 +172,7 @@ def _bounded(value):
         return value
     if isinstance(value, str):
         if len(value) > MAX_TEXT:
-            raise Refused("a text longer than 10,000 characters")
+            raise Refused(f"a text longer than {MAX_TEXT:,} characters")
         return value
     if isinstance(value, int) and abs(value) <= MAX_NUMBER:
         return value
