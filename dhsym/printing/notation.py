@@ -282,11 +282,12 @@ def is_word_name(name: str) -> bool:
     `shoulder_pan_joint`, rather than a letter with indices (`theta_1`, `l_23`): it prints as
     written (LaTeX `\\mathrm{right\\_s0}`), since `rights0` would be no one's name.
 
-    >>> is_word_name("right_s0"), is_word_name("theta_1"), is_word_name("joint1"), is_word_name("ab_c")
+    >>> is_word_name("right_s0"), is_word_name("theta_1"), is_word_name("elbow_1"), is_word_name("ab_c")
     (True, False, False, False)
     """
-    base = split_super_sub(name)[0]
-    return "_" in name and len(base) > 2 and base not in greek_unicode and base not in GREEK_NAMES
+    base, supers, subs = split_super_sub(name)
+    numbered = not supers and len(subs) == 1 and subs[0].isdigit()  # elbow_1 stays elbow₁-like: elbow1
+    return "_" in name and len(base) > 2 and base not in greek_unicode and base not in GREEK_NAMES and not numbered
 
 
 def _suffix_labels(names: list) -> list:
