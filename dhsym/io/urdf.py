@@ -52,6 +52,8 @@ MAX_PATH_JOINTS = 200  # fixed ones included; a humanoid's hand is some 20 joint
 MAX_OFF_GRID_TURNS = 64  # rotations through rational cosines on the path: each one lengthens every number
 MOVING = {"revolute": "R", "continuous": "R", "prismatic": "P"}
 UNSUPPORTED = {"floating": "a floating joint has 6 degrees of freedom", "planar": "a planar joint has 3"}
+# What dhsym never reads: a leftover $(find …) in a mesh path or a Gazebo plugin changes nothing.
+IGNORED = ("visual", "collision", "inertial", "gazebo", "transmission", "material", "sensor", "ros2_control")
 _TINY = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)[eE]-\d+")
 
 
@@ -78,6 +80,7 @@ def read_urdf(path: str | Path, base: str | None = None, tip: str | None = None)
 def read_urdf_text(data: bytes, filename: str = "<urdf>", base: str | None = None,
                    tip: str | None = None) -> UrdfChain:
     source = parse_xml_text(data, filename)
+    source.refuse_substitutions(IGNORED)
     if source.root.tag != "robot":
         raise UserError(f"a URDF file has <robot> at its top, not <{source.root.tag}>", source.place(source.root))
     return _Reader(source).chain(base, tip)

@@ -4,7 +4,8 @@ The bytes are decoded first (byte-order mark, else the XML declaration's encodin
 and only then checked: a DOCTYPE or entity declaration is refused in any encoding (entities can
 expand without bound), and so is anything that still needs xacro (an element or attribute in the
 xacro namespace, a `${…}` or `$(…)` substitution). A bare `xmlns:xacro` declaration, which
-every file that xacro wrote still carries, is fine. lxml parses with entities, DTDs and network
+every file that xacro wrote still carries, is fine, and so is a substitution where it changes
+nothing (`refuse_substitutions` is told where: a URDF's meshes, say). lxml parses with entities, DTDs and network
 access off. Input must be a regular file of at most 2 MiB: a named pipe or a device is refused
 before it is opened, so that reading never blocks.
 
@@ -12,7 +13,7 @@ before it is opened, so that reading never blocks.
 >>> link = source.root[0]
 >>> str(source.place(link)), str(source.place(link, "name"))
 ('a.urdf:2:3', 'a.urdf:2:15')
->>> parse_xml_text(b'<robot>\\n<link name="${x}"/></robot>', "b.urdf")  # doctest: +ELLIPSIS
+>>> parse_xml_text(b'<robot>\\n<link name="${x}"/></robot>', "b.urdf").refuse_substitutions()  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 dhsym.errors.UserError: b.urdf:2:13: ${x} is a xacro substitution, not URDF; ...
 """
@@ -117,6 +118,22 @@ class XmlSource:
         return self.location(start)
 
 
+    def refuse_substitutions(self, ignored: tuple = ()) -> None:
+        """Refuse a `${…}` or `$(…)` left in an attribute, except under the `ignored` elements
+        (a mesh's `$(find robot)/base.stl` changes nothing that dhsym reads)."""
+        waiting = [self.root]
+        while waiting:
+            element = waiting.pop()
+            if element.tag in ignored:
+                continue
+            for key, value in element.attrib.items():
+                found = _SUBSTITUTION.search(value)
+                if found:
+                    where = self.place(element, key).shifted(found.start())
+                    raise UserError(f"{found.group(0)[:40]} is a xacro substitution, not URDF; {_EXPAND}", where)
+            waiting.extend(reversed([child for child in element if isinstance(child.tag, str)]))
+
+
 def parse_xml_text(data: bytes, filename: str) -> XmlSource:
     """Decode, check and parse; see the module's docstring."""
     text = decode_xml(data, filename)
@@ -145,15 +162,10 @@ def _refuse_xacro(blanked: str, filename: str) -> None:
                 if m.group(2).rstrip("/") in XACRO_NAMESPACES} | {"xacro"}
     names = "|".join(map(re.escape, prefixes))
     used = re.search(rf"</?(?:{names}):[\w.-]+|\s(?:{names}):[\w.-]+\s*=", blanked)
-    substitution = _SUBSTITUTION.search(blanked)
-    first = min((m for m in (used, substitution) if m), key=lambda m: m.start(), default=None)
-    if first is None:
+    if used is None:
         return
-    where = _location(blanked, filename, first.start() + (1 if first.group(0)[0].isspace() else 0))
-    shown = first.group(0).strip()
-    if first is substitution:
-        raise UserError(f"{shown[:40]} is a xacro substitution, not URDF; {_EXPAND}", where)
-    raise UserError(f"<{shown.lstrip('</')}> is a xacro element, not URDF; {_EXPAND}", where)
+    where = _location(blanked, filename, used.start() + (1 if used.group(0)[0].isspace() else 0))
+    raise UserError(f"<{used.group(0).strip().lstrip('</')}> is a xacro element, not URDF; {_EXPAND}", where)
 
 
 def _blank(text: str) -> str:
