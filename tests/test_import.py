@@ -8,6 +8,7 @@ import pytest
 import sympy
 
 from dhsym.cli import app as cli
+from dhsym.errors import UserError
 from dhsym.io.library import load
 from dhsym.io.robotfile import load_robot_file
 from dhsym.io.urdf import MAX_URDF_BYTES
@@ -252,3 +253,16 @@ def test_without_the_xacro_package_a_xacro_file_gets_advice(monkeypatch, capsys)
     monkeypatch.setitem(sys.modules, "xacro", None)
     status, _, err = run(["import", Path(__file__).parent / "bad_inputs" / "xacro_good_arm.xacro"], capsys)
     assert status == 2 and "needs the xacro package (pip install 'dhsym[xacro]')" in err
+
+
+@pytest.mark.parametrize("encoding, declared", [("utf-16-be", ""), ("utf-16-le", ""), ("utf-8-sig", ""),
+                                                ("latin-1", ' encoding="ISO-8859-1"')])
+def test_every_xml_encoding_is_decoded_before_it_is_checked(encoding, declared):
+    from dhsym.io.xmlsource import parse_xml_text
+
+    text = f'<?xml version="1.0"{declared}?>\n<robot name="bras">\n  <link name="é"/></robot>'
+    source = parse_xml_text(text.encode(encoding), "x.urdf")
+    assert source.root[0].get("name") == "é" and str(source.place(source.root[0], "name")) == "x.urdf:3:15"
+    doctype = text.replace("\n<robot", '\n<!DOCTYPE robot [<!ENTITY a "aa">]>\n<robot')
+    with pytest.raises(UserError, match=r"x\.urdf:2:1: DOCTYPE and entity declarations are not allowed"):
+        parse_xml_text(doctype.encode(encoding), "x.urdf")

@@ -64,7 +64,7 @@ def read_regular_file(path: str | Path, limit: int = MAX_XML_BYTES, what: str = 
 def decode_xml(data: bytes, filename: str) -> str:
     """The text of an XML file as its byte-order mark or declaration says (UTF-8 by default)."""
     encoding = next((name for bom, name in _BOMS if data.startswith(bom)), None)
-    if encoding is None and data[:4] in (b"<\x00?\x00", b"\x00<\x00?"):
+    if encoding is None and data[:2] in (b"<\x00", b"\x00<"):  # UTF-16 without a byte-order mark
         encoding = "utf-16-le" if data[0] == 0x3C else "utf-16-be"
     if encoding is None:
         declared = _DECLARED.match(data)
