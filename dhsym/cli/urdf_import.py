@@ -19,11 +19,13 @@ from .messages import warn
 
 
 def add_parsers(commands) -> None:
-    sub = commands.add_parser("import", help="derive a DH robot file from a URDF (or an axes: robot file)",
-                              description="Read the serial chain from --base to --tip of a URDF file, assign DH "
-                              "frames and write the robot file. Joint i is the i-th movable joint from base to tip; "
-                              "its variable equals the joint value. Fixed joints fold into the constants; meshes "
-                              "are not read. A robot file with axes: is converted to joints: instead.")
+    sub = commands.add_parser("import", help="derive a DH robot file from a URDF or .xacro file (or an axes: "
+                              "robot file)",
+                              description="Read the serial chain from --base to --tip of a URDF file (a .xacro "
+                              "file is expanded first), assign DH frames and write the robot file. Joint i is the "
+                              "i-th movable joint from base to tip; its variable equals the joint value. Fixed joints "
+                              "fold into the constants; meshes are not read. A robot file with axes: is converted to "
+                              "joints: instead.")
     sub.add_argument("file", metavar="FILE", help="a .urdf or .xacro file, or a robot .yaml file written with axes:")
     sub.add_argument("--base", metavar="LINK", help="the base link (default: the URDF's root link)")
     sub.add_argument("--tip", metavar="LINK", help="the tip link (default: the only leaf below the base)")
