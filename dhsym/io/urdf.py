@@ -54,7 +54,7 @@ MOVING = {"revolute": "R", "continuous": "R", "prismatic": "P"}
 UNSUPPORTED = {"floating": "a floating joint has 6 degrees of freedom", "planar": "a planar joint has 3"}
 # What dhsym never reads: a leftover $(find …) in a mesh path or a Gazebo plugin changes nothing.
 IGNORED = ("visual", "collision", "inertial", "gazebo", "transmission", "material", "sensor", "ros2_control")
-_TINY = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)[eE]-\d+")
+_DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
 
 @dataclass
@@ -240,7 +240,7 @@ class _Reader:
         text = element.get(key, default) if element is not None else default
         values = []
         for word, part in enumerate(text.split()):
-            if _TINY.fullmatch(part) and abs(float(part)) < LENGTH_NOISE:
+            if _DECIMAL.fullmatch(part) and abs(float(part)) < LENGTH_NOISE:
                 values.append(sympy.Integer(0))
                 if float(part) != 0:
                     self.noise.append((part, self.where(element, key, word)))
