@@ -52,8 +52,8 @@ class Rounding:
 
     def __str__(self) -> str:
         exact = str(self.exact)
-        shown = exact if len(exact) <= SHOWN else f"an exact value {len(exact)} characters long"
-        return f"{self.label} {_plain_text(self.value)} (exactly {shown})"
+        shown = f"exactly {exact}" if len(exact) <= SHOWN else f"from an exact form {len(exact)} characters long"
+        return f"{self.label} {_plain_text(self.value)} ({shown})"
 
 
 def rounding_note(roundings: list) -> str:
