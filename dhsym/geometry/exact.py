@@ -80,13 +80,16 @@ def unit(v: sympy.Matrix) -> sympy.Matrix:
     textbook figure.
 
     >>> l = sympy.Symbol("l", real=True)
-    >>> unit(vector(0, -l, 0)).T
-    Matrix([[0, -1, 0]])
+    >>> unit(vector(0, -l, 0)).T, unit(vector(0, sympy.Rational(3, 10) - l, 0)).T
+    (Matrix([[0, -1, 0]]), Matrix([[0, -1, 0]]))
     """
     positive = {s: sympy.Dummy(s.name, positive=True) for s in v.free_symbols}
     w = v.xreplace(positive)
     length = sympy.sqrt(sum(c ** 2 for c in w))
-    return tidy_vector(w / length).xreplace({d: s for s, d in positive.items()})
+    # |l - 3/10| (a sign the symbols leave open) is taken as l - 3/10: one fixed sense for every
+    # value of l, where the true unit vector would flip at l = 3/10 and no table could follow it.
+    signed = (w / length).applyfunc(lambda c: c.replace(sympy.Abs, lambda inner: inner))
+    return tidy_vector(signed).xreplace({d: s for s, d in positive.items()})
 
 
 def cross(u: sympy.Matrix, v: sympy.Matrix) -> sympy.Matrix:

@@ -169,8 +169,8 @@ def _tabulate(convention, axes, steps, tool_pose, variables, decimals) -> Assign
         frames += [Frame(str(s.index), s.near_foot, s.x, a.direction) for s, a in zip(steps, axes)]
     roundings: list = []
 
-    def fitted(value, label: str):
-        written = fit(value, decimals)
+    def fitted(value, label: str, length: bool):
+        written = fit(value, decimals, length)
         if written is not value:
             roundings.append(Rounding(label, written, value))
         return written
@@ -180,12 +180,13 @@ def _tabulate(convention, axes, steps, tool_pose, variables, decimals) -> Assign
         joint = axes[i - 1].joint
         moving = "theta" if joint == "R" else "d"
         values = _row(convention, frames[i - 1], frames[i])
-        values = {key: fitted(value, dh_label(convention, i, key, moving=key == moving))
+        values = {key: fitted(value, dh_label(convention, i, key, moving=key == moving), key in ("a", "d"))
                   for key, value in values.items()}
         values[moving] = variables[i - 1] + values[moving]
         rows.append((joint, values["theta"], values["d"], values["a"], values["alpha"]))
-    base = [Step(s.kind, fitted(s.value, f"base {s.kind}")) for s in pose_steps(frames[0].pose)]
-    tool = [Step(s.kind, fitted(s.value, f"tool {s.kind}")) for s in pose_steps(relative(frames[n].pose, tool_pose))]
+    base = [Step(s.kind, fitted(s.value, f"base {s.kind}", s.kind[0] == "T")) for s in pose_steps(frames[0].pose)]
+    tool = [Step(s.kind, fitted(s.value, f"tool {s.kind}", s.kind[0] == "T"))
+            for s in pose_steps(relative(frames[n].pose, tool_pose))]
     return Assignment(convention, list(axes), frames, steps, rows, list(variables), base, tool, roundings)
 
 

@@ -10,7 +10,7 @@ numbers, and sums and products of these with symbols. A robot file reads numbers
 - a rational multiple of π with a short fraction stays exact (pi/2, 5*pi/12);
 - with `decimals=False` (the input was written exactly: integers, fractions, symbols) short
   fractions and short surds stay exact too (1/3, 3*sqrt(2)/20);
-- every other number, and in decimal mode every such coefficient of a symbol, is rounded to
+- every other number, and every other numeric coefficient of a symbol, is rounded to
   SIGNIFICANT significant digits. 15 digits is what a double holds, far finer than any robot's
   drawing; the table's forward kinematics stays within about 1e-15 (relative) of the geometry.
 
@@ -77,12 +77,17 @@ def joined(*parts: str) -> str:
     return " ".join([p if p.endswith((".", "!", "?")) else p + "." for p in parts[:-1]] + parts[-1:])
 
 
-def fit(value, decimals: bool = True) -> sympy.Expr:
-    """`value` itself when its exact form is one a person writes, else rounded (see the module)."""
+def fit(value, decimals: bool = True, length: bool = False) -> sympy.Expr:
+    """`value` itself when its exact form is one a person writes, else rounded (see the module).
+    A `length` keeps no π: a robot file reads π in angles only.
+
+    >>> fit(sympy.pi / 4), decimal_text(fit(sympy.pi / 4, length=True))
+    (pi/4, '0.785398163397448')
+    """
     value = sympy.sympify(value)
     if value.free_symbols:
-        return _fit_symbolic(value) if decimals else value
-    return _fit_number(value, decimals)
+        return _fit_symbolic(value, decimals, length)
+    return _fit_number(value, decimals, length)
 
 
 def dh_label(convention: str, row: int, field: str, offset: int = 0, moving: bool = False) -> str:
@@ -96,9 +101,11 @@ def dh_label(convention: str, row: int, field: str, offset: int = 0, moving: boo
     return f"{field}_{index}" + (" offset" if moving else "")
 
 
-def _fit_number(value: sympy.Expr, decimals: bool) -> sympy.Expr:
+def _fit_number(value: sympy.Expr, decimals: bool, length: bool) -> sympy.Expr:
     if value.is_Rational:
         return value if _short_decimal(value) or (not decimals and _short_fraction(value)) else _rounded(value)
+    if length and value.has(sympy.pi):
+        return _rounded(value)
     turns = value / sympy.pi
     if turns.is_Rational and _short_fraction(turns):
         return value
@@ -107,13 +114,13 @@ def _fit_number(value: sympy.Expr, decimals: bool) -> sympy.Expr:
     return _rounded(value)
 
 
-def _fit_symbolic(value: sympy.Expr) -> sympy.Expr:
-    """Each numeric coefficient of a symbolic term fitted as a number (decimal mode)."""
+def _fit_symbolic(value: sympy.Expr, decimals: bool, length: bool) -> sympy.Expr:
+    """Each numeric coefficient of a symbolic term fitted as a number."""
     symbols = value.free_symbols
     changed, terms = False, []
     for term in sympy.Add.make_args(value):
         coefficient, rest = term.as_independent(*symbols, as_Mul=True)
-        fitted = _fit_number(coefficient, True)
+        fitted = _fit_number(coefficient, decimals, length)
         changed = changed or fitted is not coefficient
         terms.append(fitted * rest)
     return sympy.Add(*terms) if changed else value

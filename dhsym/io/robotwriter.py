@@ -105,20 +105,25 @@ class _Values:
         self.numbers = chain.numbers
         self.roundings: list[Rounding] = []
 
-    def written(self, value, label: str, place: str):
-        """(value as it will read back, its text) for a value of the table at `place`."""
+    def written(self, value, label: str, place: str, length: bool = False):
+        """(value as it will read back, its text) for a value of the table at `place`; a
+        `length` holds no π (a robot file refuses it there)."""
         value = sympy.sympify(value)
         text = expression_text(value, self.numbers)
-        if self.reads_back(text, value):
+        if self.reads_back(text, value) and not (length and value.has(sympy.pi)):
             return value, text
-        rounded = fit(value)
+        rounded = fit(value, length=length)
         if rounded is not value:
             rounded_text = expression_text(rounded, self.numbers)
             if self.reads_back(rounded_text, rounded):
                 self.roundings.append(Rounding(label, rounded, value))
                 return rounded, rounded_text
             text = rounded_text
-        raise UserError(f"cannot write {place} as a robot file: {self.why_not(text)}; nothing was written")
+        hint = ""
+        if value.free_symbols and any(not isinstance(f, (sympy.sin, sympy.cos)) for f in value.atoms(sympy.Function)):
+            names = ", ".join(sorted(map(str, value.free_symbols)))
+            hint = f"; the angle depends on {names}, so it has no exact decimal: give those lengths as numbers"
+        raise UserError(f"cannot write {place} as a robot file: {self.why_not(text)}{hint}; nothing was written")
 
     @staticmethod
     def reads_back(text: str, value) -> bool:
@@ -159,7 +164,7 @@ def robot_yaml(chain, notes: str | None = None) -> str:
             value = getattr(row, key)
             constant = value - row.variable if key == moving else value
             label = dh_label(chain.convention, number, key, chain.frame_offset, moving=key == moving)
-            constant, _ = values.written(constant, label, f"joint row {number} {key}")
+            constant, _ = values.written(constant, label, f"joint row {number} {key}", key in ("a", "d"))
             written[key] = constant + row.variable if key == moving else constant
             text = _moving_text(row.variable, constant, values.numbers) if key == moving else None
             fields.append(f"{key}: {_yaml_value(text or expression_text(written[key], values.numbers))}")
@@ -169,8 +174,8 @@ def robot_yaml(chain, notes: str | None = None) -> str:
         rows.append(DHRow(row.joint, written["theta"], written["d"], written["a"], written["alpha"], row.variable))
     steps = {}
     for key, chain_steps in (("base", chain.base), ("tool", chain.tool)):
-        steps[key] = [Step(s.kind, values.written(s.value, f"{key} {s.kind}", f"{key} step {n} {s.kind}")[0])
-                      for n, s in enumerate(chain_steps, 1)]
+        steps[key] = [Step(s.kind, values.written(s.value, f"{key} {s.kind}", f"{key} step {n} {s.kind}",
+                                                  s.kind[0] == "T")[0]) for n, s in enumerate(chain_steps, 1)]
         if steps[key]:
             texts = (f"{{{s.kind}: {_yaml_value(expression_text(s.value, values.numbers))}}}" for s in steps[key])
             lines.append(f"{key}: [" + ", ".join(texts) + "]")
