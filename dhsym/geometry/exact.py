@@ -124,25 +124,6 @@ def rational_turn(angle: sympy.Rational, digits: int = 20) -> tuple[sympy.Ration
     return (1 - t ** 2) / (1 + t ** 2), 2 * t / (1 + t ** 2)
 
 
-def readable(value, digits: int = 15):
-    """A number built from off-grid angles (hundreds of digits, atan of huge fractions) as a
-    decimal of `digits` significant digits; anything shorter is returned as it is.
-
-    >>> readable(sympy.Rational(10**30 + 1, 3 * 10**30)) == sympy.Rational("0.333333333333333")
-    True
-    >>> readable(sympy.Rational(1, 3))
-    1/3
-    """
-    value = sympy.sympify(value)
-    numbers = [a for a in value.atoms(sympy.Rational) if max(abs(a.p), a.q) > 10 ** 20]
-    if not numbers:
-        return value
-    constant, rest = value.as_independent(*value.free_symbols, as_Add=True) if value.free_symbols else (value, 0)
-    if rest != 0 and any(a in rest.atoms(sympy.Rational) for a in numbers):
-        return value  # long numbers inside a symbolic term: leave them exact
-    return sympy.Rational(str(sympy.N(constant, digits))) + rest
-
-
 def snap_length(text: str) -> sympy.Rational:
     """A length as written, exactly; rounding noise below LENGTH_NOISE is zero."""
     written = exact_number(text)
