@@ -322,3 +322,12 @@ def test_any_mix_of_value_kinds_reads_back(kinds, convention):
     assert np.allclose(np.array(again.fk(raw=True).xreplace(point).evalf(), dtype=float),
                        np.array(chain.fk(raw=True).xreplace(point).evalf(), dtype=float), atol=1e-12)
     assert json.dumps(again.notes)  # one line of text
+
+
+def test_a_joint_field_over_200_characters_with_its_variable_names_the_limit():
+    names = sympy.symbols("length_1:20", real=True)
+    constant = sum(names[:16]) + names[16] / 3 + 1  # 198 characters alone, 204 with "q_1 + "
+    assert len(str(constant)) <= 200 < len(str(constant)) + 6
+    with pytest.raises(UserError, match=r"^cannot write joint row 1 theta as a robot file: its value is 20\d "
+                                        r"characters long; a robot file holds at most 200 per expression"):
+        robot_yaml(one_value_chain(constant, "theta"))

@@ -167,7 +167,11 @@ def robot_yaml(chain, notes: str | None = None) -> str:
             constant, _ = values.written(constant, label, f"joint row {number} {key}", key in ("a", "d"))
             written[key] = constant + row.variable if key == moving else constant
             text = _moving_text(row.variable, constant, values.numbers) if key == moving else None
-            fields.append(f"{key}: {_yaml_value(text or expression_text(written[key], values.numbers))}")
+            text = text or expression_text(written[key], values.numbers)
+            if len(text) > MAX_LENGTH:  # the constant fitted, but not with the variable added
+                raise UserError(f"cannot write joint row {number} {key} as a robot file: {values.why_not(text)}; "
+                                "nothing was written")
+            fields.append(f"{key}: {_yaml_value(text)}")
         if len(written[moving].free_symbols) > 1:
             fields.append(f"var: {row.variable.name}")
         lines.append("  - {" + ", ".join(fields) + "}")
