@@ -7,6 +7,7 @@ import importlib.metadata
 import importlib.util
 import io
 import random
+import re
 from pathlib import Path
 
 import numpy as np
@@ -29,7 +30,6 @@ def _package_folder(distribution: str, inside: str) -> Path | None:
 
 ERD = _package_folder("example-robot-data", "cmeel.prefix/share/example-robot-data/robots")
 RTB = _package_folder("rtb-data", "rtbdata/xacro")
-ATAN = pytest.mark.xfail(reason="atan offsets: fixed on branch writer", strict=True)
 
 # (label, folder, file, base, tip); base and tip None: the file's own root and only leaf
 EXAMPLE_ROBOT_DATA = [
@@ -63,7 +63,6 @@ RTB_DATA = [
     ("px100", "trossen_descriptions/urdf/px100.urdf.xacro", None, "/ee_gripper_link"),
     ("wx250s", "trossen_descriptions/urdf/wx250s.urdf.xacro", None, "/ee_gripper_link"),
 ]
-CLI_CRASHES_IN_THE_WRITER = {"z1", "so100", "px100", "wx250s"}
 
 
 def _cases():
@@ -117,15 +116,8 @@ def test_the_python_api_gives_the_urdf_kinematics(label, path, base, tip, conven
     _assert_same_kinematics(imported.chain, imported.joint_names, path, base, tip)
 
 
-def _cli_cases():
-    for case in _cases():
-        label = case.values[0]
-        marks = list(case.marks) + ([ATAN] if label in CLI_CRASHES_IN_THE_WRITER else [])
-        yield pytest.param(*case.values, id=label, marks=marks)
-
-
 @pytest.mark.parametrize("convention", ["standard", "modified"])
-@pytest.mark.parametrize("label, path, base, tip", list(_cli_cases()))
+@pytest.mark.parametrize("label, path, base, tip", list(_cases()))
 def test_dhsym_import_writes_a_file_with_the_urdf_kinematics(label, path, base, tip, convention, tmp_path, capsys):
     out = tmp_path / f"{label}.yaml"
     argv = ["import", str(path), "--convention", convention, "-o", str(out)]
@@ -136,6 +128,7 @@ def test_dhsym_import_writes_a_file_with_the_urdf_kinematics(label, path, base, 
     assert (status, stdout) == (0, ""), stderr
     assert all(line.startswith("dhsym: warning: ") for line in stderr.splitlines())
     chain = load_robot_file(out).chain
-    names = [part.split(" = ")[1] for part in chain.notes.split(": ", 1)[1].split(", ")] if chain.notes else []
+    listed = re.match(r"Derived by dhsym import; joint variables: (.*?)(?:\. |$)", chain.notes).group(1)
+    names = [part.split(" = ")[1] for part in listed.split(", ")]
     assert chain.convention == convention and len(names) == chain.n
     _assert_same_kinematics(chain, names, path, base, tip)
