@@ -161,7 +161,9 @@ def test_import_of_a_chain_over_24_joints_is_exit_2(tmp_path, capsys):
     path.write_text(serial_urdf([("revolute", "0 0 0.1", "0 0 0", "0 0 1")] * 25))
     assert cli.main(["import", str(path)]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err == "dhsym: error: 25 joints; a robot file holds at most 24, so none was written\n"
+    # refused from the count, before any work (branch urdf), with a tip that fits
+    assert out == "" and err == ("dhsym: error: the path link0 → link25 has 25 movable joints, more than the 24 a DH "
+                                 "table of dhsym holds; choose a nearer tip (--tip link24) or a later base (--base)\n")
 
 
 @pytest.mark.parametrize("convention", ["standard", "modified"])
