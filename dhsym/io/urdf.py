@@ -279,7 +279,7 @@ class _Reader:
             self.first_snap = (element, axis) if self.first_snap is None else self.first_snap
         if (value / ANGLE_STEP).is_integer:
             return rotation(axis, value)
-        self.free_angles.setdefault(text, None)
+        self.free_angles.setdefault(text, self.where(element, "rpy", axis))
         cosine, sine = rational_turn(value)
         angle = sympy.Dummy("angle", real=True)
         return rotation(axis, angle).xreplace({sympy.cos(angle): cosine, sympy.sin(angle): sine})
@@ -321,8 +321,8 @@ class _Reader:
             more = f" and {len(self.noise) - 3} more" if len(self.noise) > 3 else ""
             self.warnings.append(f"{self.noise[0][1]}: {shown}{more} taken as 0 (rounding noise below 1e-9)")
         if self.free_angles:
-            angles = ", ".join(self.free_angles)
-            self.warnings.append(f"{self.filename}: angles off the π/12 grid ({angles}) are turned "
+            angles, first = ", ".join(self.free_angles), next(iter(self.free_angles.values()))
+            self.warnings.append(f"{first}: angles off the π/12 grid ({angles}) are turned "
                                  "through rational cosines and sines (within 1e-20 rad); table values that depend on "
                                  "them are rounded to 15 significant digits")
         if self.snapped_directions:
