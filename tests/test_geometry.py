@@ -13,8 +13,8 @@ from dhsym.geometry.exact import vector
 from dhsym.geometry.frames import assign_frames
 from dhsym.geometry.lines import JointAxis
 from dhsym.geometry.screws import chain_axes, product_of_exponentials, screw_axes
-from dhsym.geometry.urdf import read_urdf, read_urdf_text
 from dhsym.io.library import builtin_names, load
+from dhsym.io.urdf import read_urdf, read_urdf_text
 from tests.urdf_builder import serial_urdf, urdf_fk
 
 DATA = "tests/data"
@@ -88,7 +88,7 @@ def test_rounded_angles_become_exact_with_a_warning():
     chain = assign_frames(urdf.axes, urdf.tool, "modified").chain()
     assert all((row.alpha / (sympy.pi / 12)).is_integer for row in chain.rows)
     assert not any(value.has(sympy.Float) for row in chain.rows for value in (row.theta, row.d, row.a, row.alpha))
-    assert urdf.warnings[0].startswith("edge.urdf:9: angles snapped to exact multiples of π/12")
+    assert urdf.warnings[0].startswith("edge.urdf:9:102: angles snapped to exact multiples of π/12")
     assert all(f"{text} → {exact}" in urdf.warnings[0]
                for text, exact in (("1.570796325", "π/2"), ("-1.5708", "-π/2"), ("0.5236", "π/6")))
     assert "axis directions snapped" in urdf.warnings[-1]
@@ -209,3 +209,26 @@ def test_angles_off_the_grid_give_short_numbers_and_a_warning():
     values += [step.value for step in chain.base + chain.tool]
     assert all(max(abs(r.p), r.q) < 10 ** 20 for v in values for r in sympy.sympify(v).atoms(sympy.Rational))
     assert any("off the π/12 grid (0.3, 0.2, 0.1)" in w and "15 significant digits" in w for w in urdf.warnings)
+
+
+@pytest.mark.parametrize("case", ["fixed_in_the_middle", "skew", "tilted_tool", "rounded_angles"])
+@pytest.mark.parametrize("convention", ["standard", "modified"])
+def test_a_table_made_from_decimals_shows_decimals_and_multiples_of_pi(case, convention):
+    urdf = read_urdf_text(serial_urdf(EDGE_CASES[case]).encode(), "edge.urdf")
+    chain = assign_frames(urdf.axes, urdf.tool, convention).chain()
+    values = [v for row in chain.rows for v in (row.theta - row.variable, row.d, row.a, row.alpha)]
+    values += [step.value for step in chain.base + chain.tool]
+    for value in values:
+        number = value / sympy.pi if value.has(sympy.pi) else value
+        assert number.is_Rational and (value.has(sympy.pi) and number.q <= 12 or 10 ** 40 % number.q == 0), value
+    rounded = [v for v in values if v.is_Rational and len(str(v.q)) > 12]
+    assert bool(rounded) == ("Rounded to 15 significant digits" in chain.notes)
+
+
+def test_the_note_names_each_rounded_value_and_its_exact_form():
+    text = serial_urdf([("revolute", "0 0 0.1", "0 0 0", "0 0 1"), ("revolute", "0.2 0 0.1", "0 0 0", "0 0.6 0.8")])
+    urdf = read_urdf_text(text.encode(), "tilted.urdf")
+    for convention, row in (("standard", 0), ("modified", 1)):
+        chain = assign_frames(urdf.axes, urdf.tool, convention).chain()
+        assert chain.rows[row].alpha == sympy.Rational("-0.643501108793284")
+        assert "alpha_1 -0.643501108793284 (exactly -atan(3/4))" in chain.notes

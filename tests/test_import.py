@@ -8,10 +8,11 @@ import pytest
 import sympy
 
 from dhsym.cli import app as cli
-from dhsym.geometry.urdf import MAX_URDF_BYTES
+from dhsym.errors import UserError
 from dhsym.io.library import load
 from dhsym.io.robotfile import load_robot_file
-from tests.urdf_builder import urdf_fk
+from dhsym.io.urdf import MAX_URDF_BYTES
+from tests.urdf_builder import serial_urdf, urdf_fk
 
 DATA = Path(__file__).parent / "data"
 
@@ -134,3 +135,134 @@ def test_screws_keep_the_decimals_as_written_in_every_format(capsys, tmp_path):
     latex = run(["screws", path, "--format", "latex"], capsys)[1]
     assert "0.089159" in latex and "frac{89159}" not in latex
     assert "0.089159" in run(["screws", path], capsys)[1]
+
+
+# --- Issue 15: real robots' files import as they come.
+
+TWO_JOINTS = """<?xml version="1.0"?>
+<robot name="arm"{namespace}>
+  <link name="base"/><link name="upper"/><link name="tip"/>
+  <joint name="{first}" type="revolute"><parent link="base"/><child link="upper"/>
+    <origin xyz="0 0 0.1" rpy="{rpy}"/><axis xyz="0 0 1"/></joint>
+  <joint name="{second}" type="revolute"><parent link="upper"/><child link="tip"/>
+    <origin xyz="0.3 0 0"/><axis xyz="0 0 1"/></joint>
+</robot>
+"""
+
+
+def two_joints(tmp_path, name="arm.urdf", namespace="", first="shoulder", second="elbow", rpy="0 0 0"):
+    path = tmp_path / name
+    path.write_text(TWO_JOINTS.format(namespace=namespace, first=first, second=second, rpy=rpy))
+    return path
+
+
+def test_a_file_written_by_xacro_imports_without_a_word(tmp_path, capsys):
+    path = two_joints(tmp_path, namespace=' xmlns:xacro="http://www.ros.org/wiki/xacro"')
+    assert run(["import", path], capsys)[::2] == (0, "")
+
+
+def test_the_python_api_does_what_the_command_does(tmp_path, capsys):
+    from dhsym.io.urdfimport import import_urdf
+
+    imported = import_urdf(DATA / "ur5.urdf", tip="tool0", convention="modified", variables="urdf")
+    assert imported.joint_names[0] == "shoulder_pan_joint" and imported.chain.convention == "modified"
+    assert imported.chain.joint_variables[0] == sympy.Symbol("shoulder_pan_joint", real=True)
+    status, out, _ = run(["import", DATA / "ur5.urdf", "--tip", "tool0", "--convention", "modified",
+                          "--variables", "urdf"], capsys)
+    written = tmp_path / "ur5.yaml"
+    written.write_text(out)
+    assert status == 0 and load_robot_file(written).chain.rows == imported.chain.rows
+
+
+def test_a_named_pipe_is_refused_at_once(tmp_path, capsys):
+    pipe = tmp_path / "arm.urdf"
+    os.mkfifo(pipe)  # opening it would wait for a writer that never comes
+    status, out, err = run(["import", pipe], capsys)
+    assert (status, out) == (2, "")
+    assert err == f"dhsym: error: {pipe}: is not a regular file (a pipe, socket or device); give a file\n"
+
+
+def test_a_utf16_file_reads_like_utf8(tmp_path, capsys):
+    plain = two_joints(tmp_path)
+    wide = tmp_path / "wide.urdf"
+    wide.write_bytes(plain.read_text().replace('version="1.0"', 'version="1.0" encoding="UTF-16"').encode("utf-16"))
+    assert run(["import", wide], capsys)[1] == run(["import", plain], capsys)[1].replace("arm.urdf", "wide.urdf")
+
+
+def test_joint_names_print_as_written_in_text_latex_and_json(tmp_path, capsys):
+    import json
+
+    path = two_joints(tmp_path, first="right_s0", second="right_s1")
+    out_file = tmp_path / "baxter.yaml"
+    assert run(["import", path, "--variables", "urdf", "-o", out_file], capsys)[0] == 0
+    text = run(["fk", out_file], capsys)[1]
+    assert "cs0 = cos right_s0" in text and "rights0" not in text
+    latex = run(["fk", out_file, "--format", "latex"], capsys)[1]
+    assert r"c_{s0} &= \cos{\mathrm{right\_s0}}" in latex
+    data = json.loads(run(["fk", out_file, "--format", "json"], capsys)[1])
+    assert data["joint_variables"] == ["right_s0", "right_s1"]
+
+
+def test_a_joint_named_like_a_fallback_variable_keeps_every_variable_distinct(tmp_path, capsys):
+    path = two_joints(tmp_path, first="q_2", second="sin")
+    status, out, err = run(["import", path, "--variables", "urdf"], capsys)
+    assert (status, err) == (0, "")
+    assert "theta: q_2" in out and "theta: q_2_2" in out
+
+
+def test_too_many_joints_are_refused_with_a_tip_that_the_command_accepts(tmp_path, capsys):
+    joints = [("revolute", "0 0 0.1", "0 0 0", "0 0 1")] * 30
+    path = tmp_path / "snake.urdf"
+    path.write_text(serial_urdf(joints))
+    status, out, err = run(["import", path], capsys)
+    assert (status, out) == (2, "")
+    assert err == ("dhsym: error: the path link0 → link30 has 30 movable joints, more than the 24 a DH table of "
+                   "dhsym holds; choose a nearer tip (--tip link24) or a later base (--base)\n")
+    assert run(["import", path, "--tip", "link24"], capsys)[0] == 0
+
+
+def test_thousands_of_fixed_joints_are_refused_from_a_count(tmp_path, capsys):
+    joints = [("revolute", "0.1 0 0", "0 0 0", "0 0 1")] + [("fixed", "0.01 0 0", "0.1 0.2 0.3", None)] * 3000
+    path = tmp_path / "long.urdf"
+    path.write_text(serial_urdf(joints))
+    status, _, err = run(["import", path], capsys)
+    assert status == 2 and "has 3001 joints, more than the 200" in err and "--tip link200" in err
+
+
+def test_a_mimic_joint_on_the_path_is_refused_and_says_why(capsys):
+    status, _, err = run(["import", Path(__file__).parent / "bad_inputs" / "urdf_mimic.urdf"], capsys)
+    assert status == 2 and "mimics joint 'left_finger'" in err and "--tip" in err
+
+
+def test_an_expanded_xacro_arm_has_the_kinematics_of_its_urdf(capsys):
+    from dhsym.io.urdfimport import import_urdf
+    from dhsym.io.xacro import expand_xacro
+
+    path = Path(__file__).parent / "bad_inputs" / "xacro_good_arm.xacro"
+    imported = import_urdf(path)
+    assert imported.joint_names == ["left_shoulder", "left_elbow", "left_wrist"]
+    q = [0.4, -1.1, 0.7]
+    numeric = imported.chain.fk(raw=True).xreplace(dict(zip(imported.chain.joint_variables, q))).evalf()
+    expected = urdf_fk(expand_xacro(path).decode(), q, "left_base", "left_tip")
+    assert np.allclose(np.array(numeric, dtype=float), expected, atol=1e-12)
+
+
+def test_without_the_xacro_package_a_xacro_file_gets_advice(monkeypatch, capsys):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "xacro", None)
+    status, _, err = run(["import", Path(__file__).parent / "bad_inputs" / "xacro_good_arm.xacro"], capsys)
+    assert status == 2 and "needs the xacro package (pip install 'dhsym[xacro]')" in err
+
+
+@pytest.mark.parametrize("encoding, declared", [("utf-16-be", ""), ("utf-16-le", ""), ("utf-8-sig", ""),
+                                                ("latin-1", ' encoding="ISO-8859-1"')])
+def test_every_xml_encoding_is_decoded_before_it_is_checked(encoding, declared):
+    from dhsym.io.xmlsource import parse_xml_text
+
+    text = f'<?xml version="1.0"{declared}?>\n<robot name="bras">\n  <link name="é"/></robot>'
+    source = parse_xml_text(text.encode(encoding), "x.urdf")
+    assert source.root[0].get("name") == "é" and str(source.place(source.root[0], "name")) == "x.urdf:3:15"
+    doctype = text.replace("\n<robot", '\n<!DOCTYPE robot [<!ENTITY a "aa">]>\n<robot')
+    with pytest.raises(UserError, match=r"x\.urdf:2:1: DOCTYPE and entity declarations are not allowed"):
+        parse_xml_text(doctype.encode(encoding), "x.urdf")

@@ -80,13 +80,16 @@ def unit(v: sympy.Matrix) -> sympy.Matrix:
     textbook figure.
 
     >>> l = sympy.Symbol("l", real=True)
-    >>> unit(vector(0, -l, 0)).T
-    Matrix([[0, -1, 0]])
+    >>> unit(vector(0, -l, 0)).T, unit(vector(0, sympy.Rational(3, 10) - l, 0)).T
+    (Matrix([[0, -1, 0]]), Matrix([[0, -1, 0]]))
     """
     positive = {s: sympy.Dummy(s.name, positive=True) for s in v.free_symbols}
     w = v.xreplace(positive)
     length = sympy.sqrt(sum(c ** 2 for c in w))
-    return tidy_vector(w / length).xreplace({d: s for s, d in positive.items()})
+    # |l - 3/10| (a sign the symbols leave open) is taken as l - 3/10: one fixed sense for every
+    # value of l, where the true unit vector would flip at l = 3/10 and no table could follow it.
+    signed = (w / length).applyfunc(lambda c: c.replace(sympy.Abs, lambda inner: inner))
+    return tidy_vector(signed).xreplace({d: s for s, d in positive.items()})
 
 
 def cross(u: sympy.Matrix, v: sympy.Matrix) -> sympy.Matrix:
@@ -119,25 +122,6 @@ def rational_turn(angle: sympy.Rational, digits: int = 20) -> tuple[sympy.Ration
     """
     t = sympy.Rational(str(sympy.N(sympy.tan(angle / 2), digits + 5).round(digits + 3)))
     return (1 - t ** 2) / (1 + t ** 2), 2 * t / (1 + t ** 2)
-
-
-def readable(value, digits: int = 15):
-    """A number built from off-grid angles (hundreds of digits, atan of huge fractions) as a
-    decimal of `digits` significant digits; anything shorter is returned as it is.
-
-    >>> readable(sympy.Rational(10**30 + 1, 3 * 10**30)) == sympy.Rational("0.333333333333333")
-    True
-    >>> readable(sympy.Rational(1, 3))
-    1/3
-    """
-    value = sympy.sympify(value)
-    numbers = [a for a in value.atoms(sympy.Rational) if max(abs(a.p), a.q) > 10 ** 20]
-    if not numbers:
-        return value
-    constant, rest = value.as_independent(*value.free_symbols, as_Add=True) if value.free_symbols else (value, 0)
-    if rest != 0 and any(a in rest.atoms(sympy.Rational) for a in numbers):
-        return value  # long numbers inside a symbolic term: leave them exact
-    return sympy.Rational(str(sympy.N(constant, digits))) + rest
 
 
 def snap_length(text: str) -> sympy.Rational:

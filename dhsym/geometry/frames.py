@@ -33,9 +33,10 @@ import sympy
 from ..core.chain import Chain, DHRow
 from ..core.transforms import CONVENTIONS, Step
 from ..errors import UserError
-from .exact import cross, dot, is_zero_vector, readable, tidy, tidy_vector, unit
+from .exact import cross, dot, is_zero_vector, tidy_vector, unit
 from .lines import JointAxis, distance_between, normal_feet, relation
 from .rigid import angle, frame_pose, pose_steps, relative
+from .rounding import Rounding, dh_label, fit, joined, rounding_note
 
 
 @dataclass(frozen=True)
@@ -76,11 +77,13 @@ class Assignment:
     variables: list
     base: list
     tool: list
-    notes: list = field(default_factory=list)
+    roundings: list = field(default_factory=list)  # rounding.Rounding of each value rounded
 
     def chain(self, **details) -> Chain:
+        """The chain; its notes end with a sentence on the values rounded, if any."""
         rows = [DHRow(joint, theta, d, a, alpha, variable)
                 for (joint, theta, d, a, alpha), variable in zip(self.rows, self.variables)]
+        details["notes"] = joined(details.get("notes", ""), rounding_note(self.roundings))
         return Chain(rows, self.convention, self.base, self.tool, **details)
 
 
@@ -89,8 +92,11 @@ def default_variables(count: int) -> list[sympy.Symbol]:
 
 
 def assign_frames(axes: list[JointAxis], tool_pose: sympy.Matrix, convention: str,
-                  variables: list | None = None) -> Assignment:
-    """Run the algorithm on joint axes (base coordinates, zero configuration) and a tool pose."""
+                  variables: list | None = None, decimals: bool = True) -> Assignment:
+    """Run the algorithm on joint axes (base coordinates, zero configuration) and a tool pose.
+    The table's values are exact where a person writes them so, else rounded (see
+    geometry.rounding); `decimals` says the input was written in decimals (a URDF is), so that
+    surds and long fractions become decimals too."""
     if convention not in CONVENTIONS:
         raise UserError(f"unknown convention {convention!r}; use standard or modified")
     if not axes:
@@ -107,7 +113,7 @@ def assign_frames(axes: list[JointAxis], tool_pose: sympy.Matrix, convention: st
         step = _normal(i, lines[i - 1], lines[i], previous_x, previous_foot, last=i == len(axes))
         steps.append(step)
         previous_x, previous_foot = step.x, step.far_foot
-    return _tabulate(convention, axes, steps, tool_pose, variables)
+    return _tabulate(convention, axes, steps, tool_pose, variables, decimals)
 
 
 def _base_reference(first: JointAxis) -> sympy.Matrix:
@@ -150,8 +156,8 @@ def _normal(i: int, axis: JointAxis, following: JointAxis, previous_x, previous_
     return NormalStep(i, kind, x, start, far, why)
 
 
-def _tabulate(convention, axes, steps, tool_pose, variables) -> Assignment:
-    """Frames from the normals, then the table rows, base and tool steps."""
+def _tabulate(convention, axes, steps, tool_pose, variables, decimals) -> Assignment:
+    """Frames from the normals, then the table rows, base and tool steps, fitted for writing."""
     n = len(axes)
     base_origin = axes[0].foot_of(sympy.zeros(3, 1))
     if convention == "standard":
@@ -161,21 +167,32 @@ def _tabulate(convention, axes, steps, tool_pose, variables) -> Assignment:
     else:
         frames = [Frame("0", base_origin, steps[0].x, axes[0].direction)]
         frames += [Frame(str(s.index), s.near_foot, s.x, a.direction) for s, a in zip(steps, axes)]
+    roundings: list = []
+
+    def fitted(value, label: str, length: bool):
+        written = fit(value, decimals, length)
+        if written is not value:
+            roundings.append(Rounding(label, written, value))
+        return written
+
     rows = []
     for i in range(1, n + 1):
-        rows.append(_row(convention, axes[i - 1], frames[i - 1], frames[i], variables[i - 1]))
-    base = _readable_steps(pose_steps(frames[0].pose))
-    tool = _readable_steps(pose_steps(relative(frames[n].pose, tool_pose)))
-    rows = [(joint, *(readable(value) for value in values)) for joint, *values in rows]
-    return Assignment(convention, list(axes), frames, steps, rows, list(variables), base, tool)
+        joint = axes[i - 1].joint
+        moving = "theta" if joint == "R" else "d"
+        values = _row(convention, frames[i - 1], frames[i])
+        values = {key: fitted(value, dh_label(convention, i, key, moving=key == moving), key in ("a", "d"))
+                  for key, value in values.items()}
+        values[moving] = variables[i - 1] + values[moving]
+        rows.append((joint, values["theta"], values["d"], values["a"], values["alpha"]))
+    base = [Step(s.kind, fitted(s.value, f"base {s.kind}", s.kind[0] == "T")) for s in pose_steps(frames[0].pose)]
+    tool = [Step(s.kind, fitted(s.value, f"tool {s.kind}", s.kind[0] == "T"))
+            for s in pose_steps(relative(frames[n].pose, tool_pose))]
+    return Assignment(convention, list(axes), frames, steps, rows, list(variables), base, tool, roundings)
 
 
-def _readable_steps(steps: list) -> list:
-    return [Step(step.kind, readable(step.value)) for step in steps]
-
-
-def _row(convention, axis, before: Frame, after: Frame, variable):
-    """One table row from two consecutive frames (both at the zero configuration)."""
+def _row(convention, before: Frame, after: Frame) -> dict:
+    """One table row's constants (θ and d without the joint variable) from two consecutive
+    frames, both at the zero configuration."""
     if convention == "standard":
         theta = angle(dot(before.x, after.x), dot(cross(before.x, after.x), before.z))
         d = dot(_foot_on_previous_z(before, after) - before.origin, before.z)
@@ -186,9 +203,7 @@ def _row(convention, axis, before: Frame, after: Frame, variable):
         a = dot(after.origin - before.origin, before.x)
         theta = angle(dot(before.x, after.x), dot(cross(before.x, after.x), after.z))
         d = dot(after.origin - before.origin, after.z)
-    if axis.joint == "R":
-        return "R", tidy(variable + theta), d, a, alpha
-    return "P", theta, tidy(variable + d), a, alpha
+    return {"theta": theta, "d": d, "a": a, "alpha": alpha}
 
 
 def _foot_on_previous_z(before: Frame, after: Frame) -> sympy.Matrix:

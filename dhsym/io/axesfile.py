@@ -2,7 +2,10 @@
 at the zero configuration, in the base frame) plus `tool:` (the tool frame at the zero
 configuration, as steps from the base frame) instead of `joints:`. The DH table in the file's
 `convention` is derived by dhsym.geometry.frames; joint variables are `q_1..q_n` unless an axis
-names its own with `var:`.
+names its own with `var:`. At most 24 axes, as for `joints:`; a point is made of numbers and
+constants (a joint variable there would move the axis). When the file writes decimals, the
+table shows decimals: values that are not exact decimals are rounded to 15 significant digits
+and the notes say so (see dhsym.geometry.rounding).
 
 >>> from dhsym.io.robotfile import load_robot_text
 >>> robot = load_robot_text('''
@@ -21,12 +24,13 @@ from pathlib import Path
 
 import sympy
 
+from ..core.numbers import decimal_text
 from ..core.transforms import product
 from ..errors import UserError
 from ..geometry.exact import is_zero_vector, unit
 from ..geometry.frames import assign_frames
 from ..geometry.lines import JointAxis
-from .expr import real_symbol
+from .expr import Reading, parse_expression, real_symbol
 
 AXIS_KEYS = ("joint", "point", "direction", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
@@ -41,23 +45,36 @@ def axes_chain(reader, top: dict, convention: str):
     if "tool" not in top:
         raise UserError("axes: needs tool: too, the tool frame at the zero configuration as steps from the base",
                         reader.where(top["axes"][0]))
+    from .robotfile import MAX_JOINTS  # here, not above: robotfile imports this module
+
     axes_node = top["axes"][1]
     nodes = reader.sequence(axes_node, "axes")
     if not nodes:
         raise UserError("axes is empty; a robot needs at least one joint", reader.where(axes_node))
-    axes, variables = [], []
+    if len(nodes) > MAX_JOINTS:
+        raise UserError(f"{len(nodes)} axes; dhsym handles at most {MAX_JOINTS}", reader.where(axes_node))
+    axes, variables, points = [], [], []
     for number, node in enumerate(nodes, 1):
-        axis, variable = _axis(reader, node, number)
+        axis, variable, point_node = _axis(reader, node, number)
         if variable in variables:
             raise UserError(f"axis {number} var: {variable} is already the variable of axis "
                             f"{variables.index(variable) + 1}", reader.where(node))
         axes.append(axis)
         variables.append(variable)
+        points.append(point_node)
+    for number, (axis, point_node) in enumerate(zip(axes, points), 1):
+        moving = sorted((axis.point.free_symbols & set(variables)), key=str)
+        if moving:
+            raise UserError(f"axis {number} point: {moving[0]} is a joint variable; the axes are given at the zero "
+                            "configuration, in numbers and constants", reader.where(point_node))
     tool_steps = reader.steps(top["tool"][1], "tool", set(variables))
     try:
-        assignment = assign_frames(axes, product(tool_steps), convention, variables)
+        assignment = assign_frames(axes, product(tool_steps), convention, variables,
+                                   decimals=reader.reading.places > 0)
     except UserError as error:
-        raise error.at(reader.where(axes_node)) from None
+        raise UserError(error.message, error.where or reader.where(axes_node)) from None
+    places = [len(decimal_text(r.value).partition(".")[2]) for r in assignment.roundings if r.value.is_Rational]
+    reader.reading.absorb(Reading(places=max(places, default=0)))  # the table shows the rounded values as decimals
     return assignment.chain(name=reader.optional_text(top, "name", Path(reader.filename).stem),
                             source=reader.optional_text(top, "source", ""),
                             notes=reader.optional_text(top, "notes", ""))
@@ -81,10 +98,25 @@ def _axis(reader, node, number: int):
         raise UserError(f"{what} direction: must be numbers, not symbols", reader.where(direction_node))
     if is_zero_vector(direction):
         raise UserError(f"{what} direction: has zero length", reader.where(direction_node))
-    name = reader.text(items["var"][1], f"{what} var").strip() if "var" in items else f"q_{number}"
-    if not name.isidentifier() or name.startswith("_"):
-        raise UserError(f"{what} var: {name!r} is not a name", reader.where(items["var"][1]))
-    return JointAxis(kind, point, unit(direction)), real_symbol(name)
+    variable = _variable(reader, items["var"][1], what) if "var" in items else real_symbol(f"q_{number}")
+    return JointAxis(kind, point, unit(direction)), variable, items["point"][1]
+
+
+def _variable(reader, node, what: str) -> sympy.Symbol:
+    """The joint variable `var:` names, as the rest of the file reads that name (θ₁ is θ_1, as
+    in a point); a constant, a function or a word that is not a name is refused."""
+    name = reader.text(node, f"{what} var").strip()
+    try:
+        value = parse_expression(name)
+    except UserError:
+        value = None
+    if value is not None and value.has(sympy.pi):
+        raise UserError(f"{what} var: {name!r} is the constant π, not a name; call the variable q_1 or "
+                        "theta_1, for example", reader.where(node))
+    if not isinstance(value, sympy.Symbol):
+        raise UserError(f"{what} var: {name!r} is not a name a robot file can use for a joint variable; call "
+                        "it q_1 or theta_1, for example", reader.where(node))
+    return value
 
 
 def _triple(reader, node, what: str) -> sympy.Matrix:

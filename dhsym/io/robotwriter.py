@@ -1,7 +1,12 @@
 """Writing a chain as a robot file that dhsym reads back to the same chain.
 
 Numbers are written as decimals where they end (17/40 → 0.425), else as fractions; π and
-square roots by name. Every value is read back through the robot-file parser before the text
+square roots by name; a denominator the chain's file wrote as a fraction stays one (l_1/2).
+A value the robot-file parser cannot read (atan(4/3), a fraction of 60 digits) or that is too
+long for it is rounded to a decimal by dhsym.geometry.rounding, and the notes say which value
+and what it was exactly. What cannot be written at all (a symbolic atan2, an expression over the
+200-character limit, more than 24 joints, a file over 1 MiB) is a UserError naming the limit,
+and nothing is written. Every file is read back through the robot-file parser before the text
 is returned, so a file that would not read back the same is never written.
 
 >>> from dhsym.io.library import load
@@ -23,43 +28,68 @@ import json
 import re
 
 import sympy
+from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
+from ..core.chain import Chain, DHRow
+from ..core.numbers import WrittenNumbers, decimal_text
+from ..core.transforms import Step
 from ..errors import UserError
-from .robotfile import load_robot_text
+from ..geometry.rounding import Rounding, dh_label, fit, joined, rounding_note
+from .expr import MAX_LENGTH, parse_expression
+from .robotfile import MAX_JOINTS, load_robot_text
+from .yamlsafe import MAX_FILE_BYTES
 
 COLUMNS = {"standard": ("theta", "d", "a", "alpha"), "modified": ("alpha", "a", "d", "theta")}
+LONG_DENOMINATOR = 1000  # a coefficient over this (terminating) denominator is written as a decimal
 _PLAIN = re.compile(r"^[\w.+\-*/() ]+$")
 
 
 class _DecimalPrinter(StrPrinter):
-    """sympy's str form, with terminating fractions as decimals (what a robot file says)."""
+    """sympy's str form, with terminating fractions as decimals (what a robot file says), except
+    denominators the file wrote as fractions; a long coefficient is a decimal too (0.7071*l_1)."""
+
+    def __init__(self, numbers: WrittenNumbers):
+        super().__init__({"order": "none"})
+        self.numbers = numbers
+
+    def decimal(self, value: sympy.Rational) -> str | None:
+        if value.q in self.numbers.fractions and abs(value) not in self.numbers.values:
+            return None
+        return decimal_text(value) if _terminates(value) else None
 
     def _print_Rational(self, expr):
-        return _decimal(expr) or super()._print_Rational(expr)
+        return self.decimal(expr) or super()._print_Rational(expr)
+
+    def _print_Mul(self, expr):
+        coefficient, rest = expr.as_coeff_Mul()
+        text = self.decimal(coefficient) if coefficient.is_Rational and coefficient.q > LONG_DENOMINATOR else None
+        if text is None or rest == 1:
+            return super()._print_Mul(expr)
+        return f"{text}*{self.parenthesize(rest, PRECEDENCE['Mul'])}"
 
 
-def _decimal(value: sympy.Rational) -> str | None:
-    """17/40 → '0.425'; None when the decimal does not end."""
-    q, twos, fives = int(value.q), 0, 0
-    while q % 2 == 0:
-        q, twos = q // 2, twos + 1
-    while q % 5 == 0:
-        q, fives = q // 5, fives + 1
-    if q != 1:
+def _terminates(value: sympy.Rational) -> bool:
+    q = int(value.q)
+    for prime in (2, 5):
+        while q % prime == 0:
+            q //= prime
+    return q == 1
+
+
+def expression_text(value, numbers: WrittenNumbers | None = None) -> str:
+    return _DecimalPrinter(numbers or WrittenNumbers()).doprint(sympy.sympify(value))
+
+
+def _moving_text(variable, constant, numbers) -> str | None:
+    """θ or d as a person writes it, the variable first: q_2 + 1.5707, q_6 - pi/2."""
+    if constant == 0 or variable in constant.free_symbols:
         return None
-    places = max(twos, fives)
-    digits = str(abs(int(value.p)) * 10 ** places // int(value.q)).rjust(places + 1, "0")
-    text = digits if places == 0 else f"{digits[:-places]}.{digits[-places:]}"
-    return ("-" if value < 0 else "") + text
+    text = expression_text(constant, numbers)
+    return f"{variable.name} - {text[1:]}" if text.startswith("-") else f"{variable.name} + {text}"
 
 
-def expression_text(value) -> str:
-    return _DecimalPrinter({"order": "none"}).doprint(sympy.sympify(value))
-
-
-def _value(value) -> str:
-    text = expression_text(value)
+def _yaml_value(text: str) -> str:
     plain = _PLAIN.match(text) and (not text.startswith(("-", "*")) or re.match(r"^-[\w.(]", text))
     return text if plain else json.dumps(text)  # a YAML plain scalar where it reads back as written
 
@@ -68,37 +98,116 @@ def _string(text: str) -> str:
     return json.dumps(text, ensure_ascii=False)
 
 
+class _Values:
+    """Each value's text, checked to read back; what had to be rounded, for the notes."""
+
+    def __init__(self, chain: Chain):
+        self.numbers = chain.numbers
+        self.roundings: list[Rounding] = []
+
+    def written(self, value, label: str, place: str, length: bool = False):
+        """(value as it will read back, its text) for a value of the table at `place`; a
+        `length` holds no π (a robot file refuses it there)."""
+        value = sympy.sympify(value)
+        text = expression_text(value, self.numbers)
+        if self.reads_back(text, value) and not (length and value.has(sympy.pi)):
+            return value, text
+        rounded = fit(value, length=length)
+        if rounded is not value:
+            rounded_text = expression_text(rounded, self.numbers)
+            if self.reads_back(rounded_text, rounded):
+                self.roundings.append(Rounding(label, rounded, value))
+                return rounded, rounded_text
+            text = rounded_text
+        hint = ""
+        if value.free_symbols and any(not isinstance(f, (sympy.sin, sympy.cos)) for f in value.atoms(sympy.Function)):
+            names = ", ".join(sorted(map(str, value.free_symbols)))
+            hint = f"; the angle depends on {names}, so it has no exact decimal: give those lengths as numbers"
+        raise UserError(f"cannot write {place} as a robot file: {self.why_not(text)}{hint}; nothing was written")
+
+    @staticmethod
+    def reads_back(text: str, value) -> bool:
+        if len(text) > MAX_LENGTH:
+            return False
+        try:
+            return parse_expression(text) == value
+        except UserError:
+            return False
+
+    @staticmethod
+    def why_not(text: str) -> str:
+        shown = text if len(text) <= 60 else text[:57] + "..."
+        if len(text) > MAX_LENGTH:
+            return f"its value is {len(text)} characters long; a robot file holds at most {MAX_LENGTH} per expression"
+        try:
+            parse_expression(text)
+        except UserError as error:
+            return f"{shown} does not read back ({error.message})"
+        return f"{shown} does not read back as the same value"
+
+
 def robot_yaml(chain, notes: str | None = None) -> str:
-    """The robot file of `chain`; it reads back to the same rows, base, tool and sample."""
-    lines = [f"name: {_string(chain.name)}", f"source: {_string(chain.source)}", f"convention: {chain.convention}",
-             "joints:"]
-    for row in chain.rows:
-        fields = [f"joint: {row.joint}"] + [f"{key}: {_value(getattr(row, key))}" for key in COLUMNS[chain.convention]]
-        moving = row.theta if row.joint == "R" else row.d
-        if len(moving.free_symbols) > 1:
+    """The robot file of `chain`; it reads back to the same rows, base, tool, sample and first
+    frame. `notes` goes before the chain's own notes, then a sentence on any value rounded."""
+    if chain.n > MAX_JOINTS:
+        raise UserError(f"{chain.n} joints; a robot file holds at most {MAX_JOINTS}, so none was written")
+    values = _Values(chain)
+    lines = [f"name: {_string(chain.name)}", f"source: {_string(chain.source)}", f"convention: {chain.convention}"]
+    if chain.frame_offset:
+        lines.append(f"first_frame: {chain.frame_offset}")
+    lines.append("joints:")
+    rows = []
+    for number, row in enumerate(chain.rows, 1):
+        moving = "theta" if row.joint == "R" else "d"
+        written, fields = {}, [f"joint: {row.joint}"]
+        for key in COLUMNS[chain.convention]:
+            value = getattr(row, key)
+            constant = value - row.variable if key == moving else value
+            label = dh_label(chain.convention, number, key, chain.frame_offset, moving=key == moving)
+            constant, _ = values.written(constant, label, f"joint row {number} {key}", key in ("a", "d"))
+            written[key] = constant + row.variable if key == moving else constant
+            text = _moving_text(row.variable, constant, values.numbers) if key == moving else None
+            text = text or expression_text(written[key], values.numbers)
+            if len(text) > MAX_LENGTH:  # the constant fitted, but not with the variable added
+                raise UserError(f"cannot write joint row {number} {key} as a robot file: {values.why_not(text)}; "
+                                "nothing was written")
+            fields.append(f"{key}: {_yaml_value(text)}")
+        if len(written[moving].free_symbols) > 1:
             fields.append(f"var: {row.variable.name}")
         lines.append("  - {" + ", ".join(fields) + "}")
-    for key, steps in (("base", chain.base), ("tool", chain.tool)):
-        if steps:
-            lines.append(f"{key}: [" + ", ".join(f"{{{s.kind}: {_value(s.value)}}}" for s in steps) + "]")
+        rows.append(DHRow(row.joint, written["theta"], written["d"], written["a"], written["alpha"], row.variable))
+    steps = {}
+    for key, chain_steps in (("base", chain.base), ("tool", chain.tool)):
+        steps[key] = [Step(s.kind, values.written(s.value, f"{key} {s.kind}", f"{key} step {n} {s.kind}",
+                                                  s.kind[0] == "T")[0]) for n, s in enumerate(chain_steps, 1)]
+        if steps[key]:
+            texts = (f"{{{s.kind}: {_yaml_value(expression_text(s.value, values.numbers))}}}" for s in steps[key])
+            lines.append(f"{key}: [" + ", ".join(texts) + "]")
     if chain.sample:
-        lines.append("sample: {" + ", ".join(f"{s.name}: {_value(v)}"
-                                             for s, v in sorted(chain.sample.items(), key=lambda i: i[0].name)) + "}")
-    notes = chain.notes if notes is None else notes
-    if notes:
-        lines.append(f"notes: {_string(notes)}")
+        texts = (f"{s.name}: {_yaml_value(values.written(v, s.name, f'sample {s.name}')[1])}"
+                 for s, v in sorted(chain.sample.items(), key=lambda i: i[0].name))
+        lines.append("sample: {" + ", ".join(texts) + "}")
+    all_notes = joined(notes or "", chain.notes, rounding_note(values.roundings))
+    if all_notes:
+        lines.append(f"notes: {_string(all_notes)}")
     text = "\n".join(lines) + "\n"
-    _check_reads_back(text, chain)
+    size = len(text.encode("utf-8"))
+    if size > MAX_FILE_BYTES:
+        raise UserError(f"the robot file would be {size} bytes; robot files are limited to {MAX_FILE_BYTES >> 20} "
+                        "MiB, so none was written")
+    _check_reads_back(text, Chain(rows, chain.convention, steps["base"], steps["tool"]))
     return text
 
 
-def _check_reads_back(text: str, chain) -> None:
-    """The written file must give the chain back exactly; anything else is a bug in this writer."""
+def _check_reads_back(text: str, chain: Chain) -> None:
+    """The written file must give the chain back exactly; anything else is a bug in this writer,
+    reported as an error (nothing is written) rather than a crash."""
     try:
         again = load_robot_text(text, "<written>").chain
     except UserError as error:
-        raise AssertionError(f"written robot file does not read back: {error}") from None
+        raise UserError(f"the robot file dhsym would write does not read back ({error}); nothing was written") \
+            from None
     same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.rows] == \
         [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in chain.rows]
     if not (same and list(again.base) == list(chain.base) and list(again.tool) == list(chain.tool)):
-        raise AssertionError("written robot file reads back as a different chain")
+        raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")

@@ -29,6 +29,7 @@ _SUPERSCRIPT = re.compile(r"[⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺]")
 _NUMBER_THEN_NAME = re.compile(r"(?<![\w.])(\d+(?:\.\d*)?|\.\d+)(\s*)([^\W\d]\w*)")
 _NOT_A_NAME = re.compile(r"[eE][+-]?\d|[eE]\Z|[xXoObB][\da-fA-F]*\Z")  # 1e3, 0x1f: Python's own numbers
 DECIMAL_COMMA = re.compile(r"\s*-?\d+,\d+\s*")
+DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}  # angles that are degrees when written bare
 _RADIANS = ("rad", "rads", "radian", "radians")
 # Letters of other scripts that look like Latin or Greek ones, with the letter they pass for.
 LOOKALIKES = {
@@ -110,6 +111,15 @@ def near_multiple_of_pi(value: sympy.Expr, places: int) -> str | None:
         return None
     angle = steps * sympy.pi / 12
     return f"{decimal_text(value)} is not exactly {_pi_text(angle, 'π')}; did you mean {_pi_text(angle, 'pi')}?"
+
+
+def looks_like_degrees(value: sympy.Expr) -> bool:
+    """Whether an angle is a whole number of degrees that people write, such as 90 or -180.
+
+    >>> looks_like_degrees(sympy.Integer(-90)), looks_like_degrees(sympy.Integer(2))
+    (True, False)
+    """
+    return value.is_Integer and abs(int(value)) in DEGREE_LOOKING
 
 
 def _pi_text(angle: sympy.Expr, pi: str) -> str:

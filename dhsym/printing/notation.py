@@ -35,6 +35,7 @@ cos(theta_1 + theta_2 - pi/4)
 """
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 
 import sympy
@@ -90,7 +91,9 @@ class Notation:
         self.write_sympy = write_sympy or sympy.sstr
         self._found: dict = {}  # abbreviation() of each cos/sin seen: term ordering asks again and again
         labels = [_subscript(s.name) for s in joint_variables]
-        if None not in labels and _lettered(joint_variables):
+        if any(is_word_name(s.name) for s in joint_variables):
+            labels = _suffix_labels([s.name for s in joint_variables])
+        elif None not in labels and _lettered(joint_variables):
             labels = [_letter(s.name) + label for s, label in zip(joint_variables, labels)]
         if None in labels or len(set(labels)) != len(labels):
             labels = list(range(first_joint, first_joint + len(joint_variables)))
@@ -274,6 +277,33 @@ def written_offsets(rows) -> dict:
     return offsets
 
 
+def is_word_name(name: str) -> bool:
+    """Whether a name is a word with underscores, such as a URDF joint's `right_s0` or
+    `shoulder_pan_joint`, rather than a letter with indices (`theta_1`, `l_23`): it prints as
+    written (LaTeX `\\mathrm{right\\_s0}`), since `rights0` would be no one's name.
+
+    >>> is_word_name("right_s0"), is_word_name("theta_1"), is_word_name("elbow_1"), is_word_name("ab_c")
+    (True, False, False, False)
+    """
+    base, supers, subs = split_super_sub(name)
+    numbered = not supers and len(subs) == 1 and subs[0].isdigit()  # elbow_1 stays elbow₁-like: elbow1
+    return "_" in name and len(base) > 2 and base not in greek_unicode and base not in GREEK_NAMES and not numbered
+
+
+def _suffix_labels(names: list) -> list:
+    """Short joint labels for word names: what follows their common prefix up to an underscore,
+    when that is at most four letters or digits (right_s0 → s0, left_j1 → j1); else None for each.
+
+    >>> _suffix_labels(["right_s0", "right_s1", "right_e0"]), _suffix_labels(["shoulder_pan", "elbow"])
+    (['s0', 's1', 'e0'], [None, None])
+    """
+    common = os.path.commonprefix(names).rfind("_") + 1  # cut after an underscore: right_s0 → s0, not 0
+    rests = [name[common:] for name in names]
+    if len(names) > 1 and all(rest.isalnum() and rest.isascii() and len(rest) <= 4 for rest in rests):
+        return rests
+    return [None] * len(names)
+
+
 def _letter(name: str) -> str:
     """The letter of a name, Greek as its Unicode character: phi_2 -> 'φ'."""
     base = split_super_sub(name)[0]
@@ -312,6 +342,8 @@ def _index_text(label, sign: int, style: str) -> str:
 
 def display_name(name: str, style: str) -> str:
     """A symbol name as a textbook writes it: theta_1 -> θ1 (unicode), \\theta_{1} (LaTeX)."""
+    if is_word_name(name):
+        return "\\mathrm{" + name.replace("_", "\\_") + "}" if style == "latex" else name
     base, supers, subs = split_super_sub(name)
     subs = [s.strip("{}") for s in subs]
     supers = [s.strip("{}") for s in supers]

@@ -1,0 +1,95 @@
+"""A URDF (or a .xacro file) to a DH chain, as `dhsym import` does it, for Python users.
+
+>>> from pathlib import Path
+>>> imported = import_urdf(Path(__file__).parents[2] / "tests" / "data" / "panda.urdf", convention="modified")
+>>> imported.chain.n, imported.chain.convention, imported.chain.rows[0].d
+(7, 'modified', 333/1000)
+>>> imported.notes[:61]
+'Derived by dhsym import; joint variables: q_1 = panda_joint1,'
+
+Joint i is the i-th revolute, continuous or prismatic joint from base to tip; its variable
+equals the joint's value: q_i, or with `variables="urdf"` the joint's own name where that is
+a name a robot file can hold (`right_s0`; `joint-1` becomes `joint_1`).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import sympy
+
+from ..errors import UserError
+from ..geometry.frames import assign_frames
+from .expr import parse_expression
+
+_NAME_START = re.compile(r"^[A-Za-z]")
+
+
+@dataclass
+class Imported:
+    """What an import gives: the chain, the notes for its robot file, and the warnings."""
+
+    chain: object
+    notes: str
+    warnings: list = field(default_factory=list)
+    joint_names: list = field(default_factory=list)  # the URDF joint of each row
+
+
+def import_urdf(path: str | Path, base: str | None = None, tip: str | None = None, convention: str = "standard",
+                variables: str = "q") -> Imported:
+    """The DH chain of a URDF's base → tip path; a `.xacro` file is expanded first (see io.xacro)."""
+    from .urdf import read_urdf, read_urdf_text  # lxml only when a URDF is read
+
+    if str(path).lower().endswith(".xacro"):
+        from .xacro import expand_xacro
+
+        urdf = read_urdf_text(expand_xacro(path), f"{path} (expanded by xacro)", base, tip)
+    else:
+        urdf = read_urdf(path, base, tip)
+    if variables not in ("q", "urdf"):
+        raise UserError(f"unknown variable style {variables!r}; use q or urdf")
+    symbols = joint_symbols(urdf.joint_names, variables)
+    chain = assign_frames(urdf.axes, urdf.tool, convention, symbols).chain(
+        name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}")
+    notes = "Derived by dhsym import; joint variables: " + ", ".join(
+        f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
+    return Imported(chain, notes, urdf.warnings, urdf.joint_names)
+
+
+def joint_symbols(names: list[str], style: str) -> list[sympy.Symbol]:
+    """q_1..q_n, or the URDF names made into symbols ('joint-1' → joint_1); q_i where that fails
+    (a name that is not a name in a robot file, such as pi or sin, or one taken already), never
+    a name that another joint has.
+
+    >>> joint_symbols(["shoulder pan", "2nd", "pi"], "urdf")
+    [shoulder_pan, q_2, q_3]
+    >>> joint_symbols(["q_2", "elbow", "sin"], "urdf")
+    [q_2, elbow, q_3]
+    >>> joint_symbols(["a", "q_1", "sin"], "urdf")
+    [a, q_1, q_3]
+    >>> joint_symbols(["q_2", "sin"], "urdf")
+    [q_2, q_2_2]
+    """
+    if style != "urdf":
+        return [sympy.Symbol(f"q_{number}", real=True) for number in range(1, len(names) + 1)]
+    made = [re.sub(r"\W+", "_", name).strip("_") for name in names]
+    usable = [bool(_NAME_START.match(name)) and _reads_back(name) and made.count(name) == 1 for name in made]
+    taken = {name for name, ok in zip(made, usable) if ok}
+    symbols = []
+    for number, (name, ok) in enumerate(zip(made, usable), 1):
+        if not ok:
+            name, extra = f"q_{number}", 1
+            while name in taken:
+                extra += 1
+                name = f"q_{number}_{extra}"
+            taken.add(name)
+        symbols.append(sympy.Symbol(name, real=True))
+    return symbols
+
+
+def _reads_back(name: str) -> bool:
+    try:
+        return parse_expression(name) == sympy.Symbol(name, real=True)
+    except UserError:
+        return False
