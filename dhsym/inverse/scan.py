@@ -145,7 +145,8 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     for c in singles:
         if c.variable in prismatic:
             rule = "linear" if len(c.form) == 2 else "quadratic"
-            rank = 1 if rule == "linear" else 4
+            # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
+            rank = (1 if c.form[0].is_number else 5) if rule == "linear" else 4
             options.append(((kind_rank(c), rank, length(c.form)), rule, [c]))
         else:
             options.append(((kind_rank(c), 4, length(c.form)), "one", [c]))
@@ -268,6 +269,7 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
                                          "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
                                          (variable,), f"{c.equation.where} (equation {index} of 2)"))
         det = sp.determinant(candidates[0].form, candidates[1].form)
+        det = min([det, sympy.factor(sympy.trigsimp(det))], key=length) if length(det) < 60 else det
         if not det.is_number:
             derivation.degenerate.append(f"{_unsigned(det)} = 0: {shown} is not determined by these equations")
         return sp.pair(candidates[0].form, candidates[1].form)
