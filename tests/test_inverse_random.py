@@ -55,7 +55,8 @@ def pieper_arms(draw):
              DHRow.revolute(q[5] + offset(), d=length(), a=length(), alpha=draw(st.sampled_from([0, HALF])),
                             variable=q[5])]
     base = draw(st.sampled_from([[], [Step("Tz", sympy.Rational(1, 4))], [Step("Rz", HALF), Step("Tx", length())]]))
-    tool = draw(st.sampled_from([[], [Step("Tz", length())], [Step("Rx", sympy.pi), Step("Tz", sympy.Rational(1, 10))]]))
+    tool = draw(st.sampled_from([[], [Step("Tz", length())],
+                                 [Step("Rx", sympy.pi), Step("Tz", sympy.Rational(1, 10))]]))
     chain = Chain(arm + wrist, "standard", base=base, tool=tool, name=f"random {family} arm", sample=sample)
     return to_convention(chain, draw(st.sampled_from(["standard", "modified"])))
 
