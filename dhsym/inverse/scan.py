@@ -128,12 +128,16 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     for equation in pool:
         shape = _shape(equation, remaining, prismatic)
         if shape is not None:
-            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), tree_size(equation.expr),
+            # first the equations where the unknown is on the chain's side alone, with the shortest
+            # chain side: there the coefficients of cos and sin are the chain's constants
+            on_target_side = bool(equation.lhs.free_symbols & set(remaining))
+            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side,
+                                                    tree_size(equation.rhs), tree_size(equation.expr),
                                                     len(groups.get(shape[0], [])), equation, shape))
     singles = []
     for group in groups.values():
         worked = 0
-        for *_, equation, shape in sorted(group, key=lambda item: item[:3]):
+        for *_, equation, shape in sorted(group, key=lambda item: item[:5]):
             if worked >= FORMS_PER_UNKNOWN:
                 break
             candidate = _candidate(equation, shape, constants)
@@ -242,6 +246,19 @@ def _last(angle, unknown, remaining):
     return None
 
 
+def _degenerate_pair(det, shown) -> str:
+    """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
+    (the wrist's s5), the axes on either side of joint k line up: a one-parameter family."""
+    bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(det) if not f.is_number}
+    if len(bases) == 1:
+        (base,) = bases
+        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
+            return (f"{base} = 0: {shown} is not determined on its own: the axes on either side of "
+                    f"{base.args[0]} line up, and only the sum (or difference) of the angles about them is "
+                    "determined, a one-parameter family (evaluate gives one member)")
+    return f"{_unsigned(det)} = 0: {shown} is not determined by these equations"
+
+
 def _unsigned(expr):
     return -expr if expr.could_extract_minus_sign() else expr
 
@@ -271,7 +288,7 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
         det = sp.determinant(candidates[0].form, candidates[1].form)
         det = min([det, sympy.factor(sympy.trigsimp(det))], key=length) if length(det) < 60 else det
         if not det.is_number:
-            derivation.degenerate.append(f"{_unsigned(det)} = 0: {shown} is not determined by these equations")
+            derivation.degenerate.append(_degenerate_pair(det, shown))
         return sp.pair(candidates[0].form, candidates[1].form)
     sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
     if rule == "linear":
