@@ -93,6 +93,13 @@ def test_the_planar_elbow_uses_px_and_py_and_says_so():
     assert [b.name for b in solution.branches] == ["elbow down", "elbow up"]
 
 
+def test_a_pendulum_has_one_named_solution():
+    theta = sympy.Symbol("theta_1", real=True)
+    solution = solve(dhsym.Chain([dhsym.DHRow.revolute(theta, a=1)], "standard", name="pendulum"))
+    assert [(b.name, b.assignments) for b in solution.branches] == [
+        ("the only solution", ((theta, sympy.atan2(sympy.Symbol("py", real=True), sympy.Symbol("px", real=True))),))]
+
+
 def test_a_target_out_of_reach_has_no_branch():
     chain, solution = solved("planar2r")
     far = numpy.eye(4)

@@ -149,4 +149,4 @@ def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:
         name = branch_name([(joint, rule, c) for (_, joint, rule), c in zip(signs, choice)], first_joint,
                            wrist_joints)
         branches.append(Branch(name, tuple((n, v.xreplace(values)) for n, v in assignments)))
-    return branches or [Branch("the only solution", tuple(assignments))]
+    return branches
