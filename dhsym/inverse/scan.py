@@ -46,6 +46,7 @@ class Derivation:
     steps: list = field(default_factory=list)
     conditions: list = field(default_factory=list)
     degenerate: list = field(default_factory=list)
+    vanishing: list = field(default_factory=list)  # (expression, index in degenerate) where a pair is singular
 
 
 @dataclass(frozen=True)
@@ -77,7 +78,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         rule, candidates = best
         known = len(derivation.assignments)
-        value = _apply(rule, candidates, derivation, remaining, prismatic)
+        value = _apply(rule, candidates, derivation, constants)
         for name, named in derivation.assignments[known:]:
             witness[name] = _number(named, witness)
         variable, angle = candidates[0].variable, candidates[0].angle
@@ -274,7 +275,7 @@ def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
     return symbol
 
 
-def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
+def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     """The value of the candidates' unknown (or sum), with its steps, conditions and sign symbol."""
     first = candidates[0]
     angle, variable = first.angle, first.variable
@@ -286,8 +287,12 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
                                          "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
                                          (variable,), f"{c.equation.where} (equation {index} of 2)"))
         det = sp.determinant(candidates[0].form, candidates[1].form)
-        det = min([det, sympy.factor(sympy.trigsimp(det))], key=length) if length(det) < 60 else det
+        if length(det) < 60:  # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
+            shorter = sympy.factor(sympy.trigsimp(det))
+            if not any(f.args[0].as_coeff_Mul()[0] not in (1, -1) for f in shorter.atoms(sympy.sin, sympy.cos)):
+                det = min([det, shorter], key=length)
         if not det.is_number:
+            derivation.vanishing.append((det, len(derivation.degenerate)))
             derivation.degenerate.append(_degenerate_pair(det, shown))
         return sp.pair(candidates[0].form, candidates[1].form)
     sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
@@ -315,8 +320,9 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
     derivation.signs.append((sigma, variable, "law" if law else "one"))
     root = sp.existence(a, b, c)
     if root is not None:
-        derivation.conditions.append(f"{root} >= 0")
-    if not (a.is_number or b.is_number):
+        derivation.conditions.append(f"{root} >= 0 (else {shown} has no real value: the target is out of reach; "
+                                     "where it is 0 the two roots meet)")
+    if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
         derivation.degenerate.append(f"{_unsigned(a)} = 0 and {_unsigned(b)} = 0: {shown} is not determined "
                                      "by this equation")
     return sp.one_equation(a, b, c, sigma)

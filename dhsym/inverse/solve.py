@@ -19,6 +19,7 @@ from itertools import product
 import sympy
 
 from ..errors import UserError
+from ..velocity.determinant import determinant
 from .branches import branch_name
 from .equations import point_equations, transform_equations
 from .scan import Derivation, scan
@@ -79,6 +80,8 @@ def solve(chain, free=()) -> Solution:
         conditions.append(f"the arm has {len(unknowns)} unknown joints: only {', '.join(used)} are used, "
                           "and the other elements of the target must be consistent with them"
                           + (f" (in every pose of this arm {fixed})" if fixed else ""))
+    if structure.wrist and len(unknowns) == 6 and chain.n == 6:
+        tie_to_jacobian(chain, derivation)
     branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)
     return Solution(chain, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
                     tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),
@@ -100,6 +103,17 @@ def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:
                 fixed[target[r, c]] = fk[r, c]
     said = ", ".join(f"{name} = {value}" for name, value in fixed.items())
     return target.xreplace(fixed), said
+
+
+def tie_to_jacobian(chain, derivation) -> None:
+    """Say which degenerate cases are singularities that `dhsym jacobian` prints: a factor of
+    det J (worked out fast for a wrist-partitioned arm, det A · det C)."""
+    factors = determinant(chain).factors
+    for expr, index in derivation.vanishing:
+        bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
+        matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
+        if matched:
+            derivation.degenerate[index] += f"; a singularity of J: the factor {matched[0]} of det J"
 
 
 def free_variables(chain, free) -> tuple[sympy.Symbol, ...]:
