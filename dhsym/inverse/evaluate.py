@@ -39,10 +39,14 @@ def evaluate(solution, T, constants=None):
         shared = dict(inputs)
         for name, value in solution.definitions:
             shared[name] = _compute(value, shared, names)
+        done: dict = {}  # branches share their first steps (θ1 of the shoulder): each is computed once
         for b, branch in enumerate(solution.branches):
             known = dict(shared)
-            for name, value in branch.assignments:
-                known[name] = _compute(value, known, names)
+            for k, (name, value) in enumerate(branch.assignments):
+                prefix = branch.assignments[:k + 1]
+                if prefix not in done:
+                    done[prefix] = _compute(value, known, names)
+                known[name] = done[prefix]
             result = numpy.stack([numpy.broadcast_to(numpy.asarray(known[v], dtype=float), (poses.shape[0],))
                                   for v in solution.joint_variables], axis=-1)
             result[:, revolute] = (result[:, revolute] + numpy.pi) % (2 * numpy.pi) - numpy.pi
