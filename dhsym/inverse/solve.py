@@ -26,7 +26,7 @@ from .scan import Derivation, scan
 from .solution import Branch, Solution, target_matrix, target_symbols
 from .structure import analyse
 from .witness import witness
-from .wrist import centre
+from .wrist import centre, centre_at_start
 
 
 def solve(chain, free=()) -> Solution:
@@ -58,6 +58,23 @@ def solve(chain, free=()) -> Solution:
              prefer=("orientation",), constants=constants, witness=numbers)
         method = (f"kinematic decoupling: the axes of joints {_joints(structure.wrist)} meet at the wrist centre; "
                   f"the position of the wrist centre gives {_names(arm)}, its orientation {_names(wrist_joints)}")
+    elif structure.first_wrist:
+        wrist_joints = [chain.joint_variables[j - 1] for j in structure.first_wrist]
+        holder, local, in_first = centre_at_start(chain, structure.first_wrist)
+        rotation_t = target[:3, :3].T
+        point = rotation_t * (in_first - target[:3, 3])  # the centre seen from the last frame: Rᵀ(c − p)
+        names = sympy.symbols("x_c y_c z_c", real=True)
+        definitions += list(zip(names, point))
+        numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
+        point = sympy.Matrix(names)
+        arm = [v for v in unknowns if v not in wrist_joints]
+        scan(point_equations(chain, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
+             arm, prismatic, derivation, constants=constants, witness=numbers)
+        scan(transform_equations(chain, target, position=False, end=holder), wrist_joints, prismatic, derivation,
+             prefer=("orientation",), constants=constants, witness=numbers)
+        method = (f"kinematic decoupling: the axes of joints {_joints(structure.first_wrist)} meet at a point fixed "
+                  f"in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
+                  f"{_names(wrist_joints)}")
     elif structure.spherical:
         scan(transform_equations(chain, target, position=False), unknowns, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
