@@ -313,6 +313,9 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
         return sp.prismatic(first.form, sigma)
     a, b, c = first.form
     law = (b == 0 or a == 0)
+    shape = "A"
+    if not law and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
+        a, b, c, shape = min(_variants(a, b, c, sigma), key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
     c = _named(derivation, "D" if law else "K", c)
     derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), c,
                                  "law of cosines" if law else "a cos θ + b sin θ = c", (variable,),
@@ -325,4 +328,14 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
         derivation.degenerate.append(f"{_unsigned(a)} = 0 and {_unsigned(b)} = 0: {shown} is not determined "
                                      "by this equation")
-    return sp.one_equation(a, b, c, sigma)
+    return sp.one_equation(a, b, c, sigma, shape)
+
+
+def _variants(a, b, c, sigma):
+    """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
+    atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
+    placeholder = sympy.Dummy("c")
+    for sign in (1, -1):
+        sa, sb, sc = (x if sign == 1 else sympy.factor_terms(sympy.together(sympy.expand(-x))) for x in (a, b, c))
+        for shape in ("A", "B"):
+            yield sa, sb, sc, shape, sp.one_equation(sa, sb, placeholder, sigma, shape)
