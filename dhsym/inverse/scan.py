@@ -1,12 +1,15 @@
 """The search a student does by hand: among the equations, find one in a single unknown (or a
 pair) that is a known sub-problem, solve it, and go on with that unknown known.
 
-Each round takes the best of what is solvable, in this order: an atan2 pair whose determinant is
-a non-zero number (unique, never degenerate); a prismatic joint from a linear equation; an atan2
-pair whose determinant can vanish (unique, degenerate where it does); one equation with two
-roots (``a cos θ + b sin θ = c``, the law of cosines, a prismatic joint from a distance). Among
-equals the shortest wins. An angle that enters only through a sum of parallel-axis angles
-(``θ1 + θ2 + θ3``) is solved as that sum first.
+Each round takes the best of what is solvable. Equations of the preferred kind come first (the
+tip's position, then rotation elements, then inner frames' positions, which mix the two; a wrist
+prefers rotations), and within a kind this order: an atan2 pair whose determinant is a non-zero
+number (unique, never degenerate); a slide from a coordinate with a constant coefficient; an
+atan2 pair whose determinant can vanish (unique, degenerate where it does; a known sign before an
+unknown one); one equation with two roots (``a cos θ + b sin θ = c``, the law of cosines, a slide
+from a distance); last, a slide from a coordinate whose coefficient can vanish. Among equals the
+shortest wins. An angle that enters only through a sum of parallel-axis angles (``θ1 + θ2 + θ3``)
+is solved as that sum first.
 
 The number of rounds is the number of unknowns, and each looks at a fixed pool of equations: the
 work is bounded before it starts. Two roots are told apart by a sign symbol σ = ±1; one
