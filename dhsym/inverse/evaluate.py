@@ -15,6 +15,7 @@ import sympy
 
 from .solution import target_symbols
 
+COMPILED_KEPT = 2000  # compiled expressions kept between calls
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 
 
@@ -69,6 +70,8 @@ def _compute(expr: sympy.Expr, known: dict, constants: dict):
     symbols = sorted(expr.free_symbols, key=str)
     key = (expr, tuple(symbols))
     if key not in _compiled:
+        if len(_compiled) > COMPILED_KEPT:  # a long session solving many arms keeps only recent ones
+            _compiled.clear()
         _compiled[key] = sympy.lambdify(symbols, expr, modules=[{"sqrt": _sqrt}, "numpy"])
     arguments = []
     for symbol in symbols:

@@ -69,6 +69,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
+    _cache.clear()  # forms are reused within one search only: memory stays bounded across many
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
