@@ -1,0 +1,345 @@
+"""The search a student does by hand: among the equations, find one in a single unknown (or a
+pair) that is a known sub-problem, solve it, and go on with that unknown known.
+
+Each round takes the best of what is solvable. Equations of the preferred kind come first (the
+tip's position, then rotation elements, then inner frames' positions, which mix the two; a wrist
+prefers rotations), and within a kind this order: an atan2 pair whose determinant is a non-zero
+number (unique, never degenerate); a slide from a coordinate with a constant coefficient; an
+atan2 pair whose determinant can vanish (unique, degenerate where it does; a known sign before an
+unknown one); one equation with two roots (``a cos θ + b sin θ = c``, the law of cosines, a slide
+from a distance); last, a slide from a coordinate whose coefficient can vanish. Among equals the
+shortest wins. An angle that enters only through a sum of parallel-axis angles (``θ1 + θ2 + θ3``)
+is solved as that sum first.
+
+The number of rounds is the number of unknowns, and each looks at a fixed pool of equations: the
+work is bounded before it starts. Two roots are told apart by a sign symbol σ = ±1; one
+derivation serves every branch.
+
+>>> import sympy
+>>> x, t = sympy.symbols("x theta_1", real=True)
+>>> from dhsym.inverse.equations import Equation
+>>> found = scan([Equation(x, sympy.cos(t), "position", "x")], [t], set())
+>>> found.assignments
+[(theta_1, atan2(sigma_1*sqrt(1 - x**2), x))]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from itertools import combinations
+
+import sympy
+
+from ..core.size import length, tree_size
+from ..errors import UserError
+from . import subproblems as sp
+from .solution import Step
+
+WITNESS_ZERO = 1e-8
+FORMS_PER_UNKNOWN = 8  # the shortest equations per unknown whose sub-problem form is worked out
+PAIR_CANDIDATES = 4  # the shortest equations per unknown that are tried in pairs
+
+
+@dataclass
+class Derivation:
+    """What the search found: assignments in order (with sign symbols σ for two roots), the
+    sign symbols with the joint they choose for, the steps, existence conditions, degenerate cases."""
+
+    assignments: list = field(default_factory=list)
+    signs: list = field(default_factory=list)  # (σ, joint variable, sub-problem)
+    steps: list = field(default_factory=list)
+    conditions: list = field(default_factory=list)
+    degenerate: list = field(default_factory=list)
+    vanishing: list = field(default_factory=list)  # (expression, index in degenerate) where a pair is singular
+
+
+@dataclass(frozen=True)
+class Candidate:
+    equation: object
+    angle: sympy.Expr  # the unknown or the sum of angles it enters through
+    form: tuple  # (a, b, c) for an angle, polynomial coefficients for a slide
+    variable: sympy.Symbol  # the unknown it determines
+
+
+def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, prefer=("position",),
+         constants=frozenset(), witness: dict | None = None) -> Derivation:
+    """Solve `equations` for `unknowns` (in the order a textbook numbers them); `prismatic` is the
+    set of those that are slides; `constants` the robot's lengths (never zero). `witness` gives
+    numbers for every name at one generic pose: an equation whose coefficients vanish there says
+    nothing (0 = 0 once earlier results hold) and is passed over. Raises UserError when no
+    sub-problem applies."""
+    derivation = derivation or Derivation()
+    witness = {} if witness is None else witness
+    _cache.clear()  # forms are reused within one search only: memory stays bounded across many
+    pool = [e for e in equations if e.expr != 0]
+    remaining = list(unknowns)
+    pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
+    while remaining:
+        best = _best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness)
+        if best is None:
+            solved = [str(v) for v in unknowns if v not in remaining]
+            raise UserError("no closed form by the course's rules: "
+                            + (f"after {', '.join(solved)}, " if solved else "")
+                            + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
+        rule, candidates = best
+        known = len(derivation.assignments)
+        value = _apply(rule, candidates, derivation, constants)
+        for name, named in derivation.assignments[known:]:
+            witness[name] = _number(named, witness)
+        variable, angle = candidates[0].variable, candidates[0].angle
+        if angle == variable:
+            derivation.assignments.append((variable, value))
+        else:
+            phi = sympy.Symbol(f"phi_{len([a for a, _ in derivation.assignments if str(a).startswith('phi')]) + 1}",
+                               real=True)
+            derivation.assignments.append((phi, value))
+            witness[phi] = _number(angle, witness)
+            coefficient = angle.coeff(variable)
+            expression = sympy.expand((phi - (angle - coefficient * variable)) / coefficient)
+            pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
+                    for e in pool]
+            pending.append((variable, expression))
+        remaining.remove(variable)
+        ready = True
+        while ready:  # a joint written through a sum is assigned once what it is written with is known
+            waiting = set(remaining) | {v for v, _ in pending}
+            ready = [item for item in pending if not item[1].free_symbols & waiting]
+            for item in ready[:1]:
+                derivation.assignments.append(item)
+                pending.remove(item)
+    return derivation
+
+
+def _number(expr, witness: dict) -> float | None:
+    """The value of `expr` at the witness pose, or None when it cannot be had."""
+    if not witness:
+        return None
+    try:
+        return float(sympy.sympify(expr).xreplace(witness).evalf(15))
+    except (TypeError, ValueError):
+        return None
+
+
+def _vanishes(expr, witness: dict) -> bool:
+    value = _number(expr, witness)
+    return value is not None and abs(value) < WITNESS_ZERO
+
+
+def _best(pool, remaining, prismatic, prefer, constants, witness):
+    """(rule, candidates) of the best solvable sub-problem, or None. Equations are sorted by
+    length within each unknown first, and only the shortest few are worked out: a bounded cost."""
+    order = list(prefer) + [k for k in ("position", "orientation", "mixed") if k not in prefer]
+    kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
+    groups: dict = {}
+    for equation in pool:
+        shape = _shape(equation, remaining, prismatic)
+        if shape is not None:
+            # first the equations where the unknown is on the chain's side alone, with the shortest
+            # chain side: there the coefficients of cos and sin are the chain's constants
+            on_target_side = bool(equation.lhs.free_symbols & set(remaining))
+            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side,
+                                                    tree_size(equation.rhs), tree_size(equation.expr),
+                                                    len(groups.get(shape[0], [])), equation, shape))
+    singles = []
+    for group in groups.values():
+        worked = 0
+        for *_, equation, shape in sorted(group, key=lambda item: item[:5]):
+            if worked >= FORMS_PER_UNKNOWN:
+                break
+            candidate = _candidate(equation, shape, constants)
+            if candidate is None or _says_nothing(candidate, prismatic, witness):
+                continue
+            singles.append(candidate)
+            worked += 1
+    options = []
+    for c in singles:
+        if c.variable in prismatic:
+            rule = "linear" if len(c.form) == 2 else "quadratic"
+            # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
+            rank = (1 if c.form[0].is_number else 5) if rule == "linear" else 4
+            options.append(((kind_rank(c), rank, length(c.form)), rule, [c]))
+        else:
+            options.append(((kind_rank(c), 4, length(c.form)), "one", [c]))
+    by_source: dict = {}
+    for c in singles:
+        if c.variable not in prismatic:
+            by_source.setdefault((c.angle, c.equation.source), []).append(c)
+    for group in by_source.values():
+        for first, second in combinations(group[:PAIR_CANDIDATES], 2):
+            if not _pair_works(first.form, second.form, witness):
+                continue
+            constant = all(x.is_number for x in first.form[:2] + second.form[:2])
+            rank = 0 if constant else 2 if sp.determinant_sign(first.form, second.form) else 3
+            options.append(((max(kind_rank(first), kind_rank(second)), rank,
+                             length(first.form) + length(second.form)), "pair", [first, second]))
+    if not options:
+        return None
+    _, rule, candidates = min(options, key=lambda o: o[0])
+    return rule, candidates
+
+
+def kind_rank_of(equation, order) -> int:
+    return order.index(equation.kind)
+
+
+def _says_nothing(candidate, prismatic, witness) -> bool:
+    """0 = 0 at the witness pose: the leading coefficients vanish once earlier results hold."""
+    if candidate.variable in prismatic:
+        return _vanishes(candidate.form[0], witness)
+    return _vanishes(candidate.form[0], witness) and _vanishes(candidate.form[1], witness)
+
+
+def _pair_works(first, second, witness) -> bool:
+    """A pair determines the angle: its determinant is not zero, nor are both its solutions' numerators."""
+    (a1, b1, k1), (a2, b2, k2) = first, second
+    if not witness:
+        return sp.determinant(first, second, factored=False) != 0 and sp.pair_is_defined(first, second)
+    return not _vanishes(a1 * b2 - a2 * b1, witness) and not (_vanishes(k1 * b2 - b1 * k2, witness)
+                                                              and _vanishes(a1 * k2 - a2 * k1, witness))
+
+
+def _shape(equation, remaining, prismatic):
+    """(the unknown or sum of angles it enters through, the unknown it determines), when the
+    equation holds one unknown (or one sum of angles); else None. Structure only, no algebra."""
+    expr = equation.expr
+    unknown = expr.free_symbols & set(remaining)
+    if not unknown:
+        return None
+    if unknown & prismatic:
+        return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
+    angles = {f.args[0] for f in expr.atoms(sympy.cos, sympy.sin) if f.args[0].free_symbols & unknown}
+    if len(angles) == 1:
+        (angle,) = angles
+        variable = _last(angle, unknown, remaining)
+        if variable is not None and not (expr.xreplace({sympy.cos(angle): 0, sympy.sin(angle): 0}).free_symbols
+                                         & unknown):
+            return angle, variable
+    return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
+
+
+_cache: dict = {}
+
+
+def _candidate(equation, shape, constants) -> Candidate | None:
+    """The sub-problem form of `equation` in the unknown `shape` names, or None (cached)."""
+    angle, variable = shape
+    key = (equation.expr, angle, constants)
+    if key not in _cache:
+        _cache[key] = _form(equation.expr, angle, variable, constants)
+    form = _cache[key]
+    return None if form is None else Candidate(equation, angle, form, variable)
+
+
+def _form(expr, angle, variable, constants):
+    if not isinstance(angle, sympy.Symbol) or angle != variable:
+        psi = sympy.Dummy("psi")
+        replaced = expr.xreplace({sympy.cos(angle): sympy.cos(psi), sympy.sin(angle): sympy.sin(psi)})
+        return sp.trig_linear(replaced, psi, constants)
+    if expr.atoms(sympy.cos, sympy.sin) and any(variable in f.free_symbols
+                                                for f in expr.atoms(sympy.cos, sympy.sin)):
+        return sp.trig_linear(expr, variable, constants)
+    form = sp.polynomial(expr, variable)
+    return tuple(form) if form is not None and form[0] != 0 else None
+
+
+def _last(angle, unknown, remaining):
+    """The unknown of a sum of angles that the sum determines: the last one, with coefficient ±1."""
+    for variable in reversed(remaining):
+        if variable in unknown and angle.coeff(variable) in (1, -1):
+            rest = sympy.expand(angle - angle.coeff(variable) * variable)
+            if not rest.free_symbols & {variable}:
+                return variable
+    return None
+
+
+def _degenerate_pair(det, shown) -> str:
+    """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
+    (the wrist's s5), the axes on either side of joint k line up: a one-parameter family."""
+    bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(det) if not f.is_number}
+    if len(bases) == 1:
+        (base,) = bases
+        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
+            return (f"{base} = 0: {shown} is not determined on its own: the axes on either side of "
+                    f"{base.args[0]} line up, and only the sum (or difference) of the angles about them is "
+                    "determined, a one-parameter family (evaluate gives one member)")
+    return f"{_unsigned(det)} = 0: {shown} is not determined by these equations"
+
+
+def _unsigned(expr):
+    return -expr if expr.could_extract_minus_sign() else expr
+
+
+def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
+    """A long right-hand side gets a name, as a book names D and K; short ones stay as they are."""
+    if value.is_Symbol or value.is_number or length(value) <= 2:
+        return value
+    taken = {str(name) for name, _ in derivation.assignments}
+    name = next(n for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)] if n not in taken)
+    symbol = sympy.Symbol(name, real=True)
+    derivation.assignments.append((symbol, value))
+    return symbol
+
+
+def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
+    """The value of the candidates' unknown (or sum), with its steps, conditions and sign symbol."""
+    first = candidates[0]
+    angle, variable = first.angle, first.variable
+    shown = angle if angle != variable else variable
+    if rule == "pair":
+        for index, c in enumerate(candidates, start=1):
+            a, b, k = c.form
+            derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), k,
+                                         "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
+                                         (variable,), f"{c.equation.where} (equation {index} of 2)"))
+        det = sp.determinant(candidates[0].form, candidates[1].form)
+        if length(det) < 60:  # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
+            shorter = sympy.factor(sympy.trigsimp(det))
+            if not any(f.args[0].as_coeff_Mul()[0] not in (1, -1) for f in shorter.atoms(sympy.sin, sympy.cos)):
+                det = min([det, shorter], key=length)
+        if not det.is_number:
+            derivation.vanishing.append((det, len(derivation.degenerate)))
+            derivation.degenerate.append(_degenerate_pair(det, shown))
+        return sp.pair(candidates[0].form, candidates[1].form)
+    sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
+    if rule == "linear":
+        a, b = first.form
+        derivation.steps.append(Step(a * variable, -b, "prismatic joint from a coordinate", (variable,),
+                                     first.equation.where))
+        if not a.is_number:
+            derivation.degenerate.append(f"{a} = 0: {variable} is not determined by this equation")
+        return sp.prismatic(first.form, sigma)
+    if rule == "quadratic":
+        a, b, c = first.form
+        derivation.steps.append(Step(a * variable ** 2 + b * variable, -c, "prismatic joint from a distance",
+                                     (variable,), first.equation.where))
+        derivation.signs.append((sigma, variable, "prismatic"))
+        root = b ** 2 - 4 * a * c if b != 0 else -c / a
+        derivation.conditions.append(f"{sympy.factor_terms(root)} >= 0")
+        return sp.prismatic(first.form, sigma)
+    a, b, c = first.form
+    law = (b == 0 or a == 0)
+    shape = "A"
+    if not law and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
+        a, b, c, shape = min(_variants(a, b, c, sigma), key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
+    c = _named(derivation, "D" if law else "K", c)
+    derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), c,
+                                 "law of cosines" if law else "a cos θ + b sin θ = c", (variable,),
+                                 first.equation.where))
+    derivation.signs.append((sigma, variable, "law" if law else "one"))
+    root = sp.existence(a, b, c)
+    if root is not None:
+        derivation.conditions.append(f"{root} >= 0 (else {shown} has no real value: the target is out of reach; "
+                                     "where it is 0 the two roots meet)")
+    if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
+        derivation.degenerate.append(f"{_unsigned(a)} = 0 and {_unsigned(b)} = 0: {shown} is not determined "
+                                     "by this equation")
+    return sp.one_equation(a, b, c, sigma, shape)
+
+
+def _variants(a, b, c, sigma):
+    """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
+    atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
+    placeholder = sympy.Dummy("c")
+    for sign in (1, -1):
+        sa, sb, sc = (x if sign == 1 else sympy.factor_terms(sympy.together(sympy.expand(-x))) for x in (a, b, c))
+        for shape in ("A", "B"):
+            yield sa, sb, sc, shape, sp.one_equation(sa, sb, placeholder, sigma, shape)
