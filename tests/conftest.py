@@ -18,7 +18,7 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.ge
 # a fresh pip install, fuzzing, property tests and dhsym run as a process. `make test` runs everything.
 # The CLI files run dhsym as a process per case; the property files draw many random chains.
 SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_fuzz.py", "test_cli.py", "test_velocity_cli.py",
-              "test_readme.py", "test_velocity_properties.py")
+              "test_readme.py", "test_velocity_properties.py", "test_urdf_real.py", "test_inverse_random.py")
 SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_through_subprocess",
               "test_commands_without_pictures_import_no_numpy", "test_transform_times_its_inverse_is_identity",
               "test_every_frame_matches_the_raw_product_numerically",
