@@ -1,0 +1,202 @@
+"""Inverse-kinematics solutions for people and programs: the textbook text form (c1, s23,
+atan2(y, x), a `where` list of the intermediate quantities, every branch by name) and the JSON
+contract (full cos/sin/atan2 with the robot file's names, readable by sympy.sympify).
+
+The target's elements print as a book names them: r11 … r33, px, py, pz (LaTeX r_{11}, p_{x});
+a quotient prints with its denominator bracketed, (px² + py² − a1² − a2²)/(2 a1 a2), and a sum
+starts with the target's terms, positive ones first.
+
+>>> import sympy, dhsym
+>>> arm = dhsym.load("planar2r")
+>>> px, py, a1, a2 = sympy.symbols("px py a_1 a_2", real=True)
+>>> printer = IKTextPrinter(chain_settings(arm))
+>>> printer.doprint((px**2 + py**2 - a1**2 - a2**2) / (2 * a1 * a2))
+'(px² + py² − a1² − a2²)/(2 a1 a2)'
+>>> IKLatexPrinter(chain_settings(arm)).doprint(sympy.atan2(py, px) - sympy.acos(px / a1))
+'\\\\operatorname{atan2}(p_{y}, p_{x}) - \\\\arccos(\\\\frac{p_{x}}{a_{1}})'
+"""
+from __future__ import annotations
+
+import sympy
+
+from ..inverse.solution import TARGET_NAMES
+from . import render
+from .notation import GREEK_NAMES, display_name
+from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
+
+TARGET_LATEX = {name: (f"{name[0]}_{{{name[1:]}}}") for name in TARGET_NAMES}  # r_{11}, p_{x}
+_TARGET = frozenset(TARGET_NAMES)
+
+
+class _InverseNotation:
+    """What the IK printers add to the textbook printers: sums start with the target's terms,
+    and atan2, acos, asin print as a book writes them."""
+
+    def _setup(self):
+        super()._setup()
+        joint_key = self.notation.term_key
+        # an instance attribute: the printers ask the notation for the order of terms
+        self.notation.term_key = lambda term: (not _has_target(term), term.could_extract_minus_sign(),
+                                               joint_key(term))
+
+    def _print_Symbol(self, expr):
+        if expr.name in _TARGET:
+            return TARGET_LATEX[expr.name] if self.style == "latex" else expr.name
+        return super()._print_Symbol(expr)
+
+    def _arguments(self, expr) -> str:
+        return ", ".join(self._print(argument) for argument in expr.args)
+
+
+def _has_target(term) -> bool:
+    return any(symbol.name in _TARGET for symbol in term.free_symbols)
+
+
+class IKTextPrinter(_InverseNotation, TextPrinter):
+    """Text: atan2(py, px), acos(D), √(1 − D²)."""
+
+    def _print_atan2(self, expr):
+        return f"atan2({self._arguments(expr)})"
+
+    def _print_acos(self, expr):
+        return f"acos({self._arguments(expr)})"
+
+    def _print_asin(self, expr):
+        return f"asin({self._arguments(expr)})"
+
+    def _fraction(self, top, bottom, grouped):
+        spaced = " " in bottom and not (bottom.startswith("(") and _one_group(bottom))
+        return super()._fraction(top, f"({bottom})" if spaced else bottom, grouped)
+
+
+class IKLatexPrinter(_InverseNotation, LatexPrinter):
+    r"""LaTeX: \operatorname{atan2}(y, x), \arccos, \arcsin, p_{x}."""
+
+    def _print_atan2(self, expr):
+        return f"\\operatorname{{atan2}}({self._arguments(expr)})"
+
+    def _print_acos(self, expr, exp=None):
+        return f"\\arccos({self._arguments(expr)})"
+
+    def _print_asin(self, expr, exp=None):
+        return f"\\arcsin({self._arguments(expr)})"
+
+    def _fraction(self, top, bottom, grouped):
+        if top.startswith("(") and _one_group(top):  # \frac{a + b}{c}, not \frac{(a + b)}{c}
+            top = top[1:-1]
+        return super()._fraction(top, bottom, grouped)
+
+
+def _one_group(text: str) -> bool:
+    """Whether `text` is one bracketed group, (…), whose opening bracket closes at its end."""
+    depth = 0
+    for position, ch in enumerate(text):
+        depth += ch in "([{"
+        depth -= ch in ")]}"
+        if depth == 0 and position < len(text) - 1:
+            return False
+    return depth == 0
+
+
+def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
+    return IKTextPrinter(chain_settings(chain), ascii=ascii)
+
+
+def latex_printer(chain) -> IKLatexPrinter:
+    return IKLatexPrinter(chain_settings(chain))
+
+
+def target_title(chain, style: str = "unicode") -> str:
+    """⁰T₆: the transform `dhsym fk` prints by default, from base (else 0) to tool (else n)."""
+    return render.transform_title(chain.frame_number(chain.first_frame), chain.frame_number(chain.last_frame), style)
+
+
+def variable_list(symbols, printer) -> str:
+    """θ1, θ2 in the printer's style."""
+    return ", ".join(printer.doprint(symbol) for symbol in symbols)
+
+
+def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
+    """The whole solution as text that fits `width`: title, target, method, definitions, each
+    branch, when branches exist, the degenerate poses, and the legend of c/s abbreviations."""
+    chain = solution.chain
+    printer = text_printer(chain, ascii)
+    style = "ascii" if ascii else "unicode"
+    blocks = [render.wrap(f"{chain.name}: inverse kinematics  ({chain.convention} DH)", width, "  ")]
+    target = [[*row] for row in render.ELEMENT_NAMES] + [["0", "0", "0", "1"]]
+    blocks.append(render.wrap(f"Target {target_title(chain, style)}, the pose to reach (what `dhsym fk` prints):",
+                              width, "  ") + "\n" + render.aligned_matrix(target, ascii))
+    about = [f"Method: {solution.method}."]
+    if solution.free:
+        about.append(f"Free (parameters): {variable_list(solution.free, printer)}.")
+    count = len(solution.branches)
+    about.append(f"{count} branch{'es' if count != 1 else ''}.")
+    blocks.append(render.wrap(" ".join(about), width, "  "))
+    if solution.definitions:
+        blocks.append("where\n" + assignments_text(solution.definitions, printer, width))
+    for number, branch in enumerate(solution.branches, 1):
+        heading = render.wrap(f"Branch {number}: {branch.name}", width, "  ")
+        blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
+    for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
+        if lines:
+            blocks.append(f"{title}:\n" + "\n".join(render.wrap(line, width - 2, "    ") for line in
+                                                    (f"  {text}" for text in lines)))
+    legend = render.text_legend(printer, width)
+    text = "\n\n".join(blocks + ([legend] if legend else []))
+    return ascii_text(text) if ascii else text
+
+
+_ASCII = {"−": "-", "–": "-", "≥": ">=", "≤": "<=", "≠": "!=", "·": "*", "×": "x", "√": "sqrt", "±": "+-",
+          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0"}
+
+
+def ascii_text(text: str) -> str:
+    """Text for --ascii: the solver's sentences may hold Greek letters, squares and signs.
+
+    >>> ascii_text("s5 = 0: only θ4 + θ6 is determined; D² ≤ 1")
+    's5 = 0: only theta4 + theta6 is determined; D^2 <= 1'
+    """
+    out = []
+    for ch in text:
+        if ch.isascii():
+            out.append(ch)
+        else:
+            out.append(_ASCII.get(ch) or GREEK_NAMES.get(ch) or "?")
+    return "".join(out)
+
+
+def assignments_text(assignments, printer, width: int) -> str:
+    """`  θ1 = …` one to a line, a long one broken before a + or − to fit `width`."""
+    names = [printer.doprint(name) for name, _ in assignments]
+    label = max(map(render.display_width, names))
+    lines = []
+    for name, (_, value) in zip(names, assignments, strict=True):
+        prefix = "  " + name + " " * (label - render.display_width(name)) + " = "
+        lines.append(render.break_element(prefix, printer.doprint(value), width))
+    return "\n".join(lines)
+
+
+def json_solution(solution) -> dict:
+    """The JSON contract: full forms with the robot file's names and decimals as written;
+    `sympy.sympify` reads every expression back."""
+    chain = solution.chain
+    exact = ExactPrinter(chain_settings(chain))
+    pairs = lambda items: [[name.name, exact.doprint(value)] for name, value in items]  # noqa: E731
+    return {
+        "robot": chain.name,
+        "convention": chain.convention,
+        "joint_variables": [symbol.name for symbol in solution.joint_variables],
+        "free": [symbol.name for symbol in solution.free],
+        "method": solution.method,
+        "target": list(TARGET_NAMES),
+        "definitions": pairs(solution.definitions),
+        "solutions": [{"name": branch.name, "assignments": pairs(branch.assignments)}
+                      for branch in solution.branches],
+        "conditions": list(solution.conditions),
+        "degenerate": list(solution.degenerate),
+    }
+
+
+def latex_name(symbol: sympy.Symbol) -> str:
+    """A name as the LaTeX printers write it: x_{c}, \\theta_{1}, p_{x}."""
+    return TARGET_LATEX.get(symbol.name) or display_name(symbol.name, "latex")
