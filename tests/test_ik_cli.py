@@ -144,3 +144,27 @@ def test_documents_with_the_derivation_compile_and_fit(by_hand, capsys, tmp_path
     assert status == 0 and "Branch 2: elbow up" in out
     text = HOST.format(out) if kind in ("snippet", "ik") else out
     assert _pdflatex(tmp_path, kind, text) == (0, [])
+
+
+def test_plot_draws_every_branch_at_the_pose_side_by_side(by_hand):
+    from matplotlib.figure import Figure
+
+    from dhsym.plot.branches import draw_branches
+
+    figure = draw_branches(load("planar2r"), target={"px": 0.6, "py": 0.3}, figure=Figure())
+    titles = [ax.get_title() for ax in figure.axes]
+    assert [t.splitlines()[0] for t in titles] == ["1. elbow down", "2. elbow up"]
+    assert titles[0].splitlines()[1] == "−10°, 84°" and figure.get_suptitle().endswith("2 of 2 branches reach the pose")
+    far = draw_branches(load("planar2r"), target={"px": 2}, figure=Figure())
+    assert all("does not reach this pose" in ax.get_title() for ax in far.axes)
+
+
+def test_plot_command_writes_the_picture_and_refuses_a_wrong_element(by_hand, capsys, tmp_path):
+    path = tmp_path / "branches.png"
+    status, out, err = dhsym_cli(capsys, "plot", "planar2r", "--ik", "px=0.6, py=0.3", "-o", str(path))
+    assert (status, out.strip(), err) == (0, str(path), "") and path.read_bytes().startswith(b"\x89PNG")
+    status, out, err = dhsym_cli(capsys, "plot", "planar2r", "--ik", "qx=1", "-o", str(tmp_path / "no.png"))
+    assert status == 2 and err.count("\n") == 1 and "--ik 'qx=1': expected ELEMENT=NUMBER" in err
+    assert not (tmp_path / "no.png").exists()
+    status, _, err = dhsym_cli(capsys, "plot", "planar2r", "--free", "theta_1")
+    assert status == 2 and "add --ik" in err
