@@ -19,12 +19,16 @@ OVERFULL_TOLERANCE_PT = 1.0
 HOST = "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n{}\\end{{document}}\n"
 
 
+BY_HAND = {"planar2r": ik_examples.planar2r, "puma560": ik_examples.puma560}
+
+
 @pytest.fixture
 def by_hand(monkeypatch):
-    """`solve` answers with the hand-written planar 2R solution."""
+    """`solve` answers with the solutions written by hand (planar 2R, Craig's PUMA 560)."""
     def solve(chain, free=()):
-        assert chain.name == load("planar2r").name and not free
-        return ik_examples.planar2r()
+        name = next(key for key in BY_HAND if load(key).name == chain.name)
+        assert not free
+        return BY_HAND[name]()
 
     monkeypatch.setattr(dhsym.inverse, "solve", solve, raising=False)
 
@@ -45,6 +49,33 @@ def test_text_is_the_textbook_form_and_fits_the_width(by_hand, capsys):
     assert "θ1 = atan2(py, px) − atan2(a2 s2, a1 + a2 c2)" in words
     assert "where c2 = cos θ2, s2 = sin θ2" in words
     assert "⎡ r11   r12   r13   px ⎤" in out
+
+
+@pytest.mark.parametrize("width", [40, 60, 100])
+def test_puma_text_fits_every_width_and_names_its_eight_branches(by_hand, capsys, width):
+    status, out, _ = dhsym_cli(capsys, "ik", "puma560", "--width", str(width))
+    assert status == 0 and max(map(display_width, out.splitlines())) <= width
+    words = " ".join(out.split())
+    assert "K = (px² + py² + pz² − a2² − a3² − d3² − d4²)/(2 a2)" in words
+    assert "Branch 8: shoulder right, elbow down, wrist flipped" in words
+    assert "θ1 = atan2(py, px) − atan2(d3, −√(px² + py² − d3²))" in words
+    assert "s23 = sin(θ2 + θ3)" in words
+
+
+def test_puma_json_and_module_reach_random_poses_with_all_eight_branches(by_hand, capsys, tmp_path):
+    chain = load("puma560")
+    _, out, _ = dhsym_cli(capsys, "ik", "puma560", "--format", "json")
+    data = ik_checks.check_json(out, chain)
+    assert len(data["solutions"]) == 8 and data["definitions"][0][0] == "K"
+    _, out, _ = dhsym_cli(capsys, "ik", "puma560", "--format", "python")
+    (tmp_path / "puma_ik.py").write_text(out)
+    module = ik_checks.import_module(tmp_path / "puma_ik.py")
+    assert "def ik(T, *, a_2=0.4318, a_3=0.0203, d_3=0.1245, d_4=0.4318):" in out
+    joints = ik_checks.random_joints(chain, np.random.default_rng(560), 20)
+    ik_checks.check_branches_reach(module.ik, chain, ik_checks.sample_constants(chain), joints)
+    poses = np.array([np.array(ik_checks.numeric_fk(chain, ik_checks.sample_constants(chain))(*q), dtype=float)
+                      for q in joints])
+    assert module.ik(poses).shape == (20, 8, 6) and np.isfinite(module.ik(poses)).all()
 
 
 def test_ascii_text_has_no_unicode(by_hand, capsys):
@@ -137,11 +168,11 @@ def _pdflatex(folder, job: str, text: str):
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
 @pytest.mark.parametrize("kind", ["slides", "article", "snippet", "ik"])
-def test_documents_with_the_derivation_compile_and_fit(by_hand, capsys, tmp_path, kind):
-    argv = ["ik", "planar2r", "--format", "latex"] if kind == "ik" else ["latex", "planar2r", "--ik", "--document",
-                                                                       kind]
+@pytest.mark.parametrize("robot", BY_HAND)
+def test_documents_with_the_derivation_compile_and_fit(by_hand, capsys, tmp_path, kind, robot):
+    argv = ["ik", robot, "--format", "latex"] if kind == "ik" else ["latex", robot, "--ik", "--document", kind]
     status, out, _ = dhsym_cli(capsys, *argv)
-    assert status == 0 and "Branch 2: elbow up" in out
+    assert status == 0 and "Branch 2: " in out
     text = HOST.format(out) if kind in ("snippet", "ik") else out
     assert _pdflatex(tmp_path, kind, text) == (0, [])
 

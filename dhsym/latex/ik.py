@@ -41,7 +41,7 @@ from .layout import (
     stacked,
 )
 from .legend import legend_items
-from .prose import tex_text
+from .prose import tex_prose, tex_text
 from .sections import Section
 
 PART = "Inverse kinematics"
@@ -117,7 +117,8 @@ def _equation_rows(lhs, rhs, printer, page: Page) -> list[tuple[str, float]]:
 
 
 def prose(text: str) -> str:
-    """A solver's sentence as LaTeX text; squares and roots, which a text font lacks, as math.
+    """A solver's sentence as LaTeX text (identifiers and transforms such as 1T6 set as math, see
+    `tex_prose`); squares and roots, which a text font lacks, as math.
 
     >>> prose("D² ≤ 1")
     'D$^{2}$ $\\\\leq$ 1'
@@ -128,7 +129,7 @@ def prose(text: str) -> str:
             pieces += [_MATH_CHARACTERS[character], ""]
         else:
             pieces[-1] += character
-    return "".join(piece if position % 2 else tex_text(piece) for position, piece in enumerate(pieces))
+    return "".join(piece if position % 2 else tex_prose(piece) for position, piece in enumerate(pieces))
 
 
 def snippet(solution) -> str:
