@@ -1,0 +1,129 @@
+"""The equations of inverse kinematics, as a course writes them: the target moved to frame i by
+the inverse of the first links, set equal to the chain from frame i on (Paul's method,
+``(⁰T_i)⁻¹ T = ⁱT_n``), element by element, and the squared distances that no rotation changes.
+
+Every matrix is the chain's contracted transform, so the equations are as short as the
+forward kinematics. A squared length is worked out step by step instead of by simplifying a
+sum of squares: a rotation keeps it, a translation t along an axis adds 2 t·(that coordinate
+of what follows) + t².
+
+>>> import dhsym
+>>> arm = dhsym.load("planar2r")
+>>> squared_length(arm.steps(0, 2), arm.joint_variables)
+a_1**2 + 2*a_1*a_2*cos(theta_2) + a_2**2
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy
+
+from ..core.simplify import collect_by_trig, contract
+
+ZERO = sympy.Matrix([0, 0, 0])
+
+
+@dataclass(frozen=True)
+class Equation:
+    """`lhs` = `rhs`: lhs from the target (moved to a frame by known or unknown first joints),
+    rhs from the chain; `kind` "position" (a point) or "orientation" (a rotation element);
+    `where` names the matrix element it comes from, for the derivation."""
+
+    lhs: sympy.Expr
+    rhs: sympy.Expr
+    kind: str
+    where: str
+    source: str = ""  # the matrix equation it is an element of: pairs are taken within one
+
+    @property
+    def expr(self) -> sympy.Expr:
+        return self.lhs - self.rhs
+
+
+def squared_length(steps, variables, point=ZERO, point_length=0) -> sympy.Expr:
+    """‖S₁⋯S_m · point‖², given ‖point‖² (`point_length`), without simplifying a sum of squares."""
+    variables = frozenset(variables)
+    total = sympy.sympify(point_length)
+    for k, step in enumerate(steps):
+        if step.is_rotation or step.value == 0:
+            continue
+        after = contract(steps[k + 1:], variables)
+        coordinate = (after[:3, :3] * point + after[:3, 3])[step.axis]
+        total += 2 * step.value * coordinate + step.value ** 2
+    return collect_by_trig(sympy.expand(total), variables)
+
+
+def moved(chain, frame, point: sympy.Matrix, point_length) -> tuple[sympy.Matrix, sympy.Expr]:
+    """The point (in the first frame) seen from `frame`, and its squared distance from that frame's origin."""
+    variables = chain.joint_variables
+    inverse = chain.transform(frame, chain.first_frame)
+    seen = inverse[:3, :3] * point + inverse[:3, 3]
+    return seen.applyfunc(lambda e: collect_by_trig(sympy.expand(e), frozenset(variables))), \
+        squared_length(chain.steps(frame, chain.first_frame), variables, point, point_length)
+
+
+def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matrix, holder) -> list[Equation]:
+    """A point known in the first frame (`point`) that sits at `local` in frame `holder`: its
+    three coordinates and squared distance, seen from each frame up to `holder`."""
+    frames = chain.frames
+    variables = chain.joint_variables
+    equations = []
+    local_length = sympy.expand(sum(x ** 2 for x in local))
+    for frame in frames[:frames.index(holder) + 1]:
+        seen, seen_length = moved(chain, frame, point, point_length)
+        chain_side = chain.transform(frame, holder)
+        there = chain_side[:3, :3] * local + chain_side[:3, 3]
+        there = there.applyfunc(lambda e: collect_by_trig(sympy.expand(e), frozenset(variables)))
+        there_length = squared_length(chain.steps(frame, holder), variables, local, local_length)
+        name = _frame_name(chain, frame)
+        for axis in range(3):
+            equations.append(Equation(seen[axis], there[axis], "position",
+                                      f"{'xyz'[axis]} of the point in frame {name}", f"point in {name}"))
+        equations.append(Equation(seen_length, there_length, "position",
+                                  f"squared distance of the point from the origin of frame {name}"))
+    return equations
+
+
+def transform_equations(chain, target: sympy.Matrix, position: bool, start=None) -> list[Equation]:
+    """(ⁱT_first) T (ʲT_last)⁻¹ = ⁱT_j for every pair of frames i ≤ j (i from `start` on): the
+    rotation elements, and with `position` the position elements and the squared distance."""
+    frames, first, last = chain.frames, chain.first_frame, chain.last_frame
+    if start is not None:
+        frames = frames[frames.index(start):]
+    variables = frozenset(chain.joint_variables)
+    tidy = lambda e: collect_by_trig(sympy.expand(e), variables)  # noqa: E731
+    equations = []
+    for a, i in enumerate(frames):
+        before = chain.transform(i, first) * target
+        for j in frames[a + 1:]:
+            after = chain.transform(last, j)
+            seen = before * after
+            chain_side = chain.transform(i, j)
+            where = f"{_frame_name(chain, i)}T{_frame_name(chain, j)}"
+            for r in range(3):
+                for c in range(4 if position else 3):
+                    equations.append(Equation(tidy(seen[r, c]), chain_side[r, c], _kind(c, j == last),
+                                              f"element ({r + 1}, {c + 1}) of {where}", where))
+            if position:
+                tip = after[:3, 3]
+                # ‖T·b‖² = ‖b‖² + 2 p·(R b) + ‖p‖² for the unit-orthogonal R of the target
+                rotated = target[:3, :3] * tip
+                inner = (squared_length(chain.steps(last, j), variables)
+                         + sympy.expand(2 * sum(target[k, 3] * rotated[k] for k in range(3))
+                                        + sum(target[k, 3] ** 2 for k in range(3))))
+                point = rotated + target[:3, 3]
+                seen_length = squared_length(chain.steps(i, first), variables, point, inner)
+                there_length = squared_length(chain.steps(i, j), variables)
+                equations.append(Equation(seen_length, there_length, _kind(3, j == last), f"squared length of {where}",
+                                          where))
+    return equations
+
+
+def _kind(column: int, to_last: bool) -> str:
+    """"position" for the tip's position, "orientation" for a rotation element, "mixed" for the
+    position of an inner frame, which the target's rotation and position give together."""
+    return "orientation" if column < 3 else "position" if to_last else "mixed"
+
+
+def _frame_name(chain, frame) -> str:
+    return str(chain.frame_number(frame))

@@ -1,0 +1,264 @@
+"""The search a student does by hand: among the equations, find one in a single unknown (or a
+pair) that is a known sub-problem, solve it, and go on with that unknown known.
+
+Each round takes the best of what is solvable, in this order: an atan2 pair whose determinant is
+a non-zero number (unique, never degenerate); a prismatic joint from a linear equation; an atan2
+pair whose determinant can vanish (unique, degenerate where it does); one equation with two
+roots (``a cos θ + b sin θ = c``, the law of cosines, a prismatic joint from a distance). Among
+equals the shortest wins. An angle that enters only through a sum of parallel-axis angles
+(``θ1 + θ2 + θ3``) is solved as that sum first.
+
+The number of rounds is the number of unknowns, and each looks at a fixed pool of equations: the
+work is bounded before it starts. Two roots are told apart by a sign symbol σ = ±1; one
+derivation serves every branch.
+
+>>> import sympy
+>>> x, t = sympy.symbols("x theta_1", real=True)
+>>> from dhsym.inverse.equations import Equation
+>>> found = scan([Equation(x, sympy.cos(t), "position", "x")], [t], set())
+>>> found.assignments
+[(theta_1, atan2(sigma_1*sqrt(1 - x**2), x))]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from itertools import combinations
+
+import sympy
+
+from ..core.size import length
+from ..errors import UserError
+from . import subproblems as sp
+from .solution import Step
+
+WITNESS_ZERO = 1e-8
+PAIR_CANDIDATES = 4  # the shortest equations per unknown that are tried in pairs
+
+
+@dataclass
+class Derivation:
+    """What the search found: assignments in order (with sign symbols σ for two roots), the
+    sign symbols with the joint they choose for, the steps, existence conditions, degenerate cases."""
+
+    assignments: list = field(default_factory=list)
+    signs: list = field(default_factory=list)  # (σ, joint variable, sub-problem)
+    steps: list = field(default_factory=list)
+    conditions: list = field(default_factory=list)
+    degenerate: list = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Candidate:
+    equation: object
+    angle: sympy.Expr  # the unknown or the sum of angles it enters through
+    form: tuple  # (a, b, c) for an angle, polynomial coefficients for a slide
+    variable: sympy.Symbol  # the unknown it determines
+
+
+def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, prefer=("position",),
+         constants=frozenset(), witness: dict | None = None) -> Derivation:
+    """Solve `equations` for `unknowns` (in the order a textbook numbers them); `prismatic` is the
+    set of those that are slides; `constants` the robot's lengths (never zero). `witness` gives
+    numbers for every name at one generic pose: an equation whose coefficients vanish there says
+    nothing (0 = 0 once earlier results hold) and is passed over. Raises UserError when no
+    sub-problem applies."""
+    derivation = derivation or Derivation()
+    witness = {} if witness is None else witness
+    pool = [e for e in equations if e.expr != 0]
+    remaining = list(unknowns)
+    pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
+    while remaining:
+        best = _best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness)
+        if best is None:
+            solved = [str(v) for v in unknowns if v not in remaining]
+            raise UserError("no closed form by the course's rules: "
+                            + (f"after {', '.join(solved)}, " if solved else "")
+                            + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
+        rule, candidates = best
+        known = len(derivation.assignments)
+        value = _apply(rule, candidates, derivation, remaining, prismatic)
+        for name, named in derivation.assignments[known:]:
+            witness[name] = _number(named, witness)
+        variable, angle = candidates[0].variable, candidates[0].angle
+        if angle == variable:
+            derivation.assignments.append((variable, value))
+        else:
+            phi = sympy.Symbol(f"phi_{len([a for a, _ in derivation.assignments if str(a).startswith('phi')]) + 1}",
+                               real=True)
+            derivation.assignments.append((phi, value))
+            witness[phi] = _number(angle, witness)
+            coefficient = angle.coeff(variable)
+            expression = sympy.expand((phi - (angle - coefficient * variable)) / coefficient)
+            pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
+                    for e in pool]
+            pending.append((variable, expression))
+        remaining.remove(variable)
+        ready = True
+        while ready:  # a joint written through a sum is assigned once what it is written with is known
+            waiting = set(remaining) | {v for v, _ in pending}
+            ready = [item for item in pending if not item[1].free_symbols & waiting]
+            for item in ready[:1]:
+                derivation.assignments.append(item)
+                pending.remove(item)
+    return derivation
+
+
+def _number(expr, witness: dict) -> float | None:
+    """The value of `expr` at the witness pose, or None when it cannot be had."""
+    if not witness:
+        return None
+    try:
+        return float(sympy.sympify(expr).xreplace(witness).evalf(15))
+    except (TypeError, ValueError):
+        return None
+
+
+def _vanishes(expr, witness: dict) -> bool:
+    value = _number(expr, witness)
+    return value is not None and abs(value) < WITNESS_ZERO
+
+
+def _best(pool, remaining, prismatic, prefer, constants, witness):
+    """(rule, candidates) of the best solvable sub-problem, or None."""
+    singles = [c for e in pool for c in _candidates(e, remaining, prismatic, constants)]
+    singles = [c for c in singles if not (_vanishes(c.form[0], witness)
+                                          and (c.variable in prismatic or _vanishes(c.form[1], witness)))]
+    options = []
+    order = list(prefer) + [k for k in ("position", "orientation", "mixed") if k not in prefer]
+    kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
+    for c in singles:
+        if c.variable in prismatic:
+            rule = "linear" if len(c.form) == 2 else "quadratic"
+            rank = 1 if rule == "linear" else 3
+            options.append(((kind_rank(c), rank, length(c.form)), rule, [c]))
+        else:
+            options.append(((kind_rank(c), 3, length(c.form)), "one", [c]))
+    by_angle: dict = {}
+    for c in singles:
+        if c.variable not in prismatic:
+            by_angle.setdefault((c.angle, c.equation.source), []).append(c)
+    for group in by_angle.values():
+        group = sorted(group, key=lambda c: length(c.form))[:PAIR_CANDIDATES]
+        for first, second in combinations(group, 2):
+            det = sp.determinant(first.form, second.form, factored=False)
+            if det == 0 or _vanishes(det, witness) or not sp.pair_is_defined(first.form, second.form):
+                continue
+            rank = 0 if det.is_number else 2
+            options.append(((max(kind_rank(first), kind_rank(second)), rank,
+                             length(first.form) + length(second.form)), "pair", [first, second]))
+    if not options:
+        return None
+    _, rule, candidates = min(options, key=lambda o: o[0])
+    return rule, candidates
+
+
+_cache: dict = {}
+
+
+def _candidates(equation, remaining, prismatic, constants) -> list[Candidate]:
+    """The ways `equation` is a sub-problem in one unknown (or one sum of angles)."""
+    expr = equation.expr
+    unknown = expr.free_symbols & set(remaining)
+    if not unknown:
+        return []
+    key = (expr, frozenset(remaining), constants)
+    if key in _cache:
+        return [Candidate(equation, *rest) for rest in _cache[key]]
+    found = []
+    slides = unknown & prismatic
+    if slides:
+        if len(unknown) == 1:
+            (variable,) = unknown
+            form = sp.polynomial(expr, variable)
+            if form is not None and form[0] != 0:
+                found.append((variable, tuple(form), variable))
+    else:
+        angles = {f.args[0] for f in expr.atoms(sympy.cos, sympy.sin) if f.args[0].free_symbols & unknown}
+        if len(angles) == 1 and len(unknown) >= 1:
+            (angle,) = angles
+            psi = sympy.Dummy("psi")
+            replaced = expr.xreplace({sympy.cos(angle): sympy.cos(psi), sympy.sin(angle): sympy.sin(psi)})
+            variable = _last(angle, unknown, remaining)
+            if not replaced.free_symbols & unknown and variable is not None:
+                form = sp.trig_linear(replaced, psi, constants)
+                if form is not None:
+                    found.append((angle, form, variable))
+        elif len(unknown) == 1:
+            (variable,) = unknown
+            form = sp.trig_linear(expr, variable, constants)
+            if form is not None:
+                found.append((variable, form, variable))
+    _cache[key] = [(angle, form, variable) for angle, form, variable in found]
+    return [Candidate(equation, *rest) for rest in _cache[key]]
+
+
+def _last(angle, unknown, remaining):
+    """The unknown of a sum of angles that the sum determines: the last one, with coefficient ±1."""
+    for variable in reversed(remaining):
+        if variable in unknown and angle.coeff(variable) in (1, -1):
+            rest = sympy.expand(angle - angle.coeff(variable) * variable)
+            if not rest.free_symbols & {variable}:
+                return variable
+    return None
+
+
+def _unsigned(expr):
+    return -expr if expr.could_extract_minus_sign() else expr
+
+
+def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
+    """A long right-hand side gets a name, as a book names D and K; short ones stay as they are."""
+    if value.is_Symbol or value.is_number or length(value) <= 2:
+        return value
+    taken = {str(name) for name, _ in derivation.assignments}
+    name = next(n for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)] if n not in taken)
+    symbol = sympy.Symbol(name, real=True)
+    derivation.assignments.append((symbol, value))
+    return symbol
+
+
+def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
+    """The value of the candidates' unknown (or sum), with its steps, conditions and sign symbol."""
+    first = candidates[0]
+    angle, variable = first.angle, first.variable
+    shown = angle if angle != variable else variable
+    if rule == "pair":
+        for index, c in enumerate(candidates, start=1):
+            a, b, k = c.form
+            derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), k,
+                                         "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
+                                         (variable,), f"{c.equation.where} (equation {index} of 2)"))
+        det = sp.determinant(candidates[0].form, candidates[1].form)
+        if not det.is_number:
+            derivation.degenerate.append(f"{_unsigned(det)} = 0: {shown} is not determined by these equations")
+        return sp.pair(candidates[0].form, candidates[1].form)
+    sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
+    if rule == "linear":
+        a, b = first.form
+        derivation.steps.append(Step(a * variable, -b, "prismatic joint from a coordinate", (variable,),
+                                     first.equation.where))
+        if not a.is_number:
+            derivation.degenerate.append(f"{a} = 0: {variable} is not determined by this equation")
+        return sp.prismatic(first.form, sigma)
+    if rule == "quadratic":
+        a, b, c = first.form
+        derivation.steps.append(Step(a * variable ** 2 + b * variable, -c, "prismatic joint from a distance",
+                                     (variable,), first.equation.where))
+        derivation.signs.append((sigma, variable, "prismatic"))
+        root = b ** 2 - 4 * a * c if b != 0 else -c / a
+        derivation.conditions.append(f"{sympy.factor_terms(root)} >= 0")
+        return sp.prismatic(first.form, sigma)
+    a, b, c = first.form
+    law = (b == 0 or a == 0)
+    c = _named(derivation, "D" if law else "K", c)
+    derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), c,
+                                 "law of cosines" if law else "a cos θ + b sin θ = c", (variable,),
+                                 first.equation.where))
+    derivation.signs.append((sigma, variable, "law" if law else "one"))
+    root = sp.existence(a, b, c)
+    if root is not None:
+        derivation.conditions.append(f"{root} >= 0")
+    if not (a.is_number or b.is_number):
+        derivation.degenerate.append(f"{_unsigned(a)} = 0 and {_unsigned(b)} = 0: {shown} is not determined "
+                                     "by this equation")
+    return sp.one_equation(a, b, c, sigma)

@@ -1,0 +1,150 @@
+"""Closed-form inverse kinematics of a chain: the method chosen from its axes, the equations
+searched for sub-problems, every branch named.
+
+>>> import dhsym
+>>> solution = solve(dhsym.load("planar2r"))
+>>> solution.method
+'position problem by sub-problems (target elements used: px, py)'
+>>> [branch.name for branch in solution.branches]
+['elbow down', 'elbow up']
+>>> solution.definitions
+((D, (-a_1**2 - a_2**2 + px**2 + py**2)/(2*a_1*a_2)),)
+>>> solution.branches[0].values()[solution.joint_variables[1]]
+atan2(sqrt(1 - D**2), D)
+"""
+from __future__ import annotations
+
+from itertools import product
+
+import sympy
+
+from ..errors import UserError
+from .branches import branch_name
+from .equations import point_equations, transform_equations
+from .scan import Derivation, scan
+from .solution import Branch, Solution, target_matrix, target_symbols
+from .structure import analyse
+from .witness import witness
+from .wrist import centre
+
+
+def solve(chain, free=()) -> Solution:
+    """The closed-form solution of `chain` for the target that `dhsym fk` prints; `free` names
+    joint variables (symbols or their names) that are given parameters instead of unknowns."""
+    free = free_variables(chain, free)
+    structure = analyse(chain, free)
+    unknowns = [chain.joint_variables[j - 1] for j in structure.unknowns]
+    prismatic = {v for v, row in zip(chain.joint_variables, chain.rows) if row.joint == "P"} & set(unknowns)
+    target, fixed = _target(chain, len(unknowns))
+    derivation = Derivation()
+    constants = frozenset(chain.symbols - set(chain.joint_variables))
+    numbers = witness(chain)
+    definitions: list = []
+    wrist_joints = []
+    if structure.wrist and len(unknowns) > 3:
+        wrist_joints = [chain.joint_variables[j - 1] for j in structure.wrist]
+        holder, local, in_last = centre(chain, structure.wrist)
+        point = target[:3, :3] * in_last + target[:3, 3]
+        if any(x != 0 for x in in_last):
+            names = sympy.symbols("x_c y_c z_c", real=True)
+            definitions += list(zip(names, point))
+            numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
+            point = sympy.Matrix(names)
+        arm = [v for v in unknowns if v not in wrist_joints]
+        scan(point_equations(chain, point, sum(x ** 2 for x in point), local, holder), arm, prismatic, derivation,
+             constants=constants, witness=numbers)
+        scan(transform_equations(chain, target, position=False, start=holder), wrist_joints, prismatic, derivation,
+             prefer=("orientation",), constants=constants, witness=numbers)
+        method = (f"kinematic decoupling: the axes of joints {_joints(structure.wrist)} meet at the wrist centre; "
+                  f"the position of the wrist centre gives {_names(arm)}, its orientation {_names(wrist_joints)}")
+    elif structure.spherical:
+        scan(transform_equations(chain, target, position=False), unknowns, prismatic, derivation,
+             prefer=("orientation",), constants=constants, witness=numbers)
+        wrist_joints = unknowns
+        method = f"a spherical wrist: the axes of joints {_joints(structure.unknowns)} meet in a point; " \
+                 "the orientation gives the Euler angles"
+    else:
+        scan(transform_equations(chain, target, position=True), unknowns, prismatic, derivation,
+             constants=constants, witness=numbers)
+        method = "the sub-problems of the equations (Hawkins's way for three parallel axes)" \
+            if structure.parallel and len(unknowns) == 6 else "position problem by sub-problems"
+    assignments = derivation.assignments
+    definitions, assignments = _shared_first(definitions, assignments, chain.joint_variables, derivation.signs)
+    conditions = list(derivation.conditions)
+    used = _used_elements(definitions, assignments)
+    if len(unknowns) < 6:
+        method += f" (target elements used: {', '.join(used)})"
+        conditions.append(f"the arm has {len(unknowns)} unknown joints: only {', '.join(used)} are used, "
+                          "and the other elements of the target must be consistent with them"
+                          + (f" (in every pose of this arm {fixed})" if fixed else ""))
+    branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)
+    return Solution(chain, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
+                    tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),
+                    tuple(derivation.steps))
+
+
+def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:
+    """The target matrix; for an arm of fewer than six joints, the elements that are the same in
+    every pose (a planar arm's r33 = 1, pz = 0) are put in as those numbers, and said."""
+    target = target_matrix()
+    if unknowns >= 6:
+        return target, ""
+    fk = chain.fk()
+    moving = set(chain.joint_variables)
+    fixed = {}
+    for r in range(3):
+        for c in range(4):
+            if not fk[r, c].free_symbols & moving:
+                fixed[target[r, c]] = fk[r, c]
+    said = ", ".join(f"{name} = {value}" for name, value in fixed.items())
+    return target.xreplace(fixed), said
+
+
+def free_variables(chain, free) -> tuple[sympy.Symbol, ...]:
+    """The joint variables named in `free` (symbols or names), checked."""
+    by_name = {str(v): v for v in chain.joint_variables}
+    result = []
+    for item in free:
+        name = str(item).strip()
+        if name not in by_name:
+            raise UserError(f"--free {name}: no joint variable of that name; "
+                            f"the joint variables are {', '.join(by_name)}")
+        result.append(by_name[name])
+    return tuple(dict.fromkeys(result))
+
+
+def _joints(numbers) -> str:
+    return ", ".join(map(str, numbers[:-1])) + " and " + str(numbers[-1])
+
+
+def _names(variables) -> str:
+    return ", ".join(map(str, variables))
+
+
+def _shared_first(definitions, assignments, joints, signs):
+    """Assignments that hold no joint variable and no sign move to the shared definitions."""
+    branchy = set(joints) | {s for s, _, _ in signs}
+    shared, rest, moved = list(definitions), [], set()
+    for name, value in assignments:
+        if name not in joints and not (value.free_symbols & (branchy | {n for n, _ in rest})):
+            shared.append((name, value))
+            moved.add(name)
+        else:
+            rest.append((name, value))
+    return shared, rest
+
+
+def _used_elements(definitions, assignments) -> list[str]:
+    symbols = set().union(*(v.free_symbols for _, v in list(definitions) + list(assignments)))
+    return [str(t) for t in target_symbols() if t in symbols]
+
+
+def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:
+    """One branch per choice of the signs, named in words."""
+    branches = []
+    for choice in product((1, -1), repeat=len(signs)):
+        values = {s: c for (s, _, _), c in zip(signs, choice)}
+        name = branch_name([(joint, rule, c) for (_, joint, rule), c in zip(signs, choice)], first_joint,
+                           wrist_joints)
+        branches.append(Branch(name, tuple((n, v.xreplace(values)) for n, v in assignments)))
+    return branches or [Branch("the only solution", tuple(assignments))]

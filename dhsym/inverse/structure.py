@@ -1,0 +1,95 @@
+"""The structure of an arm, read from its joint axes before any algebra: which joints are
+unknown, whether three consecutive axes meet in a point (a spherical wrist) or are parallel,
+and whether a closed form by the course's rules can exist at all.
+
+Pieper's condition decides a six-joint arm: three consecutive axes that meet in a point, or
+that are parallel. An arm that has neither is refused here, at once.
+
+>>> import dhsym
+>>> analyse(dhsym.load("puma560")).wrist
+(4, 5, 6)
+>>> analyse(dhsym.load("ur5")).parallel
+(2, 3, 4)
+>>> try:
+...     analyse(dhsym.load("iiwa7"))
+... except dhsym.UserError as error:
+...     print(error)
+the arm has 7 joints and a closed form needs at most 6: it is redundant; make 1 of its joint variables \
+parameters with --free (e.g. --free theta_3)
+"""
+from __future__ import annotations
+
+import math
+import random
+from dataclasses import dataclass
+
+from ..errors import UserError
+from ..velocity.geometry import axis_line, cross, dot, minus, poses, sample_values
+
+TOLERANCE = 1e-7
+TRIALS = 3
+
+
+@dataclass(frozen=True)
+class Structure:
+    """`unknowns`: the joints to solve for (1-based); `wrist`: three consecutive unknown revolute
+    joints whose axes meet in one point, at the end of the arm (else None); `parallel`: three
+    consecutive unknown revolute joints with parallel axes; `spherical`: every unknown axis
+    passes through one point (a wrist on its own: only the orientation decides it)."""
+
+    unknowns: tuple[int, ...]
+    wrist: tuple[int, int, int] | None
+    parallel: tuple[int, int, int] | None
+    spherical: bool
+
+
+def analyse(chain, free=()) -> Structure:
+    """The structure of `chain` with the joint variables in `free` made parameters."""
+    unknowns = tuple(j for j, v in enumerate(chain.joint_variables, start=1) if v not in set(free))
+    if len(unknowns) > 6:
+        extra = len(unknowns) - 6
+        example = chain.joint_variables[len(chain.joint_variables) // 2 - 1]
+        raise UserError(f"the arm has {len(unknowns)} joints and a closed form needs at most 6: it is redundant; "
+                        f"make {extra} of its joint variables parameters with --free (e.g. --free {example})")
+    if not unknowns:
+        raise UserError("every joint variable is --free: nothing is left to solve for")
+    rng = random.Random(11)
+    lines = [{j: axis_line(chain, j, pose) for j in unknowns}
+             for pose in (poses(chain, sample_values(chain, rng)) for _ in range(TRIALS))]
+    revolute = {j for j in unknowns if chain.rows[j - 1].joint == "R"}
+    triples = [unknowns[k:k + 3] for k in range(len(unknowns) - 2)]
+    meeting = [t for t in triples if set(t) <= revolute and all(_meet(config, t) for config in lines)]
+    parallel = [t for t in triples if set(t) <= revolute and all(_parallel(config, t) for config in lines)]
+    wrist = tuple(unknowns[-3:]) if tuple(unknowns[-3:]) in meeting else None
+    spherical = len(unknowns) <= 3 and set(unknowns) <= revolute and (
+        len(unknowns) < 3 and len(unknowns) > 1 and all(_meet(config, unknowns) for config in lines)
+        or tuple(unknowns) in meeting)
+    if len(unknowns) == 6 and wrist is None and not parallel:
+        where = "; the axes of joints 1, 2, 3 meet in a point, but a wrist at the start is not handled" \
+            if meeting and meeting[0] == unknowns[:3] else ""
+        raise UserError("no closed form by the course's rules: no three consecutive axes meet in a point at the "
+                        f"end of the arm or are parallel (Pieper's condition){where}")
+    return Structure(unknowns, wrist, parallel[0] if parallel else None, spherical)
+
+
+def _meet(config: dict, joints) -> bool:
+    """Whether the axes of `joints` pass through one point (the first two not parallel)."""
+    (p1, u1), (p2, u2) = config[joints[0]], config[joints[1]]
+    normal = cross(u1, u2)
+    if math.sqrt(dot(normal, normal)) < TOLERANCE:
+        return False
+    w = minus(p1, p2)
+    b, d, e = dot(u1, u2), dot(u1, w), dot(u2, w)
+    s = (b * e - d) / (1 - b * b)
+    point = [p + s * u for p, u in zip(p1, u1)]
+    return all(_distance(point, config[j]) < TOLERANCE for j in joints)
+
+
+def _parallel(config: dict, joints) -> bool:
+    first = config[joints[0]][1]
+    return all(math.sqrt(dot(c, c)) < TOLERANCE for c in (cross(first, config[j][1]) for j in joints[1:]))
+
+
+def _distance(point, line) -> float:
+    offset = cross(line[1], minus(point, line[0]))
+    return math.sqrt(dot(offset, offset))

@@ -1,0 +1,200 @@
+"""The sub-problems a course teaches, each recognised from one equation (or a pair) in one
+unknown, and its closed-form solution.
+
+An equation is an expression that must be zero. A revolute unknown θ must enter it linearly
+in cos θ and sin θ (``a cos θ + b sin θ = c``); a prismatic unknown d as a polynomial of degree
+one or two. A sign symbol σ (+1 or −1) marks the choice between two roots: one symbol per
+branching step, so one derivation serves every branch.
+
+>>> x, y, t = sympy.symbols("x y theta", real=True)
+>>> form = trig_linear(x*sympy.cos(t) + y*sympy.sin(t) - 1, t)
+>>> form
+(x, y, 1)
+>>> sigma = sympy.Symbol("sigma")
+>>> one_equation(*form, sigma)
+atan2(y, x) + atan2(sigma*sqrt(x**2 + y**2 - 1), 1)
+>>> pair((1, 0, x), (0, 1, y))
+atan2(y, x)
+"""
+from __future__ import annotations
+
+import sympy
+
+from ..core.size import length
+
+
+def expand_around(expr: sympy.Expr, variable: sympy.Symbol) -> sympy.Expr | None:
+    """cos/sin of sums that hold `variable` (with coefficient ±1) written with cos/sin of the
+    variable alone: c23 → c2 c3 − s2 s3 for θ2. None when the variable enters otherwise
+    (2θ, or outside cos/sin for an angle)."""
+    replacements = {}
+    for function in expr.atoms(sympy.cos, sympy.sin):
+        argument = function.args[0]
+        if variable not in argument.free_symbols or argument == variable:
+            continue
+        coefficient = argument.coeff(variable)
+        rest = sympy.expand(argument - coefficient * variable)
+        if coefficient not in (1, -1) or variable in rest.free_symbols:
+            return None
+        c, s = sympy.cos(variable), coefficient * sympy.sin(variable)
+        cr, sr = sympy.cos(rest), sympy.sin(rest)
+        replacements[function] = c * cr - s * sr if function.func == sympy.cos else s * cr + c * sr
+    return expr.xreplace(replacements)
+
+
+def trig_linear(expr: sympy.Expr, variable: sympy.Symbol, constants=frozenset()):
+    """(a, b, c) with expr = 0 ⇔ a cos θ + b sin θ = c, or None when the equation is not of that form.
+    A factor that a and b share is divided out when it is made of `constants` (the robot's
+    lengths, never zero); a factor that can vanish (s5) stays, so that its zero stays visible."""
+    expanded = expand_around(expr, variable)
+    if expanded is None:
+        return None
+    c_, s_ = sympy.Dummy("c"), sympy.Dummy("s")
+    plain = expanded.xreplace({sympy.cos(variable): c_, sympy.sin(variable): s_})
+    if variable in plain.free_symbols:
+        return None
+    # Only the terms that hold cos θ or sin θ are expanded: the rest is c, as written.
+    terms = sympy.Add.make_args(plain)
+    rest = sympy.Add(*[t for t in terms if not t.has(c_, s_)])
+    bearing = sympy.expand(sympy.Add(*[t for t in terms if t.has(c_, s_)]))
+    parts = sympy.collect(bearing, [c_, s_], evaluate=False)
+    if set(parts) - {c_, s_, sympy.S.One}:
+        parts = sympy.collect(sympy.expand(bearing.subs(s_ ** 2, 1 - c_ ** 2)), [c_, s_], evaluate=False)
+        if set(parts) - {c_, s_, sympy.S.One}:  # sin² = 1 − cos² did not make it linear
+            return None
+    a, b = parts.get(c_, sympy.Integer(0)), parts.get(s_, sympy.Integer(0))
+    if a.has(c_, s_) or b.has(c_, s_) or (a == 0 and b == 0):
+        return None
+    a, b = sympy.factor_terms(a), sympy.factor_terms(b)
+    c = -(rest + parts.get(sympy.S.One, sympy.Integer(0)))
+    if (b == 0 or a == 0) and _common_constant(a + b, 0, constants) in (a + b, -a - b):  # cos θ = D, sin θ = D
+        return sympy.Integer(b == 0), sympy.Integer(a == 0), _divided(c, a if b == 0 else b)
+    factor = _common_constant(a, b, constants)
+    return tuple(_divided(x, factor) for x in (a, b, c))
+
+
+def _divided(value, factor):
+    """value / factor over one denominator ((K − a2²)/(2 a2), not K/(2 a2) − a2/2)."""
+    if factor in (1, -1):
+        return factor * value
+    return sympy.factor_terms(sympy.together(sympy.expand(value / factor)))
+
+
+def _common_constant(a, b, constants) -> sympy.Expr:
+    """The factor of constants that every term of a and b shares (2 a2 of 2 a2 a3 and −2 a2 d4)."""
+    x, y = sympy.Dummy("x"), sympy.Dummy("y")
+    shared, _ = sympy.factor_terms(sympy.expand(a * x + b * y)).as_independent(x, y, as_Add=False)
+    kept = [f for f in sympy.Mul.make_args(shared)
+            if f.is_number and f != 0 or (f.free_symbols <= set(constants) and not f.atoms(sympy.Function))]
+    shared = sympy.Mul(*kept)
+    return -shared if shared.could_extract_minus_sign() else shared
+
+
+def one_equation(a, b, c, sigma) -> sympy.Expr:
+    """θ with a cos θ + b sin θ = c; the two roots differ by the sign σ of the square root.
+
+    >>> x, sigma = sympy.symbols("x sigma", real=True)
+    >>> one_equation(1, 0, x, sigma)          # cos θ = x: the law of cosines' form
+    atan2(sigma*sqrt(1 - x**2), x)
+    >>> one_equation(sympy.Symbol("y"), -x, 0, sigma)   # y cos θ − x sin θ = 0
+    atan2(sigma*y, sigma*x)
+    """
+    if c == 0:  # (cos θ, sin θ) = ±(−b, a)/√(a² + b²)
+        return sympy.atan2(sigma * a, -sigma * b)
+    if b == 0:  # trig_linear makes a = 1 here
+        return sympy.atan2(sigma * sympy.sqrt(1 - (c / a) ** 2), c / a)
+    if a == 0:
+        return sympy.atan2(c / b, sigma * sympy.sqrt(1 - (c / b) ** 2))
+    return sympy.atan2(b, a) + sympy.atan2(sigma * sympy.sqrt(a ** 2 + b ** 2 - c ** 2), c)
+
+
+def existence(a, b, c) -> sympy.Expr | None:
+    """The argument of the square root of `one_equation`, which must be ≥ 0 (None: always real)."""
+    if c == 0:
+        return None
+    if b == 0:
+        return 1 - (c / a) ** 2
+    if a == 0:
+        return 1 - (c / b) ** 2
+    return a ** 2 + b ** 2 - c ** 2
+
+
+def pair(first, second) -> sympy.Expr:
+    """θ from two equations a cos θ + b sin θ = c, solved as a linear system in (cos θ, sin θ):
+    atan2 of the pair, one root. `first` and `second` are (a, b, c).
+
+    >>> x, y, s5 = sympy.symbols("x y s_5", real=True)
+    >>> pair((-s5, 0, x), (0, s5, y))          # −s5 cos θ = x, s5 sin θ = y
+    atan2(s_5*y, -s_5*x)
+    """
+    (a1, b1, k1), (a2, b2, k2) = first, second
+    cos_part, sin_part = k1 * b2 - b1 * k2, a1 * k2 - a2 * k1
+    sign = determinant_sign(first, second)
+    if sign is None:  # atan2(s·det², c·det²) = atan2(s, c): det² > 0 wherever det ≠ 0
+        det = a1 * b2 - a2 * b1
+        return sympy.atan2(_tidy(sin_part * det), _tidy(cos_part * det))
+    return sympy.atan2(_tidy(sign * sin_part), _tidy(sign * cos_part))
+
+
+def pair_is_defined(first, second) -> bool:
+    """Whether the pair gives cos θ and sin θ that are not both identically zero."""
+    (a1, b1, k1), (a2, b2, k2) = first, second
+    return sympy.expand(k1 * b2 - b1 * k2) != 0 or sympy.expand(a1 * k2 - a2 * k1) != 0
+
+
+def determinant(first, second, factored: bool = True) -> sympy.Expr:
+    """The determinant of the pair's 2×2 system; where it is zero the angle is not determined."""
+    det = sympy.expand(first[0] * second[1] - second[0] * first[1])
+    return sympy.factor(det) if factored else det
+
+
+def determinant_sign(first, second) -> int | None:
+    """+1 or −1 when the pair's determinant keeps one sign wherever it is not zero, else None.
+    [[α, −β], [β, α]] has α² + β² ≥ 0 and [[α, β], [β, −α]] has −(α² + β²) ≤ 0."""
+    (a1, b1, _), (a2, b2, _) = first, second
+    zero = lambda e: sympy.expand(e) == 0  # noqa: E731
+    if zero(a1 - b2) and zero(b1 + a2):
+        return 1
+    if zero(a1 + b2) and zero(b1 - a2):
+        return -1
+    det = sympy.expand(a1 * b2 - a2 * b1)
+    if det.is_number:
+        return 1 if det > 0 else -1 if det < 0 else None
+    return 1 if det.is_nonnegative else -1 if det.is_nonpositive else None
+
+
+def _tidy(expr: sympy.Expr) -> sympy.Expr:
+    """The shorter of the expression and its factored form."""
+    candidates = [expr, sympy.factor_terms(expr), sympy.factor_terms(sympy.expand(expr))]
+    return min(candidates, key=length)
+
+
+def polynomial(expr: sympy.Expr, variable: sympy.Symbol):
+    """The coefficients (highest first) of a prismatic unknown's equation, degree 1 or 2, else None.
+
+    >>> d, x = sympy.symbols("d x", real=True)
+    >>> polynomial(d**2 - x, d)
+    [1, 0, -x]
+    """
+    try:
+        poly = sympy.Poly(sympy.expand(expr), variable)
+    except sympy.PolynomialError:
+        return None
+    if poly.degree() not in (1, 2) or any(variable in c.free_symbols for c in poly.all_coeffs()):
+        return None
+    return [sympy.factor_terms(c) for c in poly.all_coeffs()]
+
+
+def prismatic(coefficients, sigma) -> sympy.Expr:
+    """The root of a degree-1 or degree-2 polynomial; σ chooses between the two of a quadratic.
+
+    >>> d, x, sigma = sympy.symbols("d x sigma", real=True)
+    >>> prismatic([1, 0, -x], sigma), prismatic([2, -x], sigma)
+    (sigma*sqrt(x), x/2)
+    """
+    if len(coefficients) == 2:
+        return sympy.factor_terms(-coefficients[1] / coefficients[0])
+    a, b, c = coefficients
+    if b == 0:
+        return sigma * sympy.sqrt(sympy.factor_terms(-c / a))
+    return (-b + sigma * sympy.sqrt(b ** 2 - 4 * a * c)) / (2 * a)

@@ -1,0 +1,39 @@
+"""The wrist centre of a spherical wrist, exactly: where the first two wrist axes meet, in the
+frame of the link before the wrist, and the same point in the last frame (constant: it lies on
+the last axis), from which the target gives it as p_c = p + R·c (Spong's p − d6 R z).
+
+>>> import dhsym
+>>> centre(dhsym.load("stanford"), (4, 5, 6))
+(3, Matrix([
+[0],
+[0],
+[0]]), Matrix([
+[   0],
+[   0],
+[-d_6]]))
+"""
+from __future__ import annotations
+
+import sympy
+
+
+def axis_in(chain, joint: int, frame: int, zero: dict) -> tuple[sympy.Matrix, sympy.Matrix]:
+    """(point, unit direction) of the axis of `joint` in `frame`, with the variables in `zero` set."""
+    axis_frame = joint - 1 if chain.convention == "standard" else joint
+    m = chain.transform(frame, axis_frame).xreplace(zero)
+    return m[:3, 3], m[:3, 2]
+
+
+def centre(chain, wrist) -> tuple[int, sympy.Matrix, sympy.Matrix]:
+    """(holder frame, the centre in it, the centre in the last frame) for the wrist joints `wrist`."""
+    first = wrist[0]
+    holder = first - 1
+    zero = {chain.joint_variables[j - 1]: 0 for j in wrist}
+    (p1, u1), (p2, u2) = axis_in(chain, first, holder, zero), axis_in(chain, wrist[1], holder, zero)
+    w = p1 - p2
+    b, d, e = u1.dot(u2), u1.dot(w), u2.dot(w)
+    s = sympy.simplify((b * e - d) / (1 - b ** 2))
+    point = (p1 + s * u1).applyfunc(sympy.simplify)
+    back = chain.transform(chain.last_frame, holder).xreplace(zero)
+    in_last = (back[:3, :3] * point + back[:3, 3]).applyfunc(sympy.simplify)
+    return holder, point, in_last
