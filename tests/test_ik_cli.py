@@ -10,7 +10,7 @@ import ik_examples
 import numpy as np
 import pytest
 
-import dhsym.inverse
+import dhsym.inverse.api
 from dhsym.cli import main
 from dhsym.io.library import load
 from dhsym.printing.render import display_width
@@ -30,7 +30,7 @@ def by_hand(monkeypatch):
         assert not free
         return BY_HAND[name]()
 
-    monkeypatch.setattr(dhsym.inverse, "solve", solve, raising=False)
+    monkeypatch.setattr(dhsym.inverse.api, "solve", solve)
 
 
 def dhsym_cli(capsys, *argv):

@@ -24,6 +24,8 @@ from __future__ import annotations
 
 from ..errors import UserError
 from .codegen import module_text
+from .evaluate import evaluate
+from .solve import solve
 
 POSE_DOF = 6  # a pose fixes six numbers: a closed form has finitely many branches for at most six unknowns
 
@@ -52,10 +54,7 @@ def free_variables(chain, names, option: str = "--free") -> tuple:
 
 def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     """The solution of `chain` with the joint variables `free` kept as parameters."""
-    free = free_variables(chain, free)
-    from . import solve  # the solver, built on this package's contract
-
-    return InverseKinematics(solve(chain, free=free))
+    return InverseKinematics(solve(chain, free=free_variables(chain, free)))
 
 
 class InverseKinematics:
@@ -84,8 +83,6 @@ class InverseKinematics:
     def evaluate(self, T, **constants):
         """Every branch's joint values for the pose T (4×4) or poses (N×4×4), NaN where a branch
         does not exist; constants default to the robot file's sample values."""
-        from . import evaluate
-
         return evaluate(self.solution, T, constants or None)
 
     def code(self, command: str = "") -> str:

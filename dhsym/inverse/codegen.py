@@ -27,9 +27,11 @@ import sympy
 from sympy.printing.numpy import NumPyPrinter
 
 from ..core.numbers import decimal_text
+from .evaluate import ROUNDING
 from .solution import TARGET_NAMES
 
-_INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "poses", "result", "angles"}  # the module's own
+_INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
+             "angles"}  # the module's own names
 _ELEMENTS = {name: (row, column) for row in range(3) for column, name in
              enumerate(TARGET_NAMES[4 * row:4 * row + 4])}
 
@@ -47,6 +49,11 @@ class _NumpyCode(NumPyPrinter):
     def _print_Rational(self, expr):
         decimal = self.numbers.decimal(expr, alone=True) if self.numbers else None
         return decimal if decimal else f"{expr.p}/{expr.q}"
+
+    def _print_Pow(self, expr, rational=False):
+        if expr.exp == sympy.Rational(1, 2):  # a root of −1e-16 at the edge of the workspace is a root of 0
+            return f"root({self._print(expr.base)})"
+        return super()._print_Pow(expr, rational)
 
 
 def python_names(names) -> dict:
@@ -94,7 +101,8 @@ def module_text(solution, command: str = "") -> str:
                        *(value.free_symbols for branch in solution.branches for _, value in branch.assignments))
     elements = [name for name in TARGET_NAMES if sympy.Symbol(name, real=True) in used
                 or sympy.Symbol(name) in used]
-    revolute = tuple(k for k, row in enumerate(chain.rows) if row.joint == "R" and row.variable in joints)
+    kinds = {row.variable: row.joint for row in chain.rows}
+    revolute = tuple(k for k, joint in enumerate(joints) if kinds.get(joint) == "R")
     body = [f"    {names[name]} = poses[:, {_ELEMENTS[name][0]}, {_ELEMENTS[name][1]}]" for name in elements]
     body.append(f"    result = numpy.full((len(poses), {len(solution.branches)}, {len(joints)}), numpy.nan)")
     body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
@@ -118,7 +126,10 @@ def module_text(solution, command: str = "") -> str:
         "import numpy", "",
         f"BRANCHES = {tuple(branch.name for branch in solution.branches)!r}",
         f"JOINTS = {tuple(j.name for j in joints)!r}",
-        f"REVOLUTE = {revolute!r}  # the positions of the revolute joints in JOINTS", "", "",
+        f"REVOLUTE = {revolute!r}  # the positions of the revolute joints in JOINTS",
+        f"ROUNDING = {ROUNDING!r}  # a square root of a number this close below 0 is a root of 0", "", "",
+        "def root(x):",
+        "    return numpy.sqrt(numpy.where((x < 0) & (x > -ROUNDING), 0.0, x))", "", "",
         f"def ik(T, *, {', '.join(keywords)}):" if keywords else "def ik(T):",
         '    """Every branch\'s joint values for the pose(s) T; see the module\'s docstring."""',
         "    T = numpy.asarray(T, dtype=float)",

@@ -20,7 +20,16 @@ from __future__ import annotations
 
 import sympy
 
-from ..printing.ik import latex_name, latex_printer, target_title, variable_list
+from ..printing.ik import (
+    IDENTIFIER,
+    RELATIONS,
+    latex_name,
+    latex_printer,
+    sentence_parts,
+    solution_names,
+    target_title,
+    variable_list,
+)
 from .display import Latex
 from .layout import (
     ALIGNED_EXTRA,
@@ -48,9 +57,10 @@ PART = "Inverse kinematics"
 _MATH_CHARACTERS = {"²": "$^{2}$", "³": "$^{3}$", "√": "$\\surd$"}  # tex_text has no text form for these
 
 
-def ik_sections(solution, page: Page) -> list[Section]:
+def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Section]:
     """The problem and the method; the derivation step by step (if the solver kept its steps);
-    the intermediate quantities; one section per branch; existence and degenerate poses; the legend."""
+    the intermediate quantities; one section per branch; existence and degenerate poses; the legend.
+    `headings` (default: where pages have no frame titles) starts each section with its title."""
     chain = solution.chain
     printer = latex_printer(chain)
     names = [[element_name(r, c) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
@@ -58,7 +68,7 @@ def ik_sections(solution, page: Page) -> list[Section]:
     problem = [paragraph(f"Given the pose of the last frame, find ${variable_list(unknowns, printer)}$. "
                          f"The target is written with the names of its elements:", page),
                display(f"{target_title(chain, 'latex')} =\n{bmatrix(names)}", matrix_height(names)),
-               paragraph(f"Method: {prose(solution.method)}.", page)]
+               paragraph(f"Method: {latex_sentence(solution.method, solution_names(solution), printer)}.", page)]
     if solution.free:
         problem.append(paragraph(f"Free joint variables, kept as parameters: "
                                  f"${variable_list(solution.free, printer)}$.", page))
@@ -74,19 +84,22 @@ def ik_sections(solution, page: Page) -> list[Section]:
     for number, branch in enumerate(solution.branches, 1):
         rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in branch.assignments]
         out.append(Section(PART, f"Branch {number}: {tex_text(branch.name)}", [Rows([rows])]))
-    remarks = [paragraph(f"The branches exist when {prose(text)}.", page) for text in solution.conditions]
-    remarks += [paragraph(f"Degenerate: {prose(text)}.", page) for text in solution.degenerate]
+    names = solution_names(solution)
+    remarks = [paragraph(f"The branches exist when {latex_sentence(text, names, printer)}.", page)
+               for text in solution.conditions]
+    remarks += [paragraph(f"Degenerate: {latex_sentence(text, names, printer)}.", page)
+                for text in solution.degenerate]
     if remarks:
         out.append(Section(PART, "Existence and degenerate poses", remarks))
     out[-1].items.extend(legend_items(printer, page))
-    if page.height_pt is None:  # an article or a snippet shows no frame titles: a heading says which part
+    if page.height_pt is None if headings is None else headings:  # no frame titles: a heading says which part
         for section in out:
             section.items.insert(0, _heading(section.title, page))
     return out
 
 
 def _heading(title: str, page: Page) -> Block:
-    block = paragraph(f"\textbf{{{title}}}", page)
+    block = paragraph(f"\\textbf{{{title}}}", page)
     block.keep_with_next = True
     return block
 
@@ -116,6 +129,22 @@ def _equation_rows(lhs, rhs, printer, page: Page) -> list[tuple[str, float]]:
     return [(row, row_height([row], array=False)) for row in rows]
 
 
+def latex_sentence(text: str, names, printer) -> str:
+    """A solver's sentence as LaTeX text, its relations and the names it mentions as math."""
+    out = []
+    for part in sentence_parts(text, names):
+        if part[0] == "relation":
+            out.append(f"${printer.doprint(part[1])}{RELATIONS['latex'][part[2]]}{printer.doprint(part[3])}$")
+            continue
+        position = 0
+        for match in IDENTIFIER.finditer(part[1]):
+            if match.group(0) in part[2]:
+                out += [prose(part[1][position:match.start()]), f"${printer.doprint(part[2][match.group(0)])}$"]
+                position = match.end()
+        out.append(prose(part[1][position:]))
+    return "".join(out)
+
+
 def prose(text: str) -> str:
     """A solver's sentence as LaTeX text (identifiers and transforms such as 1T6 set as math, see
     `tex_prose`); squares and roots, which a text font lacks, as math.
@@ -135,7 +164,7 @@ def prose(text: str) -> str:
 def snippet(solution) -> str:
     """The math of `ik_sections` for a document with amsmath (`dhsym ik --format latex`)."""
     out = [f"% dhsym ik: {' '.join(solution.chain.name.split())}; needs \\usepackage{{amsmath}}"]
-    for section in ik_sections(solution, PAGES["snippet"]):
+    for section in ik_sections(solution, PAGES["snippet"], headings=False):  # the titles are comments
         out.append(f"% {' '.join(section.title.split())}")
         for item in section.items:
             block = item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")

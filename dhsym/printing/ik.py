@@ -17,9 +17,13 @@ starts with the target's terms, positive ones first.
 """
 from __future__ import annotations
 
+import re
+
 import sympy
 
+from ..errors import UserError
 from ..inverse.solution import TARGET_NAMES
+from ..io.expr import parse_expression, real_symbol
 from . import render
 from .notation import GREEK_NAMES, display_name
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
@@ -98,6 +102,67 @@ def _one_group(text: str) -> bool:
     return depth == 0
 
 
+_RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
+IDENTIFIER = re.compile(r"(?<![\w.])[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(])")
+RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
+             "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
+
+
+def sentence_parts(text: str, names) -> list:
+    """A solver's sentence ("1 - D**2 >= 0", "a_3 = 0 and d_4 = 0: theta_3 is not determined") as
+    parts to print: ("relation", lhs, operator, rhs) for each relation before the colon, read by
+    dhsym's safe parser, and ("words", text, symbols) with the `names` it mentions. A sentence
+    that does not read that way stays words.
+
+    >>> sentence_parts("1 - D**2 >= 0", ["D"])
+    [('relation', 1 - D**2, '>=', 0)]
+    """
+    math, colon, words = text.partition(": ")
+    parts = []
+    for clause in math.split(" and "):
+        match = _RELATION.match(clause.strip())
+        try:
+            sides = [parse_expression(match.group(1)), parse_expression(match.group(3))] if match else None
+        except UserError:
+            sides = None
+        if sides is None:
+            return [("words", text, _mentioned(text, names))]
+        if parts:
+            parts.append(("words", " and ", {}))
+        parts.append(("relation", sides[0], match.group(2), sides[1]))
+    if colon:
+        parts.append(("words", ": " + words, _mentioned(words, names)))
+    return parts
+
+
+def _mentioned(text: str, names) -> dict:
+    """{name: its symbol} for the chain's and the solution's names that `text` mentions."""
+    wanted = set(names)
+    return {m.group(0): real_symbol(m.group(0)) for m in IDENTIFIER.finditer(text) if m.group(0) in wanted}
+
+
+def solution_names(solution) -> list[str]:
+    """The names a solver's sentence may mention: the chain's symbols and the definitions'."""
+    return [s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
+
+
+def text_sentence(text: str, names, printer) -> str:
+    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5² = 0: θ4 is not determined'."""
+    out = []
+    for part in sentence_parts(text, names):
+        if part[0] == "relation":
+            out.append(printer.doprint(part[1]) + RELATIONS["text"][part[2]] + printer.doprint(part[3]))
+        else:
+            out.append(_names_printed(part[1], part[2], printer))
+    return "".join(out)
+
+
+def _names_printed(text: str, mentioned: dict, printer) -> str:
+    """`text` with each name in `mentioned` as the printer writes it: theta_1 -> θ1."""
+    return IDENTIFIER.sub(lambda m: printer.doprint(mentioned[m.group(0)]) if m.group(0) in mentioned
+                          else m.group(0), text)
+
+
 def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
     return IKTextPrinter(chain_settings(chain), ascii=ascii)
 
@@ -126,7 +191,8 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
     target = [[*row] for row in render.ELEMENT_NAMES] + [["0", "0", "0", "1"]]
     blocks.append(render.wrap(f"Target {target_title(chain, style)}, the pose to reach (what `dhsym fk` prints):",
                               width, "  ") + "\n" + render.aligned_matrix(target, ascii))
-    about = [f"Method: {solution.method}."]
+    names = solution_names(solution)
+    about = [f"Method: {text_sentence(solution.method, names, printer)}."]
     if solution.free:
         about.append(f"Free (parameters): {variable_list(solution.free, printer)}.")
     count = len(solution.branches)
@@ -139,8 +205,8 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
         blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
     for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
         if lines:
-            blocks.append(f"{title}:\n" + "\n".join(render.wrap(line, width - 2, "    ") for line in
-                                                    (f"  {text}" for text in lines)))
+            blocks.append(f"{title}:\n" + "\n".join(render.wrap("  " + text_sentence(line, names, printer), width,
+                                                                  "    ") for line in lines))
     legend = render.text_legend(printer, width)
     text = "\n\n".join(blocks + ([legend] if legend else []))
     return ascii_text(text) if ascii else text
