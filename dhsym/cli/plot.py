@@ -68,7 +68,7 @@ def _branches(robot, args, values, path) -> str:
     FigureCanvasAgg(figure)
     constants = parse_assignments(robot.chain, args.constants, "--set")
     draw_branches(robot.chain, values, parse_target(args.ik), constants, args.free, figure=figure,
-                  show_frames=False)
+                  show_frames=not args.no_frames)
     save(figure, path, inputs=[robot.path])
     return str(path)
 

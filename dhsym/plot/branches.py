@@ -12,6 +12,7 @@ not exist at the pose gets a panel that says so.
 from __future__ import annotations
 
 import math
+import textwrap
 
 import numpy as np
 
@@ -20,7 +21,8 @@ from ..inverse.solution import TARGET_NAMES
 from .draw import draw
 from .poses import as_number, frame_poses, is_planar
 
-PANEL_INCHES = (3.6, 3.5)  # width, height of one branch's picture
+PANEL_INCHES = (3.8, 4.0)  # width, height of one branch's picture
+TITLE_CHARACTERS = 30  # a branch's name wraps to stay over its own picture
 MAX_COLUMNS = 4
 TARGET_COLOUR = "#ff7f0e"
 
@@ -73,7 +75,7 @@ def draw_branches(chain, values=None, target=None, constants=None, free=(), figu
     drawn = []
     for k, name in enumerate(names):
         ax = figure.add_subplot(rows, columns, k + 1, **({} if planar else {"projection": "3d"}))
-        title = f"{k + 1}. {name}"
+        title = "\n".join(textwrap.wrap(f"{k + 1}. {name}", TITLE_CHARACTERS))
         if k not in existing:
             ax.set_title(title + "\n(does not reach this pose)", fontsize=9)
             ax.set_axis_off()
@@ -88,6 +90,7 @@ def draw_branches(chain, values=None, target=None, constants=None, free=(), figu
         ax.scatter(*point, marker="*", s=140, color=TARGET_COLOUR, zorder=5)
         drawn.append(ax)
     _same_limits(drawn, planar)
+    figure.subplots_adjust(hspace=0.45, wspace=0.3)
     figure.suptitle(f"{chain.name}: {len(existing)} of {len(names)} branches reach the pose", fontsize=11)
     return figure
 
@@ -104,7 +107,8 @@ def _same_limits(axes, planar: bool) -> None:
 
 def _joint_values(chain, values) -> str:
     """θ in degrees, d in the robot's length unit, on at most two lines."""
-    parts = [f"{math.degrees(v):.0f}°" if row.joint == "R" else f"{v:.3g}" for row, v in zip(chain.rows, values)]
+    parts = [f"{round(math.degrees(v))}°" if row.joint == "R" else f"{v:.3g}"  # round(): never −0°
+             for row, v in zip(chain.rows, values)]
     parts = [part.replace("-", "−") for part in parts]
     half = (len(parts) + 1) // 2 if len(parts) > 3 else len(parts)
     return ", ".join(parts[:half]) + ("\n" + ", ".join(parts[half:]) if parts[half:] else "")
