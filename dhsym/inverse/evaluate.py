@@ -7,7 +7,7 @@ with numpy (imported here only, on first use: the symbolic commands never load i
 >>> pose = numpy.eye(4); pose[:2, 3] = [0.5, 0.4]        # a_1 = 0.5, a_2 = 0.4: θ = (0, π/2)
 >>> numpy.round(evaluate(solve(arm), pose), 6)
 array([[ 0.      ,  1.570796],
-       [ 1.338973, -1.570796]])
+       [ 1.349482, -1.570796]])
 """
 from __future__ import annotations
 

@@ -26,12 +26,13 @@ from itertools import combinations
 
 import sympy
 
-from ..core.size import length
+from ..core.size import length, tree_size
 from ..errors import UserError
 from . import subproblems as sp
 from .solution import Step
 
 WITNESS_ZERO = 1e-8
+FORMS_PER_UNKNOWN = 8  # the shortest equations per unknown whose sub-problem form is worked out
 PAIR_CANDIDATES = 4  # the shortest equations per unknown that are tried in pairs
 
 
@@ -119,31 +120,46 @@ def _vanishes(expr, witness: dict) -> bool:
 
 
 def _best(pool, remaining, prismatic, prefer, constants, witness):
-    """(rule, candidates) of the best solvable sub-problem, or None."""
-    singles = [c for e in pool for c in _candidates(e, remaining, prismatic, constants)]
-    singles = [c for c in singles if not (_vanishes(c.form[0], witness)
-                                          and (c.variable in prismatic or _vanishes(c.form[1], witness)))]
-    options = []
+    """(rule, candidates) of the best solvable sub-problem, or None. Equations are sorted by
+    length within each unknown first, and only the shortest few are worked out: a bounded cost."""
     order = list(prefer) + [k for k in ("position", "orientation", "mixed") if k not in prefer]
     kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
+    groups: dict = {}
+    for equation in pool:
+        shape = _shape(equation, remaining, prismatic)
+        if shape is not None:
+            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), tree_size(equation.expr),
+                                                    len(groups.get(shape[0], [])), equation, shape))
+    singles = []
+    for group in groups.values():
+        worked = 0
+        for *_, equation, shape in sorted(group, key=lambda item: item[:3]):
+            if worked >= FORMS_PER_UNKNOWN:
+                break
+            candidate = _candidate(equation, shape, constants)
+            if candidate is None or _says_nothing(candidate, prismatic, witness):
+                continue
+            singles.append(candidate)
+            worked += 1
+    options = []
     for c in singles:
         if c.variable in prismatic:
             rule = "linear" if len(c.form) == 2 else "quadratic"
-            rank = 1 if rule == "linear" else 3
+            # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
+            rank = (1 if c.form[0].is_number else 5) if rule == "linear" else 4
             options.append(((kind_rank(c), rank, length(c.form)), rule, [c]))
         else:
-            options.append(((kind_rank(c), 3, length(c.form)), "one", [c]))
-    by_angle: dict = {}
+            options.append(((kind_rank(c), 4, length(c.form)), "one", [c]))
+    by_source: dict = {}
     for c in singles:
         if c.variable not in prismatic:
-            by_angle.setdefault((c.angle, c.equation.source), []).append(c)
-    for group in by_angle.values():
-        group = sorted(group, key=lambda c: length(c.form))[:PAIR_CANDIDATES]
-        for first, second in combinations(group, 2):
-            det = sp.determinant(first.form, second.form, factored=False)
-            if det == 0 or _vanishes(det, witness) or not sp.pair_is_defined(first.form, second.form):
+            by_source.setdefault((c.angle, c.equation.source), []).append(c)
+    for group in by_source.values():
+        for first, second in combinations(group[:PAIR_CANDIDATES], 2):
+            if not _pair_works(first.form, second.form, witness):
                 continue
-            rank = 0 if det.is_number else 2
+            constant = all(x.is_number for x in first.form[:2] + second.form[:2])
+            rank = 0 if constant else 2 if sp.determinant_sign(first.form, second.form) else 3
             options.append(((max(kind_rank(first), kind_rank(second)), rank,
                              length(first.form) + length(second.form)), "pair", [first, second]))
     if not options:
@@ -152,44 +168,68 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     return rule, candidates
 
 
-_cache: dict = {}
+def kind_rank_of(equation, order) -> int:
+    return order.index(equation.kind)
 
 
-def _candidates(equation, remaining, prismatic, constants) -> list[Candidate]:
-    """The ways `equation` is a sub-problem in one unknown (or one sum of angles)."""
+def _says_nothing(candidate, prismatic, witness) -> bool:
+    """0 = 0 at the witness pose: the leading coefficients vanish once earlier results hold."""
+    if candidate.variable in prismatic:
+        return _vanishes(candidate.form[0], witness)
+    return _vanishes(candidate.form[0], witness) and _vanishes(candidate.form[1], witness)
+
+
+def _pair_works(first, second, witness) -> bool:
+    """A pair determines the angle: its determinant is not zero, nor are both its solutions' numerators."""
+    (a1, b1, k1), (a2, b2, k2) = first, second
+    if not witness:
+        return sp.determinant(first, second, factored=False) != 0 and sp.pair_is_defined(first, second)
+    return not _vanishes(a1 * b2 - a2 * b1, witness) and not (_vanishes(k1 * b2 - b1 * k2, witness)
+                                                              and _vanishes(a1 * k2 - a2 * k1, witness))
+
+
+def _shape(equation, remaining, prismatic):
+    """(the unknown or sum of angles it enters through, the unknown it determines), when the
+    equation holds one unknown (or one sum of angles); else None. Structure only, no algebra."""
     expr = equation.expr
     unknown = expr.free_symbols & set(remaining)
     if not unknown:
-        return []
-    key = (expr, frozenset(remaining), constants)
-    if key in _cache:
-        return [Candidate(equation, *rest) for rest in _cache[key]]
-    found = []
-    slides = unknown & prismatic
-    if slides:
-        if len(unknown) == 1:
-            (variable,) = unknown
-            form = sp.polynomial(expr, variable)
-            if form is not None and form[0] != 0:
-                found.append((variable, tuple(form), variable))
-    else:
-        angles = {f.args[0] for f in expr.atoms(sympy.cos, sympy.sin) if f.args[0].free_symbols & unknown}
-        if len(angles) == 1 and len(unknown) >= 1:
-            (angle,) = angles
-            psi = sympy.Dummy("psi")
-            replaced = expr.xreplace({sympy.cos(angle): sympy.cos(psi), sympy.sin(angle): sympy.sin(psi)})
-            variable = _last(angle, unknown, remaining)
-            if not replaced.free_symbols & unknown and variable is not None:
-                form = sp.trig_linear(replaced, psi, constants)
-                if form is not None:
-                    found.append((angle, form, variable))
-        elif len(unknown) == 1:
-            (variable,) = unknown
-            form = sp.trig_linear(expr, variable, constants)
-            if form is not None:
-                found.append((variable, form, variable))
-    _cache[key] = [(angle, form, variable) for angle, form, variable in found]
-    return [Candidate(equation, *rest) for rest in _cache[key]]
+        return None
+    if unknown & prismatic:
+        return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
+    angles = {f.args[0] for f in expr.atoms(sympy.cos, sympy.sin) if f.args[0].free_symbols & unknown}
+    if len(angles) == 1:
+        (angle,) = angles
+        variable = _last(angle, unknown, remaining)
+        if variable is not None and not (expr.xreplace({sympy.cos(angle): 0, sympy.sin(angle): 0}).free_symbols
+                                         & unknown):
+            return angle, variable
+    return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
+
+
+_cache: dict = {}
+
+
+def _candidate(equation, shape, constants) -> Candidate | None:
+    """The sub-problem form of `equation` in the unknown `shape` names, or None (cached)."""
+    angle, variable = shape
+    key = (equation.expr, angle, constants)
+    if key not in _cache:
+        _cache[key] = _form(equation.expr, angle, variable, constants)
+    form = _cache[key]
+    return None if form is None else Candidate(equation, angle, form, variable)
+
+
+def _form(expr, angle, variable, constants):
+    if not isinstance(angle, sympy.Symbol) or angle != variable:
+        psi = sympy.Dummy("psi")
+        replaced = expr.xreplace({sympy.cos(angle): sympy.cos(psi), sympy.sin(angle): sympy.sin(psi)})
+        return sp.trig_linear(replaced, psi, constants)
+    if expr.atoms(sympy.cos, sympy.sin) and any(variable in f.free_symbols
+                                                for f in expr.atoms(sympy.cos, sympy.sin)):
+        return sp.trig_linear(expr, variable, constants)
+    form = sp.polynomial(expr, variable)
+    return tuple(form) if form is not None and form[0] != 0 else None
 
 
 def _last(angle, unknown, remaining):
@@ -229,6 +269,7 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
                                          "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
                                          (variable,), f"{c.equation.where} (equation {index} of 2)"))
         det = sp.determinant(candidates[0].form, candidates[1].form)
+        det = min([det, sympy.factor(sympy.trigsimp(det))], key=length) if length(det) < 60 else det
         if not det.is_number:
             derivation.degenerate.append(f"{_unsigned(det)} = 0: {shown} is not determined by these equations")
         return sp.pair(candidates[0].form, candidates[1].form)

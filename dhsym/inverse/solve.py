@@ -68,6 +68,8 @@ def solve(chain, free=()) -> Solution:
              constants=constants, witness=numbers)
         method = "the sub-problems of the equations (Hawkins's way for three parallel axes)" \
             if structure.parallel and len(unknowns) == 6 else "position problem by sub-problems"
+        if structure.parallel and len(unknowns) == 6:  # the joints after the parallel ones turn the tool
+            wrist_joints = [chain.joint_variables[j - 1] for j in structure.unknowns if j > structure.parallel[-1]]
     assignments = derivation.assignments
     definitions, assignments = _shared_first(definitions, assignments, chain.joint_variables, derivation.signs)
     conditions = list(derivation.conditions)

@@ -1,0 +1,147 @@
+"""Closed-form inverse kinematics of the built-in robots: at random joint values q, every real
+branch reproduces FK(q) (the target elements the solution uses, for an arm of fewer than six
+joints) and one branch equals q; refusals are one clear sentence; out-of-workspace targets and
+singular poses give NaN branches or a member of the family, never a traceback."""
+import functools
+import math
+import random
+
+import numpy
+import pytest
+import sympy
+
+import dhsym
+from dhsym.inverse.evaluate import evaluate
+from dhsym.inverse.solution import TARGET_NAMES
+from dhsym.inverse.solve import solve
+
+ROBOTS = ["planar2r", "planar3r", "pratihar_2r", "scara", "scara_spong", "cylindrical_rpp", "cylindrical_wrist",
+          "spherical_wrist", "spherical_wrist_spong", "stanford", "puma560", "spatial3r", "inline6",
+          "asokan_dh_example", "ur5"]
+
+
+@functools.cache
+def solved(name: str, free=()):
+    chain = dhsym.load(name)
+    return chain, solve(chain, free=free)
+
+
+def numeric_fk(chain, values: dict) -> numpy.ndarray:
+    """FK by numbers, from the plain product of the chain's elementary steps."""
+    matrix = chain.fk(raw=True).xreplace({k: sympy.Float(v) for k, v in values.items()})
+    return numpy.array(matrix.evalf(), dtype=float)
+
+
+def random_joints(chain, rng) -> dict:
+    return {v: rng.uniform(-math.pi, math.pi) if row.joint == "R" else rng.uniform(0.3, 1.2)
+            for v, row in zip(chain.joint_variables, chain.rows)}
+
+
+def used_elements(solution) -> list[tuple[int, int]]:
+    names = {str(s) for _, value in solution.definitions + sum((b.assignments for b in solution.branches), ())
+             for s in value.free_symbols}
+    return [divmod(k, 4) for k, name in enumerate(TARGET_NAMES) if name in names]
+
+
+def check_round_trip(chain, solution, rng, trials=4, constants=None):
+    constants = {**{k: float(v) for k, v in chain.sample.items()}, **(constants or {})}
+    elements = used_elements(solution) if len(solution.joint_variables) < 6 else [(r, c) for r in range(3)
+                                                                                   for c in range(4)]
+    for _ in range(trials):
+        q = {**random_joints(chain, rng), **{k: v for k, v in constants.items() if k in chain.joint_variables}}
+        target = numeric_fk(chain, {**constants, **q})
+        branches = evaluate(solution, target, constants)
+        assert branches.shape == (len(solution.branches), len(solution.joint_variables))
+        truth = numpy.array([q[v] for v in solution.joint_variables])
+        found = False
+        for branch in branches:
+            if numpy.isnan(branch).any():
+                continue
+            reached = numeric_fk(chain, {**constants, **q, **dict(zip(solution.joint_variables, branch))})
+            assert max(abs(reached[r, c] - target[r, c]) for r, c in elements) < 1e-7
+            found = found or numpy.abs(numpy.angle(numpy.exp(1j * (branch - truth)))).max() < 1e-6
+        assert found, "no branch gives back the joint values"
+
+
+@pytest.mark.parametrize("name", ROBOTS)
+def test_every_real_branch_reaches_the_pose_and_one_is_q(name):
+    chain, solution = solved(name)
+    check_round_trip(chain, solution, random.Random(name))
+    assert all(branch.name for branch in solution.branches)
+    assert len({branch.name for branch in solution.branches}) == len(solution.branches)
+
+
+def test_the_puma_is_solved_by_decoupling_with_eight_named_branches():
+    _, solution = solved("puma560")
+    assert solution.method.startswith("kinematic decoupling")
+    assert len(solution.branches) == 8
+    assert {"shoulder right, elbow down, wrist not flipped", "shoulder left, elbow up, wrist flipped"} <= \
+        {b.name for b in solution.branches}
+    assert any("theta_5" in text for text in solution.degenerate)
+
+
+def test_the_stanford_arm_names_its_wrist_centre():
+    _, solution = solved("stanford")
+    assert [str(name) for name, _ in solution.definitions[:3]] == ["x_c", "y_c", "z_c"]
+    assert str(solution.definitions[0][1]) == "-d_6*r13 + px"
+
+
+def test_the_planar_elbow_uses_px_and_py_and_says_so():
+    _, solution = solved("planar2r")
+    assert used_elements(solution) == [(0, 3), (1, 3)]
+    assert "px, py" in solution.method and any("consistent" in c for c in solution.conditions)
+    assert [b.name for b in solution.branches] == ["elbow down", "elbow up"]
+
+
+def test_a_target_out_of_reach_has_no_branch():
+    chain, solution = solved("planar2r")
+    far = numpy.eye(4)
+    far[0, 3] = 5.0  # a_1 + a_2 = 0.9
+    assert numpy.isnan(evaluate(solution, far)).all()
+
+
+def test_the_wrist_singularity_gives_a_member_of_the_family():
+    chain, solution = solved("puma560")
+    rng = random.Random(5)
+    constants = {k: float(v) for k, v in chain.sample.items()}
+    q = {**random_joints(chain, rng), chain.joint_variables[4]: 0.0}
+    target = numeric_fk(chain, {**constants, **q})
+    branches = evaluate(solution, target)
+    real = [b for b in branches if not numpy.isnan(b).any()]
+    assert real
+    for branch in real:
+        reached = numeric_fk(chain, {**constants, **dict(zip(solution.joint_variables, branch))})
+        assert numpy.abs(reached - target).max() < 1e-6
+
+
+def test_many_poses_at_once():
+    chain, solution = solved("puma560")
+    rng = random.Random(3)
+    constants = {k: float(v) for k, v in chain.sample.items()}
+    poses = numpy.stack([numeric_fk(chain, {**constants, **random_joints(chain, rng)}) for _ in range(3)])
+    together = evaluate(solution, poses)
+    assert together.shape == (3, 8, 6)
+    assert numpy.allclose(numpy.nan_to_num(together[1]), numpy.nan_to_num(evaluate(solution, poses[1])))
+
+
+def test_a_redundant_arm_is_refused_and_solved_with_a_free_joint():
+    chain = dhsym.load("iiwa7")
+    with pytest.raises(dhsym.UserError, match="redundant.*--free"):
+        solve(chain)
+    _, solution = solved("iiwa7", ("theta_3",))
+    assert solution.free == (chain.joint_variables[2],) and len(solution.joint_variables) == 6
+    check_round_trip(chain, solution, random.Random(7), trials=2, constants={chain.joint_variables[2]: 0.4})
+
+
+def test_a_bad_free_name_is_one_sentence():
+    with pytest.raises(dhsym.UserError, match="--free theta_9: no joint variable of that name"):
+        solve(dhsym.load("iiwa7"), free=("theta_9",))
+
+
+def test_a_general_6r_is_refused_by_its_axes():
+    t = sympy.symbols("theta_1:7", real=True)
+    alpha = sympy.symbols("alpha_1:7", real=True)
+    rows = [dhsym.DHRow.revolute(t[k], d=sympy.Symbol(f"d_{k + 1}", real=True), a=sympy.Symbol(f"a_{k + 1}", real=True),
+                                 alpha=alpha[k]) for k in range(6)]
+    with pytest.raises(dhsym.UserError, match="no three consecutive axes meet in a point .* or are parallel"):
+        solve(dhsym.Chain(rows, "standard", name="general 6R"))
