@@ -117,8 +117,8 @@ def module_text(solution, command: str = "") -> str:
             value = names[joint.name] if joint in given or joint in solution.free else "numpy.nan"
             body.append(f"        result[:, {number}, {k}] = {value}")
     lines = [
-        f'"""Closed-form inverse kinematics of {_comment(chain.name)} ({chain.convention} DH)' +
-        (f", made by `{_comment(command)}`." if command else ", made by dhsym.") + "\n",
+        f'"""Closed-form inverse kinematics of {_comment(chain.name)} ({chain.convention} DH).\n',
+        (f"Made by `{_comment(command)}`.\n" if command else "Made by dhsym.\n"),
         "ik(T, **constants): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by",
         "default; the result holds every branch's joint values, shaped (B, n) or (N, B, n): branches in",
         "the order of BRANCHES, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN where a",
