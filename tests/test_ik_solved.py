@@ -102,3 +102,20 @@ def test_every_puma_branch_is_drawn_side_by_side():
     figure = draw_branches(chain, values={"theta_2": "-30deg", "theta_3": "60deg", "theta_5": "40deg"},
                            figure=Figure())
     assert len(figure.axes) == 8 and figure.get_suptitle().endswith("8 of 8 branches reach the pose")
+
+
+def test_a_redundant_arm_with_a_free_joint(tmp_path):
+    """iiwa7 --free theta_3: the module takes theta_3 as a keyword, agrees with evaluate and reaches FK."""
+    chain = load("iiwa7")
+    result = chain.ik(free=["theta_3"])
+    assert [v.name for v in result.solution.free] == ["theta_3"]
+    path = tmp_path / "iiwa_ik.py"
+    path.write_text(result.code())
+    module = import_module(path)
+    assert "theta_3" not in module.JOINTS and ", theta_3):" in result.code()
+    constants = sample_constants(chain)
+    joints = random_joints(chain, np.random.default_rng(7), 6)
+    check_branches_reach(module.ik, chain, constants, joints, free=("theta_3",))
+    pose = np.array(numeric_fk(chain, constants)(*joints[0]), dtype=float)
+    assert np.allclose(module.ik(pose, theta_3=joints[0][2]), result.evaluate(pose, theta_3=joints[0][2]),
+                       atol=1e-9, equal_nan=True)
