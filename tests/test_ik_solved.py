@@ -119,3 +119,19 @@ def test_a_redundant_arm_with_a_free_joint(tmp_path):
     pose = np.array(numeric_fk(chain, constants)(*joints[0]), dtype=float)
     assert np.allclose(module.ik(pose, theta_3=joints[0][2]), result.evaluate(pose, theta_3=joints[0][2]),
                        atol=1e-9, equal_nan=True)
+
+
+def test_branches_of_a_redundant_arm_are_drawn_with_the_free_joint_in_its_place():
+    from matplotlib.figure import Figure
+
+    from dhsym.plot.branches import branch_values, draw_branches, target_pose
+
+    chain = load("iiwa7")
+    values = {"theta_2": "30deg", "theta_3": "20deg", "theta_4": "-60deg"}
+    pose = target_pose(chain, values)
+    _, joints = branch_values(chain, pose, free=["theta_3"], values=values)
+    assert joints.shape == (8, 7) and np.allclose(joints[:, 2], np.radians(20))
+    fk = numeric_fk(chain, sample_constants(chain))
+    assert all(np.allclose(np.array(fk(*q), dtype=float), pose, atol=1e-8) for q in joints)
+    figure = draw_branches(chain, values=values, free=["theta_3"], figure=Figure())
+    assert all(ax.get_title().splitlines()[-2].split(", ")[2] == "20°" for ax in figure.axes)
