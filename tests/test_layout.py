@@ -15,9 +15,11 @@ PACKAGE = Path(__file__).parent.parent / "dhsym"
 # `geometry` (frames from joint axes) is math on core that the robot-file reader uses for `axes:`.
 LAYERS = ["errors", "core", "checking.verify", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot",
           "checking", "cli"]
-# Two conveniences on Chain reach up, lazily inside a method: Jupyter shows a chain as its DH
-# table, and `chain.jacobian()` hands over to the velocity layer built on core.
-ALLOWED_UPWARD = {("core.chain", "printing.render"), ("core.chain", "velocity.jacobian")}
+# Conveniences reach up, lazily inside a method: Jupyter shows a chain as its DH table,
+# `chain.jacobian()` and `chain.ik()` hand over to the layers built on core, and the object
+# `chain.ik()` returns shows itself as text and LaTeX.
+ALLOWED_UPWARD = {("core.chain", "printing.render"), ("core.chain", "velocity.jacobian"),
+                  ("core.chain", "inverse.api"), ("inverse.api", "latex.ik"), ("inverse.api", "printing.ik")}
 
 
 def _modules():

@@ -25,10 +25,10 @@ from ..errors import Location, UserError
 from ..io import library
 from ..io.robotfile import load_robot_text
 from ..io.yamlsafe import MAX_FILE_BYTES, decode_utf8
-from . import check, convert, jacobian, kinematics, latex, listing, plot, screws, urdf_import
+from . import check, convert, ik, jacobian, kinematics, latex, listing, plot, screws, urdf_import
 from .options import COMMAND_BUDGET_FACTOR, COMMAND_BUDGET_FLOOR, Parser, text_width
 
-COMMAND_MODULES = (listing, kinematics, latex, plot, jacobian, urdf_import, convert, check, screws)
+COMMAND_MODULES = (listing, kinematics, latex, plot, jacobian, ik, urdf_import, convert, check, screws)
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70

@@ -22,6 +22,11 @@ def add_parsers(commands) -> None:
     sub.add_argument("--steps", action="store_true",
                      help="derive the result step by step: 0T2 = 0T1 1T2, then 0T3 = 0T2 2T3, ...")
     sub.add_argument("--jacobian", action="store_true", help="add the Jacobian, its determinant and singularities")
+    sub.add_argument("--ik", action="store_true",
+                     help="add the closed-form inverse kinematics: the decoupling, each equation with its "
+                          "sub-problem, every branch")
+    sub.add_argument("--free", metavar="VAR", nargs="+", action="extend", default=[],
+                     help="with --ik: joint variables kept as parameters (a redundant arm needs them)")
     frame_options(sub)
     sub.add_argument("-o", "--output", metavar="FILE", help="write to FILE (atomically) instead of standard output")
     sub.set_defaults(run=run)
@@ -36,10 +41,12 @@ def run(robot, args) -> str | None:
         pass  # document() names the frame that is wrong, and the option
     else:
         refuse_if_too_large(robot, start, end)
+    if args.free and not args.ik:
+        raise UserError("--free names the parameters of the inverse kinematics; add --ik")
     if args.jacobian:
         refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame)
     text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end,
-                    jacobian=args.jacobian)
+                    jacobian=args.jacobian, ik=args.ik, free=args.free)
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[robot.path])

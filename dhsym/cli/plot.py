@@ -26,6 +26,11 @@ def add_parsers(commands) -> None:
     sub.add_argument("-o", "--output", metavar="FILE", help="picture to write (.png, .pdf or .svg; default ROBOT.png)")
     sub.add_argument("--no-frames", action="store_true", help="draw links and joints only")
     sub.add_argument("--3d", dest="three_d", action="store_true", help="3D even when the arm is planar")
+    sub.add_argument("--ik", nargs="?", const="", metavar="TARGET",
+                     help="draw every inverse-kinematics branch that reaches the pose of --q, side by side; "
+                          "TARGET replaces elements of that pose, e.g. --ik \"px=0.5, py=0.2\"")
+    sub.add_argument("--free", metavar="VAR", nargs="+", action="extend", default=[],
+                     help="with --ik: joint variables kept as parameters (their --q values are used)")
     sub.set_defaults(run=run)
 
 
@@ -37,14 +42,59 @@ def run(robot, args) -> str:
 
     values = {**parse_assignments(robot.chain, args.constants, "--set"),
               **parse_assignments(robot.chain, args.joints, "--q")}
-    path = args.output or f"{Path(args.robot).stem if args.robot != '-' else 'robot'}.png"
+    stem = Path(args.robot).stem if args.robot != "-" else "robot"
+    path = args.output or f"{stem}{'_ik' if args.ik is not None else ''}.png"
     picture_format(path)  # a wrong suffix is found before any drawing
+    if args.ik is not None:
+        return _branches(robot, args, values, path)
+    if args.free:
+        raise UserError("--free names the parameters of the inverse kinematics; add --ik")
     planar = False if args.three_d else None
     figure = Figure(figsize=(6.4, 5.6) if (planar is None and is_planar(robot.chain, values)) else (7.2, 6.8))
     FigureCanvasAgg(figure)
     draw(robot.chain, values, ax=figure, planar=planar, show_frames=not args.no_frames)
     save(figure, path, inputs=[robot.path])
     return str(path)
+
+
+def _branches(robot, args, values, path) -> str:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from ..plot import save
+    from ..plot.branches import draw_branches
+
+    figure = Figure()
+    FigureCanvasAgg(figure)
+    constants = parse_assignments(robot.chain, args.constants, "--set")
+    draw_branches(robot.chain, values, parse_target(args.ik), constants, args.free, figure=figure,
+                  show_frames=not args.no_frames)
+    save(figure, path, inputs=[robot.path])
+    return str(path)
+
+
+def parse_target(text: str) -> dict:
+    """`--ik "px=0.5, py=0.2"`: elements of the target (r11 … pz) to numbers.
+
+    >>> parse_target("px = 0.5, py=1/5")
+    {'px': 1/2, 'py': 1/5}
+    """
+    from ..inverse.solution import TARGET_NAMES
+
+    values = {}
+    for part in filter(str.strip, text.split(",")):
+        match = _ASSIGNMENT.match(part)
+        if not match or match.group(1) not in TARGET_NAMES:
+            raise UserError(f"--ik {part.strip()!r}: expected ELEMENT=NUMBER, the element one of "
+                            f"{', '.join(TARGET_NAMES)}")
+        try:
+            value = parse_expression(match.group(2))
+        except UserError as error:
+            raise UserError(f"--ik {part.strip()!r}: {error.message}") from None
+        if value.free_symbols or not value.is_real:
+            raise UserError(f"--ik {part.strip()!r}: the value must be a number")
+        values[match.group(1)] = value
+    return values
 
 
 def parse_assignments(chain, texts, option: str) -> dict:

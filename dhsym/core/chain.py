@@ -197,6 +197,17 @@ class Chain:
 
         return jacobian(self, frame=frame, point=point)
 
+    def ik(self, free=()):
+        """The closed-form inverse kinematics, with the joint variables `free` (symbols or names)
+        kept as parameters: its branches, `.evaluate(T)`, `.latex()` and `.code()`; see
+        dhsym.inverse. Solved once per choice of `free`."""
+        from ..inverse.api import inverse_kinematics  # the inverse layer is built on core
+
+        key = ("ik", frozenset(getattr(v, "name", str(v)) for v in free))
+        if key not in self._cache:
+            self._cache[key] = inverse_kinematics(self, free)
+        return self._cache[key]
+
     def _compute(self, start: int, end: int, raw: bool) -> sympy.Matrix:
         if start > end:
             if raw:

@@ -18,6 +18,7 @@ from pathlib import Path
 from ..errors import UserError
 from ..io.library import ROBOTS_DIR
 from ..printing.printers import LatexPrinter, chain_settings
+from .ik import ik_sections
 from .layout import PAGES, Block, Page, flat
 from .packing import pack
 from .prose import tex_prose, tex_text
@@ -29,9 +30,11 @@ DOCUMENTS = ("slides", "article", "snippet")
 
 # ---------------------------------------------------------------- the three documents
 
-def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None, jacobian: bool = False) -> str:
+def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None, jacobian: bool = False,
+             ik: bool = False, free=()) -> str:
     """The LaTeX text of a document of `kind` for `chain`, about the transform from frame
-    `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics."""
+    `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics,
+    `ik` the closed-form inverse kinematics (with the joint variables `free` as parameters)."""
     start = _check_frame(chain, chain.first_frame if start is None else start, "--from")
     end = _check_frame(chain, chain.last_frame if end is None else end, "--to")
     if start == end:
@@ -40,6 +43,8 @@ def document(chain, kind: str = "slides", steps: bool = False, start=None, end=N
     content = sections(chain, start, end, steps, page, LatexPrinter(chain_settings(chain)))
     if jacobian:
         content += velocity_sections(chain, page, steps=steps)
+    if ik:
+        content += ik_sections(chain.ik(free).solution, page)
     return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
 
 

@@ -1,0 +1,117 @@
+"""`chain.ik(free=...)`: a closed-form inverse-kinematics solution for notebooks and programs,
+with its branches, numeric evaluation of every branch, the derivation in LaTeX (Jupyter renders
+it) and the standalone numpy module of `dhsym ik --format python`.
+
+    puma = dhsym.load("puma560")
+    ik = puma.ik()
+    [branch.name for branch in ik.branches]         # eight named configurations
+    ik.evaluate(T)                                  # (8, 6) joint values, NaN where none
+    ik.latex()                                      # the derivation, rendered by Jupyter
+    print(ik.code())                                # ik(T, **constants), numpy only
+
+The free joint variables are named by symbol or by name; a name the chain lacks is one clear
+error:
+
+>>> import dhsym
+>>> free_variables(dhsym.load("planar2r"), ["theta_2"])
+(theta_2,)
+>>> free_variables(dhsym.load("planar2r"), ["theta_3"])  # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+dhsym.errors.UserError: --free theta_3: Planar ... has no joint variable theta_3; its joint variables are ...
+"""
+from __future__ import annotations
+
+from ..errors import UserError
+from .codegen import module_text
+from .evaluate import evaluate
+from .solve import solve
+
+POSE_DOF = 6  # a pose fixes six numbers: a closed form has finitely many branches for at most six unknowns
+
+
+def free_variables(chain, names, option: str = "--free") -> tuple:
+    """The joint variables `names` (symbols or their names) in joint order, each checked."""
+    variables = {v.name: v for v in chain.joint_variables}
+    chosen = []
+    for name in names:
+        text = getattr(name, "name", str(name))
+        if text not in variables:
+            raise UserError(f"{option} {text}: {chain.name or 'the robot'} has no joint variable {text}; its joint "
+                            f"variables are {', '.join(variables)}")
+        chosen.append(variables[text])
+    unknowns = chain.n - len(set(chosen))
+    if unknowns > POSE_DOF:
+        extra = unknowns - POSE_DOF
+        left = [v.name for v in chain.joint_variables if v not in chosen]
+        middle = (len(left) - extra) // 2  # an elbow joint, as a course would choose
+        example = " ".join(left[middle:middle + extra])
+        raise UserError(f"{chain.name or 'the robot'} has {chain.n} joints, {unknowns} of them unknown, but a pose "
+                        f"fixes only {POSE_DOF}: make {extra} of them {'a parameter' if extra == 1 else 'parameters'} "
+                        f"with {option}, e.g. {option} {example}")
+    return tuple(v for v in chain.joint_variables if v in chosen)
+
+
+def inverse_kinematics(chain, free=()) -> "InverseKinematics":
+    """The solution of `chain` with the joint variables `free` kept as parameters."""
+    return InverseKinematics(solve(chain, free=free_variables(chain, free)))
+
+
+class InverseKinematics:
+    """A closed-form solution (`solution`, see dhsym.inverse.solution) and what a user does with it."""
+
+    def __init__(self, solution):
+        self.solution = solution
+
+    def __repr__(self) -> str:
+        count = len(self.branches)
+        names = "; ".join(branch.name for branch in self.branches)
+        return f"InverseKinematics({self.solution.chain.name!r}, {count} branch{'es' if count != 1 else ''}: {names})"
+
+    @property
+    def branches(self):
+        return self.solution.branches
+
+    @property
+    def definitions(self):
+        return self.solution.definitions
+
+    @property
+    def joint_variables(self):
+        return self.solution.joint_variables
+
+    def evaluate(self, T, **constants):
+        """Every branch's joint values for the pose T (4×4) or poses (N×4×4), NaN where a branch
+        does not exist; constants default to the robot file's sample values."""
+        return evaluate(self.solution, T, constants or None)
+
+    def code(self, command: str = "") -> str:
+        """The standalone numpy module (`dhsym ik --format python`)."""
+        return module_text(self.solution, command)
+
+    def function(self):
+        """`ik(T, **constants)` of the generated module, ready to call."""
+        namespace: dict = {}
+        exec(compile(self.code(), f"<ik of {self.solution.chain.name}>", "exec"), namespace)  # our own text
+        return namespace["ik"]
+
+    def latex(self):
+        """The derivation and every branch as LaTeX that Jupyter renders (`print()` shows the source)."""
+        from ..latex.ik import notebook_display  # the layout lives with the documents
+
+        return notebook_display(self.solution)
+
+    def _repr_latex_(self) -> str:
+        return self.latex()._repr_latex_()
+
+    def text(self, width: int = 100, ascii: bool = False) -> str:
+        """What `dhsym ik` prints."""
+        from ..printing.ik import text_solution  # printing sits above the math
+
+        return text_solution(self.solution, width, ascii)
+
+    def json(self) -> dict:
+        """What `dhsym ik --format json` prints, as a dict."""
+        from ..printing.ik import json_solution
+
+        return json_solution(self.solution)

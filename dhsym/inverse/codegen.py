@@ -1,0 +1,150 @@
+"""`dhsym ik --format python`: a closed-form solution as a standalone Python module that needs
+numpy only, what a course hands to the lab after the derivation.
+
+The module defines `ik(T, **constants)`: T is one pose (4, 4) or many (N, 4, 4); it returns every
+branch's joint values, shaped (B, n) or (N, B, n), branches in the order of `BRANCHES` (the
+JSON's), joints in the order of `JOINTS`, revolute angles in [−π, π), NaN where a branch does not
+exist. The robot's constants are keyword arguments whose defaults are the robot file's sample
+values; a joint made a parameter with `--free` is a keyword argument without a default.
+
+>>> import sympy
+>>> from dhsym.core.chain import Chain, DHRow
+>>> from dhsym.inverse.solution import Branch, Solution
+>>> t, l = sympy.symbols("theta_1 l_1", real=True)
+>>> arm = Chain([DHRow.revolute(t, a=l)], "standard", name="pendulum", sample={l: sympy.Rational(1, 2)})
+>>> px, py = sympy.symbols("px py", real=True)
+>>> code = module_text(Solution(arm, "one angle", (t,), (), (Branch("only", ((t, sympy.atan2(py, px)),)),)))
+>>> namespace = {}
+>>> exec(compile(code, "pendulum_ik.py", "exec"), namespace)
+>>> namespace["ik"]([[0, -1, 0, 0], [1, 0, 0, 0.5], [0, 0, 1, 0], [0, 0, 0, 1]]).round(4).tolist()
+[[1.5708]]
+"""
+from __future__ import annotations
+
+import keyword
+
+import sympy
+from sympy.printing.numpy import NumPyPrinter
+
+from ..core.numbers import decimal_text
+from .evaluate import ROUNDING
+from .solution import TARGET_NAMES
+
+_INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
+             "angles"}  # the module's own names
+_ELEMENTS = {name: (row, column) for row in range(3) for column, name in
+             enumerate(TARGET_NAMES[4 * row:4 * row + 4])}
+
+
+class _NumpyCode(NumPyPrinter):
+    """numpy.arctan2, numpy.sqrt, …; names made safe for Python, decimals as the robot file wrote them."""
+
+    def __init__(self, names: dict, numbers):
+        super().__init__({"fully_qualified_modules": True})
+        self.names, self.numbers = names, numbers
+
+    def _print_Symbol(self, expr):
+        return self.names.get(expr.name, expr.name)
+
+    def _print_Rational(self, expr):
+        decimal = self.numbers.decimal(expr, alone=True) if self.numbers else None
+        return decimal if decimal else f"{expr.p}/{expr.q}"
+
+    def _print_Pow(self, expr, rational=False):
+        if expr.exp == sympy.Rational(1, 2):  # a root of −1e-16 at the edge of the workspace is a root of 0
+            return f"root({self._print(expr.base)})"
+        return super()._print_Pow(expr, rational)
+
+
+def python_names(names) -> dict:
+    """{symbol name: a Python identifier for it}: a keyword, a name the module uses itself or a
+    name Python cannot spell gets a trailing underscore or a plain replacement.
+
+    >>> python_names(["theta_1", "lambda", "T", "x-1"])
+    {'theta_1': 'theta_1', 'lambda': 'lambda_', 'T': 'T_', 'x-1': 'symbol_3'}
+    """
+    out, taken = {}, set()
+    for position, name in enumerate(names):
+        safe = name
+        if not name.isidentifier() or not name.isascii():
+            safe = f"symbol_{position}"
+        while keyword.iskeyword(safe) or safe in _INTERNAL or safe in taken or safe.startswith("_"):
+            safe += "_"
+        out[name] = safe
+        taken.add(safe)
+    return out
+
+
+def _default(value) -> str:
+    """A sample value as the file wrote it: 0.4318, not 2159/5000."""
+    value = sympy.nsimplify(value) if not isinstance(value, sympy.Basic) else value
+    if value.is_Rational and (10 ** 30) % value.q == 0:
+        return decimal_text(value) if not value.is_Integer else f"{int(value)}.0"
+    return repr(float(value))
+
+
+def module_text(solution, command: str = "") -> str:
+    """The text of the standalone module for `solution` (see the module docstring)."""
+    chain = solution.chain
+    joints = list(solution.joint_variables)
+    constants = sorted((s for s in chain.symbols if s not in chain.joint_variables), key=lambda s: s.name)
+    definitions = [name for name, _ in solution.definitions]
+    assigned = {name for branch in solution.branches for name, _ in branch.assignments}
+    names = python_names([s.name for s in joints + constants + list(solution.free) + definitions] + list(TARGET_NAMES)
+                         + sorted({s.name for s in assigned} - {s.name for s in joints}))
+    code = _NumpyCode(names, getattr(chain, "numbers", None))
+    sample = {str(symbol): value for symbol, value in chain.sample.items()}
+    keywords = [f"{names[s.name]}={_default(sample[s.name])}" for s in constants if s.name in sample]
+    keywords += [names[s.name] for s in constants if s.name not in sample]
+    keywords += [names[s.name] for s in solution.free]
+    used = set().union(*(value.free_symbols for _, value in solution.definitions),
+                       *(value.free_symbols for branch in solution.branches for _, value in branch.assignments))
+    elements = [name for name in TARGET_NAMES if sympy.Symbol(name, real=True) in used
+                or sympy.Symbol(name) in used]
+    kinds = {row.variable: row.joint for row in chain.rows}
+    revolute = tuple(k for k, joint in enumerate(joints) if kinds.get(joint) == "R")
+    body = [f"    {names[name]} = poses[:, {_ELEMENTS[name][0]}, {_ELEMENTS[name][1]}]" for name in elements]
+    body.append(f"    result = numpy.full((len(poses), {len(solution.branches)}, {len(joints)}), numpy.nan)")
+    body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
+    for name, value in solution.definitions:
+        body.append(f"        {names[name.name]} = {code.doprint(value)}")
+    for number, branch in enumerate(solution.branches):
+        body.append(f"        # {_comment(branch.name)}")
+        given = dict(branch.assignments)
+        for name, value in branch.assignments:
+            body.append(f"        {names[name.name]} = {code.doprint(value)}")
+        for k, joint in enumerate(joints):
+            value = names[joint.name] if joint in given or joint in solution.free else "numpy.nan"
+            body.append(f"        result[:, {number}, {k}] = {value}")
+    lines = [
+        f'"""Closed-form inverse kinematics of {_comment(chain.name)} ({chain.convention} DH).\n',
+        (f"Made by `{_comment(command)}`.\n" if command else "Made by dhsym.\n"),
+        "ik(T, **constants): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by",
+        "default; the result holds every branch's joint values, shaped (B, n) or (N, B, n): branches in",
+        "the order of BRANCHES, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN where a",
+        'branch does not exist. Needs numpy only.\n"""',
+        "import numpy", "",
+        f"BRANCHES = {tuple(branch.name for branch in solution.branches)!r}",
+        f"JOINTS = {tuple(j.name for j in joints)!r}",
+        f"REVOLUTE = {revolute!r}  # the positions of the revolute joints in JOINTS",
+        f"ROUNDING = {ROUNDING!r}  # a square root of a number this close below 0 is a root of 0", "", "",
+        "def root(x):",
+        "    return numpy.sqrt(numpy.where((x < 0) & (x > -ROUNDING), 0.0, x))", "", "",
+        f"def ik(T, *, {', '.join(keywords)}):" if keywords else "def ik(T):",
+        '    """Every branch\'s joint values for the pose(s) T; see the module\'s docstring."""',
+        "    T = numpy.asarray(T, dtype=float)",
+        "    if T.ndim not in (2, 3) or T.shape[-2:] != (4, 4):",
+        '        raise ValueError(f"T must be one pose (4, 4) or many (N, 4, 4), not an array of shape {T.shape}")',
+        "    poses = T.reshape(-1, 4, 4)",
+        *body,
+        "    angles = result[:, :, list(REVOLUTE)]",
+        "    result[:, :, list(REVOLUTE)] = (angles + numpy.pi) % (2 * numpy.pi) - numpy.pi",
+        "    result[~numpy.isfinite(result).all(axis=-1)] = numpy.nan  # a branch exists whole or not at all",
+        "    return result[0] if T.ndim == 2 else result", "",
+    ]
+    return "\n".join(lines)
+
+
+def _comment(text: str) -> str:
+    """Text from a robot file, safe inside a comment or a docstring: one line, no quotes to end it."""
+    return " ".join(str(text).split()).replace("\\", "/").replace('"""', "'''")

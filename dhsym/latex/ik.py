@@ -1,0 +1,213 @@
+r"""Inverse kinematics in `dhsym latex --ik` and `dhsym ik --format latex`: the problem (the
+target as the matrix of its names), the method (the decoupling), each equation of the derivation
+with the sub-problem it is an instance of, the intermediate quantities, every branch, when the
+branches exist and where they degenerate, and a legend of the c/s abbreviations used.
+
+Laid out like the transforms: every equation is a line of ``aligned`` broken before a + or −
+when wider than the page; nothing is shrunk.
+
+>>> import sympy
+>>> from dhsym.inverse.solution import Branch, Solution
+>>> from dhsym.io.library import load
+>>> arm = load("planar2r")
+>>> t1, t2 = arm.joint_variables
+>>> px, py = sympy.symbols("px py", real=True)
+>>> both = Solution(arm, "planar arm", (t1, t2), (), (Branch("one", ((t1, sympy.atan2(py, px)), (t2, 0))),))
+>>> [section.title for section in ik_sections(both, PAGES["article"])]
+['Inverse kinematics: the problem', 'Branch 1: one']
+"""
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from ..printing.ik import (
+    IDENTIFIER,
+    RELATIONS,
+    latex_name,
+    latex_printer,
+    sentence_parts,
+    solution_names,
+    target_title,
+    variable_list,
+)
+from .display import Latex
+from .layout import (
+    ALIGNED_EXTRA,
+    PAGES,
+    TEXT_LINE,
+    Block,
+    Page,
+    Rows,
+    aligned_display,
+    bmatrix,
+    break_lines,
+    display,
+    element_name,
+    element_rows,
+    lines_under,
+    matrix_height,
+    paragraph,
+    row_height,
+    stacked,
+)
+from .legend import legend_items
+from .prose import tex_prose, tex_text
+from .sections import Section
+from .width import math_width
+
+PART = "Inverse kinematics"
+_MATH_CHARACTERS = {"²": "$^{2}$", "³": "$^{3}$", "√": "$\\surd$"}  # tex_text has no text form for these
+
+
+def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Section]:
+    """The problem and the method; the derivation step by step (if the solver kept its steps);
+    the intermediate quantities; one section per branch; existence and degenerate poses; the legend.
+    `headings` (default: where pages have no frame titles) starts each section with its title."""
+    chain = solution.chain
+    printer = latex_printer(chain)
+    names = [[element_name(r, c) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
+    unknowns = [v for v in solution.joint_variables if v not in solution.free]
+    problem = [paragraph(f"Given the pose of the last frame, find ${variable_list(unknowns, printer)}$. "
+                         f"The target is written with the names of its elements:", page),
+               display(f"{target_title(chain, 'latex')} =\n{bmatrix(names)}", matrix_height(names)),
+               paragraph(f"Method: {latex_sentence(solution.method, solution_names(solution), printer)}.", page)]
+    if solution.free:
+        problem.append(paragraph(f"Free joint variables, kept as parameters: "
+                                 f"${variable_list(solution.free, printer)}$.", page))
+    count = len(solution.branches)
+    problem.append(paragraph(f"{count} branch{'es' if count != 1 else ''}.", page))
+    out = [Section(PART, "Inverse kinematics: the problem", problem)]
+    if solution.steps:
+        out.append(Section(PART, "Derivation", _step_items(solution.steps, printer, page)))
+    if solution.definitions:
+        rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in solution.definitions]
+        out.append(Section(PART, "Intermediate quantities",
+                           [paragraph("Used by every branch:", page), Rows([rows])]))
+    for number, branch in enumerate(solution.branches, 1):
+        rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in branch.assignments]
+        out.append(Section(PART, f"Branch {number}: {tex_text(branch.name)}", [Rows([rows])]))
+    names = solution_names(solution)
+    remarks = [paragraph(f"Condition: {latex_sentence(text, names, printer)}.", page)
+               for text in solution.conditions]
+    remarks += [paragraph(f"Degenerate: {latex_sentence(text, names, printer)}.", page)
+                for text in solution.degenerate]
+    if remarks:
+        out.append(Section(PART, "Existence and degenerate poses", remarks))
+    out[-1].items.extend(legend_items(printer, page))
+    if page.height_pt is None if headings is None else headings:  # no frame titles: a heading says which part
+        for section in out:
+            section.items.insert(0, _heading(section.title, page))
+    return out
+
+
+def _heading(title: str, page: Page) -> Block:
+    block = paragraph(f"\\textbf{{{title}}}", page)
+    block.keep_with_next = True
+    return block
+
+
+def _step_items(steps, printer, page: Page) -> list:
+    """Each equation after a line naming the sub-problem it is an instance of and what it solves for."""
+    items = []
+    for number, step in enumerate(steps, 1):
+        solves = f", for ${variable_list(step.solves, printer)}$" if step.solves else ""
+        note = f": {prose(step.note)}" if step.note else ""
+        text = paragraph(f"Step {number} ({prose(step.subproblem)}){solves}{note}.", page)
+        text.keep_with_next = True
+        items += [text, Rows([[_equation_rows(step.lhs, step.rhs, printer, page)]])]
+    return items
+
+
+def _equation_rows(lhs, rhs, printer, page: Page) -> list[tuple[str, float]]:
+    """`lhs = rhs` as lines of `aligned`, broken before a + or − to fit the page; a matrix
+    equation element by element."""
+    if isinstance(lhs, sympy.MatrixBase) or isinstance(rhs, sympy.MatrixBase):
+        left, right = sympy.Matrix(lhs), sympy.Matrix(rhs)
+        pairs = [(a, b) for a, b in zip(left, right, strict=True) if a != b]
+        return [row for a, b in pairs for row in _equation_rows(a, b, printer, page)]
+    width = page.width - ALIGNED_EXTRA
+    lines = break_lines(f"{printer.doprint(lhs)} = {printer.doprint(rhs)}", width, width - 1.0, display=True)
+    rows = [f"&{lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]
+    return [(row, row_height([row], array=False)) for row in rows]
+
+
+def latex_sentence(text: str, names, printer) -> str:
+    """A solver's sentence as LaTeX text, its relations and the names it mentions as math."""
+    out = []
+    for part in sentence_parts(text, names):
+        if part[0] == "relation":
+            out.append(f"${printer.doprint(part[1])}{RELATIONS['latex'][part[2]]}{printer.doprint(part[3])}$")
+            continue
+        position = 0
+        for match in IDENTIFIER.finditer(part[1]):
+            if match.group(0) in part[2]:
+                out += [prose(part[1][position:match.start()]), f"${printer.doprint(part[2][match.group(0)])}$"]
+                position = match.end()
+        out.append(prose(part[1][position:]))
+    return "".join(out)
+
+
+def prose(text: str) -> str:
+    """A solver's sentence as LaTeX text (identifiers and transforms such as 1T6 set as math, see
+    `tex_prose`); squares and roots, which a text font lacks, as math.
+
+    >>> prose("D² ≤ 1")
+    'D$^{2}$ $\\\\leq$ 1'
+    """
+    pieces = [""]
+    for character in str(text):
+        if character in _MATH_CHARACTERS:
+            pieces += [_MATH_CHARACTERS[character], ""]
+        else:
+            pieces[-1] += character
+    return "".join(piece if position % 2 else tex_prose(piece) for position, piece in enumerate(pieces))
+
+
+def snippet(solution) -> str:
+    """The math of `ik_sections` for a document with amsmath (`dhsym ik --format latex`)."""
+    out = [f"% dhsym ik: {' '.join(solution.chain.name.split())}; needs \\usepackage{{amsmath}}"]
+    for section in ik_sections(solution, PAGES["snippet"], headings=False):  # the titles are comments
+        out.append(f"% {' '.join(section.title.split())}")
+        for item in section.items:
+            block = item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")
+            out.append(block.latex if block.is_display else f"% {' '.join(block.latex.split())}")
+    return "\n".join(out) + "\n"
+
+
+def notebook_display(solution):
+    """The sections as one display for Jupyter, laid out for the notebook's line: text is set
+    as \\text{…} lines with its math between them, which MathJax renders without extensions."""
+    page = PAGES["notebook"]
+    items = []
+    for section in ik_sections(solution, page, headings=False):
+        for item in [paragraph(section.title, page)] + section.items:
+            items += _text_rows(item.latex, page) if isinstance(item, Block) and not item.is_display else [item]
+    return Latex(stacked(items, page))
+
+
+_WORD = re.compile(r"(?:\$[^$]*\$|[^\s$])+")  # a word, with any math it holds kept whole
+
+
+def _text_rows(latex: str, page: Page) -> list[Block]:
+    r"""A paragraph as displays of one line each: text in \text{…}, math as math.
+
+    >>> [b.math for b in _text_rows("find $\\theta_{1}$.", PAGES["notebook"])]
+    ['\\text{find }\\theta_{1}\\text{.}']
+    """
+    rows, line = [], ""
+    for word in _WORD.findall(latex):
+        if line and math_width(_row_math(line + " " + word)) > page.width:
+            rows.append(line)
+            line = word
+        else:
+            line = f"{line} {word}" if line else word
+    rows.append(line)
+    return [display(_row_math(row), TEXT_LINE) for row in rows]
+
+
+def _row_math(text: str) -> str:
+    pieces = text.split("$")
+    return "".join((piece if position % 2 else f"\\text{{{piece}}}") for position, piece in enumerate(pieces)
+                   if piece)

@@ -1,0 +1,322 @@
+"""Inverse-kinematics solutions for people and programs: the textbook text form (c1, s23,
+atan2(y, x), a `where` list of the intermediate quantities, every branch by name) and the JSON
+contract (full cos/sin/atan2 with the robot file's names, readable by sympy.sympify).
+
+The target's elements print as a book names them: r11 … r33, px, py, pz (LaTeX r_{11}, p_{x});
+a quotient prints with its denominator bracketed, (px² + py² − a1² − a2²)/(2 a1 a2), and a sum
+starts with the target's terms, positive ones first.
+
+>>> import sympy, dhsym
+>>> arm = dhsym.load("planar2r")
+>>> px, py, a1, a2 = sympy.symbols("px py a_1 a_2", real=True)
+>>> printer = IKTextPrinter(chain_settings(arm))
+>>> printer.doprint((px**2 + py**2 - a1**2 - a2**2) / (2 * a1 * a2))
+'(px² + py² − a1² − a2²)/(2 a1 a2)'
+>>> IKLatexPrinter(chain_settings(arm)).doprint(sympy.atan2(py, px) - sympy.acos(px / a1))
+'\\\\mathrm{atan2}(p_{y}, p_{x}) - \\\\arccos(\\\\frac{p_{x}}{a_{1}})'
+"""
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from ..errors import UserError
+from ..inverse.solution import TARGET_NAMES
+from ..io.expr import parse_expression, real_symbol
+from . import render
+from .notation import GREEK_NAMES, display_name
+from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
+
+TARGET_LATEX = {name: (f"{name[0]}_{{{name[1:]}}}") for name in TARGET_NAMES}  # r_{11}, p_{x}
+_TARGET = frozenset(TARGET_NAMES)
+
+
+class _InverseNotation:
+    """What the IK printers add to the textbook printers: sums start with the target's terms,
+    and atan2, acos, asin print as a book writes them."""
+
+    def _setup(self):
+        super()._setup()
+        joint_key = self.notation.term_key
+        # an instance attribute: the printers ask the notation for the order of terms
+        self.notation.term_key = lambda term: (not _has_target(term), term.could_extract_minus_sign(),
+                                               joint_key(term))
+
+    def _print_Symbol(self, expr):
+        if expr.name in _TARGET:
+            return TARGET_LATEX[expr.name] if self.style == "latex" else expr.name
+        return super()._print_Symbol(expr)
+
+    def _arguments(self, expr) -> str:
+        return ", ".join(self._print(argument) for argument in expr.args)
+
+
+def _has_target(term) -> bool:
+    return any(symbol.name in _TARGET for symbol in term.free_symbols)
+
+
+class IKTextPrinter(_InverseNotation, TextPrinter):
+    """Text: atan2(py, px), acos(D), √(1 − D²)."""
+
+    def _print_atan2(self, expr):
+        return f"atan2({self._arguments(expr)})"
+
+    def _print_acos(self, expr):
+        return f"acos({self._arguments(expr)})"
+
+    def _print_asin(self, expr):
+        return f"asin({self._arguments(expr)})"
+
+    def _fraction(self, top, bottom, grouped):
+        spaced = " " in bottom and not (bottom.startswith("(") and _one_group(bottom))
+        return super()._fraction(top, f"({bottom})" if spaced else bottom, grouped)
+
+
+class IKLatexPrinter(_InverseNotation, LatexPrinter):
+    r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
+
+    def _print_atan2(self, expr):
+        return f"\\mathrm{{atan2}}({self._arguments(expr)})"
+
+    def _print_acos(self, expr, exp=None):
+        return f"\\arccos({self._arguments(expr)})"
+
+    def _print_asin(self, expr, exp=None):
+        return f"\\arcsin({self._arguments(expr)})"
+
+    def _fraction(self, top, bottom, grouped):
+        if top.startswith("(") and _one_group(top):  # \frac{a + b}{c}, not \frac{(a + b)}{c}
+            top = top[1:-1]
+        return super()._fraction(top, bottom, grouped)
+
+
+def _one_group(text: str) -> bool:
+    """Whether `text` is one bracketed group, (…), whose opening bracket closes at its end."""
+    depth = 0
+    for position, ch in enumerate(text):
+        depth += ch in "([{"
+        depth -= ch in ")]}"
+        if depth == 0 and position < len(text) - 1:
+            return False
+    return depth == 0
+
+
+_RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
+IDENTIFIER = re.compile(r"(?<![\w.])[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(])")
+RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
+             "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
+
+
+def sentence_parts(text: str, names) -> list:
+    """A solver's sentence ("1 - D**2 >= 0 (else …)", "a_3 = 0 and d_4 = 0: theta_3 is not
+    determined") as parts to print: ("relation", lhs, operator, rhs) for each relation it starts
+    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, symbols)
+    for the rest, with the `names` it mentions. A sentence that starts with no relation stays words.
+
+    >>> sentence_parts("1 - D**2 >= 0 (else no branch)", ["D"])[0]
+    ('relation', 1 - D**2, '>=', 0)
+    """
+    cuts = [len(text)] + [m.start() for m in re.finditer(r": | \(", text)]
+    for cut in sorted(set(cuts)):
+        relations = _relations(text[:cut])
+        if relations:
+            rest = text[cut:]
+            return relations + ([("words", rest, _mentioned(rest, names))] if rest else [])
+    return [("words", text, _mentioned(text, names))]
+
+
+def _relations(math: str) -> list:
+    """[("relation", lhs, operator, rhs), ("words", " and ", {}), …] for `math`, or [] if it is not
+    a conjunction of relations the safe parser reads."""
+    parts = []
+    for clause in math.split(" and "):
+        match = _RELATION.match(clause.strip())
+        try:
+            sides = [parse_expression(match.group(1)), parse_expression(match.group(3))] if match else None
+        except UserError:
+            sides = None
+        if sides is None:
+            return []
+        if parts:
+            parts.append(("words", " and ", {}))
+        parts.append(("relation", sides[0], match.group(2), sides[1]))
+    return parts
+
+
+def _mentioned(text: str, names) -> dict:
+    """{name: its symbol} for the chain's and the solution's names that `text` mentions."""
+    wanted = set(names)
+    return {m.group(0): real_symbol(m.group(0)) for m in IDENTIFIER.finditer(text) if m.group(0) in wanted}
+
+
+def solution_names(solution) -> list[str]:
+    """The names a solver's sentence may mention: the chain's symbols, the definitions', the target's."""
+    return ([s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
+            + list(TARGET_NAMES))
+
+
+def text_sentence(text: str, names, printer) -> str:
+    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5² = 0: θ4 is not determined'."""
+    out = []
+    for part in sentence_parts(text, names):
+        if part[0] == "relation":
+            out.append(printer.doprint(part[1]) + RELATIONS["text"][part[2]] + printer.doprint(part[3]))
+        else:
+            out.append(_names_printed(part[1], part[2], printer))
+    return "".join(out)
+
+
+def _names_printed(text: str, mentioned: dict, printer) -> str:
+    """`text` with each name in `mentioned` as the printer writes it: theta_1 -> θ1."""
+    return IDENTIFIER.sub(lambda m: printer.doprint(mentioned[m.group(0)]) if m.group(0) in mentioned
+                          else m.group(0), text)
+
+
+def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
+    return IKTextPrinter(chain_settings(chain), ascii=ascii)
+
+
+def latex_printer(chain) -> IKLatexPrinter:
+    return IKLatexPrinter(chain_settings(chain))
+
+
+def target_title(chain, style: str = "unicode") -> str:
+    """⁰T₆: the transform `dhsym fk` prints by default, from base (else 0) to tool (else n)."""
+    return render.transform_title(chain.frame_number(chain.first_frame), chain.frame_number(chain.last_frame), style)
+
+
+def variable_list(symbols, printer) -> str:
+    """θ1, θ2 in the printer's style."""
+    return ", ".join(printer.doprint(symbol) for symbol in symbols)
+
+
+def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
+    """The whole solution as text that fits `width`: title, target, method, definitions, each
+    branch, when branches exist, the degenerate poses, and the legend of c/s abbreviations."""
+    chain = solution.chain
+    printer = text_printer(chain, ascii)
+    style = "ascii" if ascii else "unicode"
+    blocks = [render.wrap(f"{chain.name}: inverse kinematics  ({chain.convention} DH)", width, "  ")]
+    target = [[*row] for row in render.ELEMENT_NAMES] + [["0", "0", "0", "1"]]
+    blocks.append(render.wrap(f"Target {target_title(chain, style)}, the pose to reach (what `dhsym fk` prints):",
+                              width, "  ") + "\n" + render.aligned_matrix(target, ascii))
+    names = solution_names(solution)
+    about = [f"Method: {text_sentence(solution.method, names, printer)}."]
+    if solution.free:
+        about.append(f"Free (parameters): {variable_list(solution.free, printer)}.")
+    count = len(solution.branches)
+    about.append(f"{count} branch{'es' if count != 1 else ''}.")
+    blocks.append(render.wrap(" ".join(about), width, "  "))
+    if solution.definitions:
+        blocks.append("where\n" + assignments_text(solution.definitions, printer, width))
+    for number, branch in enumerate(solution.branches, 1):
+        heading = render.wrap(f"Branch {number}: {branch.name}", width, "  ")
+        blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
+    for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
+        if lines:
+            blocks.append(f"{title}:\n" + "\n".join(render.wrap("  " + text_sentence(line, names, printer), width,
+                                                                  "    ") for line in lines))
+    legend = render.text_legend(printer, width)
+    text = "\n\n".join(blocks + ([legend] if legend else []))
+    return ascii_text(text) if ascii else text
+
+
+_ASCII = {"−": "-", "–": "-", "≥": ">=", "≤": "<=", "≠": "!=", "·": "*", "×": "x", "√": "sqrt", "±": "+-",
+          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0"}
+
+
+def ascii_text(text: str) -> str:
+    """Text for --ascii: the solver's sentences may hold Greek letters, squares and signs.
+
+    >>> ascii_text("s5 = 0: only θ4 + θ6 is determined; D² ≤ 1")
+    's5 = 0: only theta4 + theta6 is determined; D^2 <= 1'
+    """
+    out = []
+    for ch in text:
+        if ch.isascii():
+            out.append(ch)
+        else:
+            out.append(_ASCII.get(ch) or GREEK_NAMES.get(ch) or "?")
+    return "".join(out)
+
+
+def assignments_text(assignments, printer, width: int) -> str:
+    """`  θ1 = …` one to a line, a long one broken before a + or − to fit `width`."""
+    names = [printer.doprint(name) for name, _ in assignments]
+    label = max(map(render.display_width, names))
+    lines = []
+    for name, (_, value) in zip(names, assignments, strict=True):
+        prefix = "  " + name + " " * (label - render.display_width(name)) + " = "
+        lines.append(break_value(prefix, printer.doprint(value), width))
+    return "\n".join(lines)
+
+
+def break_value(prefix: str, text: str, width: int) -> str:
+    """`prefix + text` in lines of at most `width` columns where possible: broken before a + or −,
+    or after the comma between the arguments of atan2, at the outermost bracket level that leaves
+    the rest on one line, else the line at least half full; continuation lines are indented past
+    the prefix.
+
+    >>> print(break_value("θ = ", "atan2(a1 s1 + a2 s12, a1 c1 + a2 c12)", 26))
+    θ = atan2(a1 s1 + a2 s12,
+          a1 c1 + a2 c12)
+    """
+    indent = " " * (render.display_width(prefix) + 2)
+    lines, line, rest = [], prefix, text
+    while render.display_width(line + rest) > width:
+        room = width - render.display_width(line)
+        points = _break_points(rest)
+        fitting = [p for p in points if render.display_width(rest[:p[0]]) <= room and p[0] > 0]
+        if not fitting:
+            if not points:
+                break  # one term wider than the line: nothing left to break
+            fitting = points[:1]
+        last = [p for p in fitting if len(indent) + render.display_width(rest[p[0]:].lstrip()) <= width]
+        half = last or [p for p in fitting if render.display_width(rest[:p[0]]) >= room / 2] or fitting
+        outermost = min(depth for _, depth in half)
+        cut = max(position for position, depth in half if depth == outermost)
+        lines.append(line + rest[:cut].rstrip())
+        line, rest = indent, rest[cut:].lstrip()
+    return "\n".join(lines + [line + rest])
+
+
+def _break_points(text: str) -> list[tuple[int, float]]:
+    """(position, bracket depth) where a line may break: before a binary + or −, after a comma."""
+    found, depth = [], 0
+    for position, ch in enumerate(text):
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+        elif ch == " " and text[position + 1:position + 3] in ("+ ", "− ", "- "):
+            found.append((position, depth))
+        elif ch == "," and text[position + 1:position + 2] == " ":
+            found.append((position + 1, depth - 0.5))  # between arguments: before a sign inside one
+    return found
+
+
+def json_solution(solution) -> dict:
+    """The JSON contract: full forms with the robot file's names and decimals as written;
+    `sympy.sympify` reads every expression back."""
+    chain = solution.chain
+    exact = ExactPrinter(chain_settings(chain))
+    pairs = lambda items: [[name.name, exact.doprint(value)] for name, value in items]  # noqa: E731
+    return {
+        "robot": chain.name,
+        "convention": chain.convention,
+        "joint_variables": [symbol.name for symbol in solution.joint_variables],
+        "free": [symbol.name for symbol in solution.free],
+        "method": solution.method,
+        "target": list(TARGET_NAMES),
+        "definitions": pairs(solution.definitions),
+        "solutions": [{"name": branch.name, "assignments": pairs(branch.assignments)}
+                      for branch in solution.branches],
+        "conditions": list(solution.conditions),
+        "degenerate": list(solution.degenerate),
+    }
+
+
+def latex_name(symbol: sympy.Symbol) -> str:
+    """A name as the LaTeX printers write it: x_{c}, \\theta_{1}, p_{x}."""
+    return TARGET_LATEX.get(symbol.name) or display_name(symbol.name, "latex")

@@ -1,0 +1,103 @@
+"""Checks every inverse-kinematics surface must pass, whoever made the solution: the JSON
+contract (readable, consistent), the generated module (importable, right shapes, its branches
+reach the pose, the original joint values among them)."""
+import importlib.util
+import json
+
+import numpy as np
+import sympy
+
+from dhsym.inverse.solution import TARGET_NAMES
+
+JSON_KEYS = {"robot", "convention", "joint_variables", "free", "method", "target", "definitions", "solutions",
+             "conditions", "degenerate"}
+ALLOWED_FUNCTIONS = {sympy.atan2, sympy.sqrt, sympy.cos, sympy.sin, sympy.acos, sympy.asin, sympy.Abs, sympy.sign}
+
+
+def check_json(text: str, chain) -> dict:
+    """The documented keys; every expression read back by sympify; every joint assigned in every
+    branch; each assignment uses only the target, the constants, the definitions and the names
+    assigned before it."""
+    data = json.loads(text)
+    assert set(data) == JSON_KEYS
+    assert data["target"] == list(TARGET_NAMES)
+    assert data["joint_variables"] == [v.name for v in chain.joint_variables]
+    constants = {s.name for s in chain.symbols} - set(data["joint_variables"]) | set(data["free"])
+    known = set(TARGET_NAMES) | constants
+    for name, expression in data["definitions"]:
+        assert _names(expression) <= known, (name, expression)
+        known.add(name)
+    assert data["solutions"], "no branch"
+    for branch in data["solutions"]:
+        assert set(branch) == {"name", "assignments"} and branch["name"]
+        seen = set(known)
+        for name, expression in branch["assignments"]:
+            assert _names(expression) <= seen, (branch["name"], name, expression)
+            seen.add(name)
+        assert set(data["joint_variables"]) - set(data["free"]) <= {name for name, _ in branch["assignments"]}
+    assert all(isinstance(text, str) for text in data["conditions"] + data["degenerate"])
+    return data
+
+
+def used_target(data: dict) -> list:
+    """The target's elements a solution reads (JSON), in the target's order."""
+    expressions = [e for _, e in data["definitions"]] + [e for b in data["solutions"] for _, e in b["assignments"]]
+    used = set().union(*(_names(e) for e in expressions))
+    return [name for name in TARGET_NAMES if name in used]
+
+
+def _names(expression: str) -> set:
+    value = sympy.sympify(expression)
+    functions = {type(f) for f in value.atoms(sympy.Function)}
+    assert functions <= ALLOWED_FUNCTIONS, (expression, functions)
+    return {s.name for s in value.free_symbols}
+
+
+def import_module(path):
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def numeric_fk(chain, constants: dict):
+    """q (n,) -> the 4×4 pose `dhsym fk` prints, with the constants given."""
+    matrix = chain.fk().subs({s: constants[s.name] for s in chain.symbols if s.name in constants})
+    return sympy.lambdify(chain.joint_variables, matrix, "numpy")
+
+
+def sample_constants(chain) -> dict:
+    return {str(symbol): float(value) for symbol, value in chain.sample.items()}
+
+
+def random_joints(chain, rng, count: int) -> np.ndarray:
+    """Joint values away from the singular edges: angles in ±(0.2 … 2.9), lengths in 0.1 … 0.5."""
+    values = rng.uniform(0.2, 2.9, (count, chain.n)) * rng.choice([-1, 1], (count, chain.n))
+    for k, row in enumerate(chain.rows):
+        if row.joint == "P":
+            values[:, k] = rng.uniform(0.1, 0.5, count)
+    return values
+
+
+def check_branches_reach(ik, chain, constants: dict, joints: np.ndarray, free=(), compare=TARGET_NAMES) -> None:
+    """For every q: T = FK(q); every branch that exists reaches T (the elements `compare`: an arm
+    with fewer than six joints reaches a part of the pose), and q is one of them. The joints
+    named in `free` are given to `ik` as keyword arguments; its columns are the other joints."""
+    wanted = [TARGET_NAMES.index(name) for name in compare]
+    names = [v.name for v in chain.joint_variables]
+    unknown = [k for k, name in enumerate(names) if name not in free]
+    fk = numeric_fk(chain, constants)
+    poses = np.array([np.array(fk(*q), dtype=float) for q in joints])
+    found = np.array([ik(pose, **{name: q[names.index(name)] for name in free}) for q, pose in zip(joints, poses)])
+    revolute = [k for k, row in enumerate(chain.rows) if row.joint == "R" and k in unknown]
+    for pose, q, branches in zip(poses, joints, found, strict=True):
+        existing = branches[np.isfinite(branches).all(axis=1)]
+        assert len(existing), f"no branch reaches FK({q})"
+        full = np.tile(q, (len(existing), 1))
+        full[:, unknown] = existing
+        for values in full:
+            reached = np.array(fk(*values), dtype=float)[:3].reshape(12)[wanted]
+            assert np.allclose(reached, pose[:3].reshape(12)[wanted], atol=1e-7), (q, values)
+        difference = full - q
+        difference[:, revolute] = (difference[:, revolute] + np.pi) % (2 * np.pi) - np.pi
+        assert np.abs(difference).max(axis=1).min() < 1e-6, f"{q} is not among the branches {full}"
