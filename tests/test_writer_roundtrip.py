@@ -331,3 +331,30 @@ def test_a_joint_field_over_200_characters_with_its_variable_names_the_limit():
     with pytest.raises(UserError, match=r"^cannot write joint row 1 theta as a robot file: its value is 20\d "
                                         r"characters long; a robot file holds at most 200 per expression"):
         robot_yaml(one_value_chain(constant, "theta"))
+
+
+KR210 = [("revolute", "-0.00262 0.00097586 0.33099", "0 0 0", "0 0 1"),  # KUKA KR210's URDF, as published
+         ("revolute", "0.35277 -0.037476 0.4192", "0 0 0", "0 1 0"),
+         ("revolute", "-9.8483E-05 -0.1475 1.2499", "0 0 0", "0 1 0"),
+         ("revolute", "0.95795 0.184 -0.055059", "0 0 0", "1 0 0"),
+         ("revolute", "0.542 0 0", "0 0 0", "0 1 0"),
+         ("revolute", "0.1925 0 0", "0 0 0", "1 0 0")]
+
+
+@pytest.mark.parametrize("convention", ["standard", "modified"])
+def test_the_kuka_kr210_imports_with_its_atan_offset_noted(convention, tmp_path, capsys):
+    text = serial_urdf(KR210, name="kuka_kr210")
+    path = tmp_path / "kr210.urdf"
+    path.write_text(text)
+    assert cli.main(["import", str(path), "--convention", convention]) == 0
+    written, err = capsys.readouterr()
+    assert err == ""
+    assert "theta: q_2 + 1.57071753409164" in written and "a: -1.24990000387987" in written
+    chain = load_robot_text(written, "kr210.yaml").chain
+    assert "theta_2 offset 1.57071753409164 (exactly atan(1249900000/98483))" in chain.notes
+    assert "a_2 -1.24990000387987 (exactly -sqrt(1562250019698901289)/1000000000)" in chain.notes
+    rng = random.Random(7)
+    for _ in range(3):
+        q = [rng.uniform(-2, 2) for _ in range(6)]
+        fk = np.array(chain.fk(raw=True).xreplace(dict(zip(chain.joint_variables, q))).evalf(), dtype=float)
+        assert np.allclose(fk, urdf_fk(text, q, "link0", "link6"), atol=1e-12)
