@@ -358,3 +358,10 @@ def test_the_kuka_kr210_imports_with_its_atan_offset_noted(convention, tmp_path,
         q = [rng.uniform(-2, 2) for _ in range(6)]
         fk = np.array(chain.fk(raw=True).xreplace(dict(zip(chain.joint_variables, q))).evalf(), dtype=float)
         assert np.allclose(fk, urdf_fk(text, q, "link0", "link6"), atol=1e-12)
+
+
+def test_a_name_with_characters_yaml_refuses_in_a_file_is_escaped_and_reads_back():
+    chain = one_value_chain(1)
+    chain.name, chain.notes = "arm\x85\u2028\x9f \"quoted\" → \U0001F916\tend", "line one\nline two"
+    _, again = read_back(chain)
+    assert (again.name, again.notes) == (chain.name, chain.notes)

@@ -60,7 +60,13 @@ def _yaml_value(text: str) -> str:
 
 
 def _string(text: str) -> str:
-    return json.dumps(text, ensure_ascii=False)
+    """A YAML double-quoted string; characters YAML refuses in a file (C1 controls, U+2028) escaped."""
+    return "".join(c if c.isprintable() or c == " " else _escape(c) for c in json.dumps(text, ensure_ascii=False))
+
+
+def _escape(character: str) -> str:
+    code = ord(character)
+    return f"\\u{code:04x}" if code <= 0xFFFF else f"\\U{code:08x}"
 
 
 class _Values:
@@ -160,7 +166,8 @@ def robot_yaml(chain, notes: str | None = None) -> str:
     if size > MAX_FILE_BYTES:
         raise UserError(f"the robot file would be {size} bytes; robot files are limited to {MAX_FILE_BYTES >> 20} "
                         "MiB, so none was written")
-    _check_reads_back(text, Chain(rows, chain.convention, steps["base"], steps["tool"]))
+    _check_reads_back(text, Chain(rows, chain.convention, steps["base"], steps["tool"],
+                                  frame_offset=chain.frame_offset, name=chain.name))
     return text
 
 
@@ -174,5 +181,6 @@ def _check_reads_back(text: str, chain: Chain) -> None:
             from None
     same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.rows] == \
         [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in chain.rows]
-    if not (same and list(again.base) == list(chain.base) and list(again.tool) == list(chain.tool)):
+    if not (same and list(again.base) == list(chain.base) and list(again.tool) == list(chain.tool)
+            and again.frame_offset == chain.frame_offset and again.name == chain.name):
         raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")
