@@ -272,7 +272,8 @@ def geometries(draw):
     tool = sympy.eye(4)
     tool[:3, 0], tool[:3, 1], tool[:3, 2] = x, z.cross(x).applyfunc(sympy.radsimp), z
     tool[:3, 3] = vector(*(draw(decimal_coordinates) for _ in range(3)))
-    return axes, tool, draw(st.sampled_from(["standard", "modified"])), not symbolic
+    decimals = not symbolic or draw(st.booleans())  # symbols may come with decimals too
+    return axes, tool, draw(st.sampled_from(["standard", "modified"])), decimals, symbolic
 
 
 def poe_fk(axes, tool, values):
@@ -287,14 +288,14 @@ def poe_fk(axes, tool, values):
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(geometries())
 def test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics(geometry):
-    axes, tool, convention, decimals = geometry
+    axes, tool, convention, decimals, symbolic = geometry
     chain = assign_frames(axes, tool, convention, decimals=decimals).chain(name="random")
     try:
         text = robot_yaml(chain)
     except UserError as error:  # only a value too long, or an angle that depends on symbols, and said so
         assert "characters long; a robot file holds at most 200" in str(error) or \
             "so it has no exact decimal: give those lengths as numbers" in str(error), str(error)
-        assert not decimals
+        assert symbolic
         return
     again = load_robot_text(text, "random.yaml").chain
     assert "atan" not in text.split("notes:")[0]
@@ -333,3 +334,37 @@ def test_a_joint_field_over_200_characters_with_its_variable_names_the_limit():
     with pytest.raises(UserError, match=r"^cannot write joint row 1 theta as a robot file: its value is 20\d "
                                         r"characters long; a robot file holds at most 200 per expression"):
         robot_yaml(one_value_chain(constant, "theta"))
+
+
+KR210 = [("revolute", "-0.00262 0.00097586 0.33099", "0 0 0", "0 0 1"),  # KUKA KR210's URDF, as published
+         ("revolute", "0.35277 -0.037476 0.4192", "0 0 0", "0 1 0"),
+         ("revolute", "-9.8483E-05 -0.1475 1.2499", "0 0 0", "0 1 0"),
+         ("revolute", "0.95795 0.184 -0.055059", "0 0 0", "1 0 0"),
+         ("revolute", "0.542 0 0", "0 0 0", "0 1 0"),
+         ("revolute", "0.1925 0 0", "0 0 0", "1 0 0")]
+
+
+@pytest.mark.parametrize("convention", ["standard", "modified"])
+def test_the_kuka_kr210_imports_with_its_atan_offset_noted(convention, tmp_path, capsys):
+    text = serial_urdf(KR210, name="kuka_kr210")
+    path = tmp_path / "kr210.urdf"
+    path.write_text(text)
+    assert cli.main(["import", str(path), "--convention", convention]) == 0
+    written, err = capsys.readouterr()
+    assert err == ""
+    assert "theta: q_2 + 1.57071753409164" in written and "a: -1.24990000387987" in written
+    chain = load_robot_text(written, "kr210.yaml").chain
+    assert "theta_2 offset 1.57071753409164 (exactly atan(1249900000/98483))" in chain.notes
+    assert "a_2 -1.24990000387987 (exactly -sqrt(1562250019698901289)/1000000000)" in chain.notes
+    rng = random.Random(7)
+    for _ in range(3):
+        q = [rng.uniform(-2, 2) for _ in range(6)]
+        fk = np.array(chain.fk(raw=True).xreplace(dict(zip(chain.joint_variables, q))).evalf(), dtype=float)
+        assert np.allclose(fk, urdf_fk(text, q, "link0", "link6"), atol=1e-12)
+
+
+def test_a_name_with_characters_yaml_refuses_in_a_file_is_escaped_and_reads_back():
+    chain = one_value_chain(1)
+    chain.name, chain.notes = "arm\x85\u2028\x9f \"quoted\" → \U0001F916\tend", "line one\nline two"
+    _, again = read_back(chain)
+    assert (again.name, again.notes) == (chain.name, chain.notes)

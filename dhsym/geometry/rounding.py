@@ -14,6 +14,9 @@ numbers, and sums and products of these with symbols. A robot file reads numbers
   SIGNIFICANT significant digits. 15 digits is what a double holds, far finer than any robot's
   drawing; the table's forward kinematics stays within about 1e-15 (relative) of the geometry.
 
+`written_text` prints a value the way a robot file writes it (decimals where they end); the
+writer (dhsym.io.robotwriter) and the notes use it.
+
 >>> decimal_text(fit(sympy.atan(sympy.Rational(4, 3))))
 '0.927295218001612'
 >>> print(Rounding("alpha_2", fit(sympy.atan(sympy.Rational(4, 3))), sympy.atan(sympy.Rational(4, 3))))
@@ -31,14 +34,17 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 import sympy
+from sympy.printing.precedence import PRECEDENCE
+from sympy.printing.str import StrPrinter
 
-from ..core.numbers import decimal_text
+from ..core.numbers import WrittenNumbers, decimal_text
 from .exact import is_zero
 
 SIGNIFICANT = 15  # digits of a rounded value: a double's precision
 EXACT_DIGITS = 20  # a decimal that ends within this many significant digits is written exactly
 SHORT = 6  # digits of a numerator or denominator a person writes in a fraction (1/3, 5*pi/12)
 SHOWN = 120  # characters of an exact value a note shows
+LONG_DENOMINATOR = 1000  # a coefficient over this (terminating) denominator is written as a decimal
 
 
 @dataclass(frozen=True)
@@ -53,7 +59,7 @@ class Rounding:
     def __str__(self) -> str:
         exact = str(self.exact)
         shown = f"exactly {exact}" if len(exact) <= SHOWN else f"from an exact form {len(exact)} characters long"
-        return f"{self.label} {_plain_text(self.value)} ({shown})"
+        return f"{self.label} {written_text(self.value)} ({shown})"
 
 
 def rounding_note(roundings: list) -> str:
@@ -101,6 +107,49 @@ def dh_label(convention: str, row: int, field: str, offset: int = 0, moving: boo
     return f"{field}_{index}" + (" offset" if moving else "")
 
 
+class _WrittenPrinter(StrPrinter):
+    """sympy's str form, with terminating fractions as decimals (what a robot file says), except
+    denominators the file wrote as fractions; a long coefficient is a decimal too (0.7071*l_1)."""
+
+    def __init__(self, numbers: WrittenNumbers):
+        super().__init__({"order": "none"})
+        self.numbers = numbers
+
+    def decimal(self, value: sympy.Rational) -> str | None:
+        if value.q in self.numbers.fractions and abs(value) not in self.numbers.values:
+            return None
+        return decimal_text(value) if _terminates(value) else None
+
+    def _print_Rational(self, expr):
+        return self.decimal(expr) or super()._print_Rational(expr)
+
+    def _print_Mul(self, expr):
+        coefficient, rest = expr.as_coeff_Mul()
+        text = self.decimal(coefficient) if coefficient.is_Rational and coefficient.q > LONG_DENOMINATOR else None
+        if text is None or rest == 1:
+            return super()._print_Mul(expr)
+        return f"{text}*{self.parenthesize(rest, PRECEDENCE['Mul'])}"
+
+
+def _terminates(value: sympy.Rational) -> bool:
+    q = int(value.q)
+    for prime in (2, 5):
+        while q % prime == 0:
+            q //= prime
+    return q == 1
+
+
+def written_text(value, numbers: WrittenNumbers | None = None) -> str:
+    """A value as a robot file writes it: terminating fractions as decimals unless `numbers`
+    (how the chain's file wrote them) has that denominator as a fraction, π and roots by name.
+
+    >>> l = sympy.Symbol("l_1", real=True)
+    >>> written_text(sympy.Rational(17, 40) + l / 2), written_text(sympy.Rational(707106781186548, 10**15) * l)
+    ('0.425 + l_1/2', '0.707106781186548*l_1')
+    """
+    return _WrittenPrinter(numbers or WrittenNumbers()).doprint(sympy.sympify(value))
+
+
 def _fit_number(value: sympy.Expr, decimals: bool, length: bool) -> sympy.Expr:
     if value.is_Rational:
         return value if _short_decimal(value) or (not decimals and _short_fraction(value)) else _rounded(value)
@@ -134,11 +183,7 @@ def _rounded(value: sympy.Expr) -> sympy.Rational:
 
 def _significant(value: sympy.Rational) -> int | None:
     """How many significant digits the decimal of `value` has; None when it does not end."""
-    q = int(value.q)
-    for prime in (2, 5):
-        while q % prime == 0:
-            q //= prime
-    if q != 1:
+    if not _terminates(value):
         return None
     return len(decimal_text(abs(value)).replace(".", "").lstrip("0").rstrip("0") or "0")
 
@@ -161,6 +206,3 @@ def _short_surd(value: sympy.Expr) -> bool:
         and len(str(value)) <= 40
 
 
-def _plain_text(value: sympy.Expr) -> str:
-    """A rounded value as its decimal, a symbolic one in sympy's words."""
-    return decimal_text(value) if value.is_Rational and _significant(value) is not None else str(value)

@@ -28,57 +28,22 @@ import json
 import re
 
 import sympy
-from sympy.printing.precedence import PRECEDENCE
-from sympy.printing.str import StrPrinter
 
 from ..core.chain import Chain, DHRow
-from ..core.numbers import WrittenNumbers, decimal_text
+from ..core.numbers import WrittenNumbers
 from ..core.transforms import Step
 from ..errors import UserError
-from ..geometry.rounding import Rounding, dh_label, fit, joined, rounding_note
+from ..geometry.rounding import Rounding, dh_label, fit, joined, rounding_note, written_text
 from .expr import MAX_LENGTH, parse_expression
 from .robotfile import MAX_JOINTS, load_robot_text
 from .yamlsafe import MAX_FILE_BYTES
 
 COLUMNS = {"standard": ("theta", "d", "a", "alpha"), "modified": ("alpha", "a", "d", "theta")}
-LONG_DENOMINATOR = 1000  # a coefficient over this (terminating) denominator is written as a decimal
 _PLAIN = re.compile(r"^[\w.+\-*/() ]+$")
 
 
-class _DecimalPrinter(StrPrinter):
-    """sympy's str form, with terminating fractions as decimals (what a robot file says), except
-    denominators the file wrote as fractions; a long coefficient is a decimal too (0.7071*l_1)."""
-
-    def __init__(self, numbers: WrittenNumbers):
-        super().__init__({"order": "none"})
-        self.numbers = numbers
-
-    def decimal(self, value: sympy.Rational) -> str | None:
-        if value.q in self.numbers.fractions and abs(value) not in self.numbers.values:
-            return None
-        return decimal_text(value) if _terminates(value) else None
-
-    def _print_Rational(self, expr):
-        return self.decimal(expr) or super()._print_Rational(expr)
-
-    def _print_Mul(self, expr):
-        coefficient, rest = expr.as_coeff_Mul()
-        text = self.decimal(coefficient) if coefficient.is_Rational and coefficient.q > LONG_DENOMINATOR else None
-        if text is None or rest == 1:
-            return super()._print_Mul(expr)
-        return f"{text}*{self.parenthesize(rest, PRECEDENCE['Mul'])}"
-
-
-def _terminates(value: sympy.Rational) -> bool:
-    q = int(value.q)
-    for prime in (2, 5):
-        while q % prime == 0:
-            q //= prime
-    return q == 1
-
-
 def expression_text(value, numbers: WrittenNumbers | None = None) -> str:
-    return _DecimalPrinter(numbers or WrittenNumbers()).doprint(sympy.sympify(value))
+    return written_text(value, numbers)
 
 
 def _moving_text(variable, constant, numbers) -> str | None:
@@ -95,7 +60,13 @@ def _yaml_value(text: str) -> str:
 
 
 def _string(text: str) -> str:
-    return json.dumps(text, ensure_ascii=False)
+    """A YAML double-quoted string; characters YAML refuses in a file (C1 controls, U+2028) escaped."""
+    return "".join(c if c.isprintable() or c == " " else _escape(c) for c in json.dumps(text, ensure_ascii=False))
+
+
+def _escape(character: str) -> str:
+    code = ord(character)
+    return f"\\u{code:04x}" if code <= 0xFFFF else f"\\U{code:08x}"
 
 
 class _Values:
@@ -195,7 +166,8 @@ def robot_yaml(chain, notes: str | None = None) -> str:
     if size > MAX_FILE_BYTES:
         raise UserError(f"the robot file would be {size} bytes; robot files are limited to {MAX_FILE_BYTES >> 20} "
                         "MiB, so none was written")
-    _check_reads_back(text, Chain(rows, chain.convention, steps["base"], steps["tool"]))
+    _check_reads_back(text, Chain(rows, chain.convention, steps["base"], steps["tool"],
+                                  frame_offset=chain.frame_offset, name=chain.name))
     return text
 
 
@@ -209,5 +181,6 @@ def _check_reads_back(text: str, chain: Chain) -> None:
             from None
     same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.rows] == \
         [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in chain.rows]
-    if not (same and list(again.base) == list(chain.base) and list(again.tool) == list(chain.tool)):
+    if not (same and list(again.base) == list(chain.base) and list(again.tool) == list(chain.tool)
+            and again.frame_offset == chain.frame_offset and again.name == chain.name):
         raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")
