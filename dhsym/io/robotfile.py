@@ -31,7 +31,7 @@ from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
 from .axesfile import axes_chain
 from .expr import Reading, parse_expression
-from .suspicious import misspelt_pi, near_multiple_of_pi, printed_key, printed_text
+from .suspicious import misplaced_variable, misspelt_pi, near_multiple_of_pi, printed_key, printed_text
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
 
 MAX_JOINTS = 24
@@ -229,6 +229,11 @@ class _Reader:
         moving = "theta" if kind == "R" else "d"
         variable = self.joint_variable(what, kind, values, nodes)
         self.refuse_nonlinear(values[moving], variable, f"{what} {moving}", readings[moving], nodes[moving])
+        for key in ("theta", "d"):  # a variable in the other column, or named for it: joint: P with theta_1
+            for name, place in readings[key].names:
+                slip = (key != moving or name == variable.name) and misplaced_variable(kind, key, name, "var" in nodes)
+                if slip:
+                    raise UserError(f"{what} {key}: {slip}", place)
         for key in ("alpha", "a", "theta" if kind == "P" else "d"):
             if variable in values[key].free_symbols:
                 raise UserError(f"{what} {key}: joint variable {variable} also appears here; only {moving} "
@@ -259,7 +264,9 @@ class _Reader:
             return free[0]
         if not free:
             joint = "revolute" if kind == "R" else "prismatic"
-            raise UserError(f"{what} {moving}: no joint variable; a {joint} joint needs a symbol in {moving}",
+            other = sorted(map(str, values["d"].free_symbols)) if kind == "R" else []
+            hint = f"; d holds {', '.join(other)}: write joint: P if this joint slides" if other else ""
+            raise UserError(f"{what} {moving}: no joint variable; a {joint} joint needs a symbol in {moving}{hint}",
                             self.where(nodes[moving]))
         names = ", ".join(s.name for s in free)
         pi = [misspelt_pi(s.name) for s in free if misspelt_pi(s.name)]
