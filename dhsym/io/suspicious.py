@@ -143,7 +143,7 @@ def misplaced_variable(joint: str, column: str, name: str, named_var: bool) -> s
     settles the question. θ and q name joint angles, q any joint variable; d_1 in d of a
     revolute row is an offset, and a subscript 0 marks a constant (theta_0).
 
-    >>> print(misplaced_variable("P", "theta", "theta_1", False)[:88])
+    >>> print(misplaced_variable("P", "theta", "theta_1", False)[:89])
     theta_1 looks like a joint variable, but joint: P (prismatic) moves along d and keeps the
     >>> misplaced_variable("P", "theta", "theta_0", False), misplaced_variable("R", "d", "d_1", False)
     (None, None)
