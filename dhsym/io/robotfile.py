@@ -88,7 +88,8 @@ class _Reader:
     def mapping(self, node: yaml.Node, what: str, allowed) -> dict:
         """A mapping's items as {key: (key node, value node)}, refusing unknown keys."""
         if not isinstance(node, yaml.MappingNode):
-            raise UserError(f"{what} must be a mapping of keys to values, not {_kind(node)}", self.where(node))
+            glued = _glued_key(node) if isinstance(node, yaml.ScalarNode) else ""
+            raise UserError(f"{what} must be a mapping of keys to values, not {_kind(node)}{glued}", self.where(node))
         items, previous = {}, None
         for key_node, value_node in node.value:
             if not isinstance(key_node, yaml.ScalarNode):
@@ -98,7 +99,8 @@ class _Reader:
                 raise UserError(f"unknown key {key!r} in {what}: inside {{...}} a comma separates entries; write "
                                 f"decimals with a point, as in {previous.strip()}.{key}", self.where(key_node))
             if key not in allowed:
-                raise UserError(f"unknown key {key!r} in {what}{_suggestion(key, allowed)}", self.where(key_node))
+                hint = _glued_key(key_node) or _suggestion(key, allowed)
+                raise UserError(f"unknown key {key!r} in {what}{hint}", self.where(key_node))
             if key in items:
                 raise UserError(f"key {key!r} appears twice in {what}", self.where(key_node))
             items[key] = (key_node, value_node)
@@ -385,3 +387,11 @@ def _kind(node: yaml.Node) -> str:
     if isinstance(node, yaml.MappingNode):
         return "a mapping"
     return "a single value" if node.value else "an empty value"
+
+
+def _glued_key(node: yaml.ScalarNode) -> str:
+    """`; write 'alpha: 0' ...` for a value that is a key and its value without the space."""
+    key, colon, value = node.value.partition(":")
+    if node.style is None and colon and key.strip() and value and not value[0].isspace():
+        return f"; a key needs a space after its ':': write '{key.strip()}: {value}'"
+    return ""

@@ -18,6 +18,7 @@ from pathlib import Path
 import yaml
 
 from ..errors import Location, UserError
+from .yamlhints import explain
 
 MAX_FILE_BYTES = 1 << 20
 MAX_YAML_DEPTH = 10  # a robot file needs 3 (file, joints list, row)
@@ -70,8 +71,8 @@ def compose(text: str, filename: str) -> yaml.Node:
         raise UserError(f"character U+{ord(character):04X} is not allowed in a robot file",
                         Location(filename, line, column)) from None
     except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        raise UserError(f"YAML syntax error: {_yaml_problem(exc)}", mark_location(filename, mark)) from None
+        message, line, column = explain(exc, text)
+        raise UserError(f"YAML syntax error: {message}", Location(filename, line + 1, column + 1)) from None
     except yaml.YAMLError as exc:
         raise UserError(f"YAML error: {_one_line(str(exc))}", Location(filename, 1, 1)) from None
     finally:
@@ -80,13 +81,6 @@ def compose(text: str, filename: str) -> yaml.Node:
     if node is None:
         raise UserError("file is empty; expected a robot description", Location(filename, 1, 1))
     return node
-
-
-def _yaml_problem(exc: yaml.MarkedYAMLError) -> str:
-    problem = _one_line(exc.problem or exc.context or "unreadable YAML")
-    if "'\\t'" in problem:
-        return "a tab character; YAML indentation must use spaces"
-    return problem
 
 
 def _one_line(message: str) -> str:
