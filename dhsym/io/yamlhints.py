@@ -30,11 +30,34 @@ def explain(error: yaml.MarkedYAMLError, text: str) -> tuple[str, int, int]:
     mark = error.problem_mark or error.context_mark
     line, column = (mark.line, mark.column) if mark else (0, 0)
     problem = " ".join((error.problem or error.context or "unreadable YAML").split())
-    for rule in (_tab, _block_end, _glued, _flow, _simple_key, _open_quote):
+    for rule in (_tab, _first_line, _block_end, _glued, _flow, _simple_key, _open_quote):
         found = rule(error, problem, lines, line, column)
         if found:
             return found
-    return problem, line, column
+    return _plain_tokens(problem), line, column
+
+
+_TOKENS = {"<block mapping start>": "a key", "<block sequence start>": "a list item",
+           "<block end>": "the end of a block",
+           "<stream end>": "the end of the file", "<document start>": "a new document (---)",
+           "<block collection start>": "a block", "<flow mapping start>": "'{'", "<flow sequence start>": "'['",
+           "<scalar>": "a value", "<document end>": "'...'", "<flow mapping end>": "'}'",
+           "<flow sequence end>": "']'", "<flow entry>": "','", "<block entry>": "'-'", "?": "a key"}
+
+
+def _plain_tokens(problem: str) -> str:
+    """The parser's words with its token names said plainly: expected the end of a block, but found a key.
+
+    >>> _plain_tokens("expected <block end>, but found '<block mapping start>'")
+    'expected the end of a block here, but found a key; check the indentation of this line and the one above'
+    """
+    text = problem
+    for token, plain in _TOKENS.items():
+        text = text.replace(f"'{token}'", plain).replace(token, plain)
+    text = text.replace("while scanning a simple key", "while reading a key")
+    if text.startswith("expected the end of a block"):
+        text = text.replace("block,", "block here,") + "; check the indentation of this line and the one above"
+    return text
 
 
 def _indent(text: str) -> int:
@@ -67,11 +90,25 @@ def _tab(error, problem, lines, line, column):
     return None
 
 
+def _first_line(error, problem, lines, line, column):
+    """The first key indented, the next ones not: ` name: arm` then `convention: …`."""
+    if not problem.startswith("expected '<document start>'"):
+        return None
+    first = next(((n, text) for n, text in enumerate(lines) if text.strip() and not text.lstrip().startswith("#")),
+                 None)
+    if first is None or _indent(first[1]) == 0 or first[0] >= line:
+        return None
+    return (f"the first line starts in column {_indent(first[1]) + 1}, but line {line + 1} in column {column + 1}; "
+            f"the keys of the file start in the same column, best column 1"), first[0], _indent(first[1])
+
+
 def _block_end(error, problem, lines, line, column):
     """A line that starts at a column no list or mapping above it uses."""
     if not problem.startswith("expected <block end>") or line >= len(lines):
         return None
     text = lines[line]
+    if text.startswith("-", column) and text[column + 1:column + 2] not in ("", " "):
+        return f"put a space after '-': write '- {text[column + 1]}', not '-{text[column + 1]}'", line, column
     if text.startswith("-", column):
         for number, above in _content_above(lines, line):
             if above.lstrip().startswith("- ") and _indent(above) != column:
@@ -84,7 +121,7 @@ def _block_end(error, problem, lines, line, column):
         if key is not None and (not levels or key < levels[-1]):
             levels.append(key)
     name = text[column:].split(":")[0].strip()
-    if not levels or not name:
+    if not levels or not re.fullmatch(r"[^\s,{}\[\]'\"#&*!|>%@`]+", name):
         return None
     return (f"key {name!r} starts in column {column + 1}, but the keys above it start in column "
             f"{_columns(sorted(levels, reverse=True))}; line it up with the keys of its own mapping"), line, column
