@@ -68,13 +68,14 @@ ROBOTS = builtin_names() + list(TEST_ROBOTS) + list(IMPORTED)
 
 
 def _notebook_displays() -> str:
-    """Every robot's whole transform as a notebook shows it, on a line as wide as the notebook
+    """Every robot's table and whole transform as a notebook shows them, on a line as wide as the notebook
     page the layout assumes: pdflatex reads the same LaTeX as MathJax, and nothing overflows."""
     width = texlayout.PAGES["notebook"].width_pt
     preamble = (f"\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage[textwidth={width}pt,"
                 f"paperwidth={width + 60}pt,textheight=3000pt,paperheight=3100pt]{{geometry}}\n"
                 "\\begin{document}\n")  # as tall as the 7-axis arm's elements and legend
-    body = "".join(f"\\[\n{display.transform(chain, chain.first_frame, chain.last_frame).latex}\n\\]\n"
+    body = "".join(f"\\[\n{display.table(chain).latex}\n\\]\n"
+                   f"\\[\n{display.transform(chain, chain.first_frame, chain.last_frame).latex}\n\\]\n"
                    for chain in map(_robot, ROBOTS))
     return preamble + body + "\\end{document}\n"
 
@@ -225,6 +226,13 @@ def test_a_table_too_wide_for_the_frame_is_split_into_arrays_of_columns_each_wit
     columns = [column for header in headers for column in header.split(" & ")[1:]]
     assert columns == ["\\alpha_{i-1}", "a_{i-1}", "d_i", "\\theta_i"]  # every column once, in order
     assert "l_{shoulder,pitch}^{*}" in "".join(frames)
+
+
+def test_the_notebook_table_follows_the_same_rule():
+    assert display.table(load("puma560")).latex.startswith("\\begin{array}{c|cccc}\ni & \\alpha_{i-1}")
+    split = display.table(_robot("imported-long_decimals")).latex
+    assert split.startswith("\\begin{array}{l}\n\\begin{array}{c|cc}\ni & \\theta_i & d_i \\\\")
+    assert "\\begin{array}{c|cc}\ni & a_i & \\alpha_i \\\\" in split
 
 
 def test_a_column_too_wide_alone_lists_each_rows_parameters_by_name():
