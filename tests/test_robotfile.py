@@ -107,3 +107,9 @@ def test_a_joint_variable_in_the_wrong_column_is_an_error_with_the_fix(row, colu
 ])
 def test_constant_symbols_and_named_variables_stay_allowed(row, variable):
     assert load_robot_text(_one_row(row), "arm.yaml").chain.rows[0].variable.name == variable
+
+
+@pytest.mark.parametrize("text", ["sqrt(-(theta_1*theta_1))", "sqrt(-l_1^2)", "sqrt(-1)"])
+def test_a_value_imaginary_for_every_nonzero_symbol_is_refused(text):
+    with pytest.raises(UserError, match="not a real number"):
+        parse_expression(text)
