@@ -1,10 +1,11 @@
 """`dhsym latex` and `dhsym fk/links --format latex`: documents that compile with pdflatex,
 fit their pages (no overfull boxes), and print the textbook forms.
 
-Every built-in robot and every test robot (TEST_ROBOTS) is compiled five ways (slides with and
-without --steps, article with --steps, snippet and `fk --format latex` each wrapped in a
-minimal amsmath document), once per module and in parallel. A document fails on any LaTeX
-error and on any overfull box wider or taller than OVERFULL_TOLERANCE_PT. Golden files:
+Every built-in robot, every test robot (TEST_ROBOTS) and every imported one (IMPORTED) is
+compiled six ways (slides with and without --steps, article with --steps, snippet, and
+`fk --format latex` and `table --format latex` each wrapped in a minimal amsmath document),
+once per module and in parallel (or only those that `-k` selects). A document fails on any
+LaTeX error and on any overfull box wider or taller than OVERFULL_TOLERANCE_PT. Golden files:
 tests/golden/*.tex; after an intended change of the output, rewrite them with
 DHSYM_UPDATE_GOLDEN=1.
 """
@@ -26,7 +27,7 @@ from dhsym.io.robotfile import load_robot_text
 from dhsym.latex import document as latexdoc
 from dhsym.latex import layout as texlayout
 from dhsym.latex import width as texwidth
-from dhsym.latex.results import results_latex
+from dhsym.latex.results import results_latex, table_latex
 from dhsym.printing.printers import LatexPrinter
 
 GOLDEN = Path(__file__).parent / "golden"
@@ -37,7 +38,8 @@ INSTALL_HINT = ("pdflatex is not installed: run `make tex` (as root it installs 
 needs_tex = pytest.mark.skipif(shutil.which("pdflatex") is None, reason=INSTALL_HINT)
 
 VARIANTS = {"slides-steps": ("slides", True), "slides": ("slides", False),
-            "article-steps": ("article", True), "snippet": ("snippet", False), "fk": ("fk", False)}
+            "article-steps": ("article", True), "snippet": ("snippet", False), "fk": ("fk", False),
+            "table": ("table", False)}
 SNIPPET_HOST = "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n{}\\end{{document}}\n"
 
 # Robots as `dhsym import` writes them (iCub and Baxter arms from example-robot-data, one with
@@ -60,6 +62,8 @@ def _document(robot, variant: str, **options) -> str:
     kind, steps = VARIANTS[variant]
     if kind == "fk":
         return SNIPPET_HOST.format(results_latex(robot, [(robot.first_frame, robot.last_frame, robot.fk())]) + "\n")
+    if kind == "table":  # dhsym table --format latex
+        return SNIPPET_HOST.format(table_latex(robot) + "\n")
     text = latexdoc.document(robot, kind, steps=steps, **options)
     return SNIPPET_HOST.format(text) if kind == "snippet" else text
 

@@ -22,16 +22,20 @@ import yaml
 
 _GLUED_COLON = re.compile(r"(?:^|(?<=[\s{,\[]))([^\W\d]\w*):(?=[^\s/:])")  # convention:standard
 _CLOSING = {"{": "}", "[": "]"}
+_LINE_BREAKS = re.compile("\r\n|[\r\n\x85\u2028\u2029]")
 
 
 def explain(error: yaml.MarkedYAMLError, text: str) -> tuple[str, int, int]:
     """(message, line, column) for a YAML syntax error in `text`; line and column count from 0."""
-    lines = text.split("\n")
+    lines = _LINE_BREAKS.split(text)  # as YAML counts lines: \r and \u2028 end one too
     mark = error.problem_mark or error.context_mark
     line, column = (mark.line, mark.column) if mark else (0, 0)
     problem = " ".join((error.problem or error.context or "unreadable YAML").split())
     for rule in (_tab, _first_line, _block_end, _glued, _flow, _simple_key, _open_quote):
-        found = rule(error, problem, lines, line, column)
+        try:
+            found = rule(error, problem, lines, line, column)
+        except (IndexError, ValueError):  # a mark where hostile text has no such line or column
+            found = None
         if found:
             return found
     return _plain_tokens(problem), line, column
