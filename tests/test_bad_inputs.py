@@ -182,3 +182,68 @@ def test_a_new_file_gets_ordinary_permissions(tmp_path):
 def test_a_missing_folder_is_a_user_error(tmp_path):
     with pytest.raises(UserError, match="does not exist"):
         write_atomic(tmp_path / "nowhere" / "T.tex", "x")
+
+
+needs_fifo = pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes need a POSIX system")
+
+
+def _dhsym(args, folder, stdin=None):
+    """A real run with a time limit far off, so that a run that would block for ever fails the test."""
+    return subprocess.run([sys.executable, "-m", "dhsym.cli", *args], cwd=folder, capture_output=True, text=True,
+                          timeout=120, input=stdin, env={**os.environ, "PYTHONIOENCODING": "utf-8"})
+
+
+@needs_fifo
+def test_a_named_pipe_nobody_writes_is_refused_at_once_not_waited_for(tmp_path):
+    os.mkfifo(tmp_path / "robot.yaml")
+    result = _dhsym(["fk", "robot.yaml"], tmp_path)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr.startswith("dhsym: error: robot.yaml: is a named pipe that no program writes to")
+    assert result.stderr.count("\n") == 1 and "- to read standard input" in result.stderr
+
+
+@needs_fifo
+def test_a_named_pipe_nobody_reads_is_refused_as_output_and_no_file_appears(tmp_path):
+    os.mkfifo(tmp_path / "T.tex")
+    result = _dhsym(["latex", "planar2r", "-o", "T.tex"], tmp_path)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr == ("dhsym: error: T.tex: is a named pipe that no program reads, and dhsym does not wait "
+                             "for one; start the reader first, or write to a file\n")
+    assert stat.S_ISFIFO((tmp_path / "T.tex").stat().st_mode) and os.listdir(tmp_path) == ["T.tex"]
+
+
+@needs_fifo
+def test_a_named_pipe_with_a_reader_gets_the_output(tmp_path):
+    os.mkfifo(tmp_path / "T.tex")
+    reader = subprocess.Popen(["cat", "T.tex"], cwd=tmp_path, stdout=subprocess.PIPE, text=True)
+    handle = os.open(tmp_path / "T.tex", os.O_WRONLY)  # waits until cat has opened its end
+    try:
+        write_atomic(tmp_path / "T.tex", "written through the pipe")
+    finally:
+        os.close(handle)
+    assert reader.communicate(timeout=120)[0] == "written through the pipe"
+
+
+def test_a_socket_is_neither_a_robot_file_nor_an_output(tmp_path, monkeypatch):
+    socket = pytest.importorskip("socket")
+    if not hasattr(socket, "AF_UNIX"):
+        pytest.skip("no Unix sockets here")
+    monkeypatch.chdir(tmp_path)  # a short relative name: socket paths are limited to about 100 bytes
+    server = socket.socket(socket.AF_UNIX)
+    server.bind("robot.sock")
+    try:
+        result = _dhsym(["fk", "robot.sock"], tmp_path)
+        assert result.returncode == 2 and result.stderr == "dhsym: error: robot.sock: is a socket, not a robot file\n"
+        with pytest.raises(UserError, match="^robot.sock: is a socket, not a file to write to$"):
+            write_atomic("robot.sock", "x")
+    finally:
+        server.close()
+
+
+def test_devices_and_standard_input_still_work(tmp_path):
+    robot = (Path(__file__).parents[1] / "dhsym" / "robots" / "planar2r.yaml").read_text(encoding="utf-8")
+    assert _dhsym(["latex", "planar2r", "-o", os.devnull], tmp_path).returncode == 0
+    full = _dhsym(["latex", "planar2r", "-o", "/dev/full"], tmp_path) if Path("/dev/full").exists() else None
+    assert full is None or full.stderr == "dhsym: error: /dev/full: cannot write file: No space left on device\n"
+    piped = _dhsym(["fk", "-"], tmp_path, stdin=robot)
+    assert piped.returncode == 0 and "a_{1}" not in piped.stdout and "c12" in piped.stdout

@@ -26,7 +26,7 @@ from dhsym.printing.printers import ExactPrinter, LatexPrinter, TextPrinter, cha
 
 EXAMPLE_SECONDS = 5.0  # generous: a hang is what we look for, not a slow machine
 FUZZ = settings(deadline=None, database=None, suppress_health_check=list(HealthCheck))
-EXPRESSIONS, EXPRESSION_GARBAGE, ROBOTS, ROBOT_GARBAGE = 900, 700, 700, 300  # 2,600 inputs per run
+EXPRESSIONS, EXPRESSION_GARBAGE, ROBOTS, ROBOT_GARBAGE = 900, 700, 700, 300  # 2,600 inputs per run, and SLIPS
 
 
 class ExampleTooSlow(BaseException):
@@ -199,6 +199,64 @@ def test_fuzz_robot_file_garbage(text):
     assert_robot_outcome(text)
 
 
+SLIP_ROBOT = """\
+name: arm
+convention: standard
+joints:
+  - {joint: R, alpha: 0, a: l_1, d: 0, theta: theta_1}
+  - joint: R
+    alpha: -pi/2
+    a: 0
+    d: d_2
+    theta: theta_2
+base: [{Tz: l_0}, {Rz: pi/2}]
+tool:
+  - Tx: l_3
+"""
+SLIPS = 400
+PARSER_JARGON = re.compile(r"<\w[\w ]*>|'\?'|simple key")  # the parser's token names
+
+
+@st.composite
+def slipped_robot_texts(draw):
+    """A good robot file with one or two typing slips: a line indented a little more or less, a
+    tab, the space after - or : lost, a bracket dropped or swapped."""
+    lines = SLIP_ROBOT.splitlines()
+    for _ in range(draw(st.integers(1, 2))):
+        number = draw(st.integers(0, len(lines) - 1))
+        line = lines[number]
+        slip = draw(st.sampled_from(["more", "less", "tab", "dash", "colon", "bracket", "swap"]))
+        if slip == "more":
+            line = " " * draw(st.integers(1, 3)) + line
+        elif slip == "less":
+            line = line[min(draw(st.integers(1, 3)), len(line) - len(line.lstrip(" "))):]
+        elif slip == "tab":
+            line = "\t" + line.lstrip(" ")
+        elif slip in ("dash", "colon"):
+            marks = [i for i in range(len(line) - 1) if line[i:i + 2] == ("- " if slip == "dash" else ": ")]
+            if marks:
+                i = draw(st.sampled_from(marks))
+                line = line[:i + 1] + line[i + 2:]
+        else:
+            marks = [i for i, ch in enumerate(line) if ch in "{}[]"]
+            if marks:
+                i = draw(st.sampled_from(marks))
+                swapped = {"{": "[", "}": "]", "[": "{", "]": "}"}[line[i]] if slip == "swap" else ""
+                line = line[:i] + swapped + line[i + 1:]
+        lines[number] = line
+    return "\n".join(lines) + "\n"
+
+
+@settings(FUZZ, max_examples=SLIPS)
+@given(slipped_robot_texts())
+def test_fuzz_typing_slips_get_plain_messages(text):
+    """Every slip ends like any input (a robot or a located error), and a YAML syntax error
+    names the slip in plain words, not in the parser's tokens."""
+    assert_robot_outcome(text)
+    try:
+        load_robot_text(text, "fuzz.yaml")
+    except UserError as error:
+        assert not PARSER_JARGON.search(error.message), (text, error.message)
 
 
 # --- numbers and angles as written: what is printed reads back to the exact value --------------

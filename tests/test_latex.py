@@ -1,10 +1,11 @@
 """`dhsym latex` and `dhsym fk/links --format latex`: documents that compile with pdflatex,
 fit their pages (no overfull boxes), and print the textbook forms.
 
-Every built-in robot and every test robot (TEST_ROBOTS) is compiled five ways (slides with and
-without --steps, article with --steps, snippet and `fk --format latex` each wrapped in a
-minimal amsmath document), once per module and in parallel. A document fails on any LaTeX
-error and on any overfull box wider or taller than OVERFULL_TOLERANCE_PT. Golden files:
+Every built-in robot, every test robot (TEST_ROBOTS) and every imported one (IMPORTED) is
+compiled six ways (slides with and without --steps, article with --steps, snippet, and
+`fk --format latex` and `table --format latex` each wrapped in a minimal amsmath document),
+once per module and in parallel (or only those that `-k` selects). A document fails on any
+LaTeX error and on any overfull box wider or taller than OVERFULL_TOLERANCE_PT. Golden files:
 tests/golden/*.tex; after an intended change of the output, rewrite them with
 DHSYM_UPDATE_GOLDEN=1.
 """
@@ -26,7 +27,7 @@ from dhsym.io.robotfile import load_robot_text
 from dhsym.latex import document as latexdoc
 from dhsym.latex import layout as texlayout
 from dhsym.latex import width as texwidth
-from dhsym.latex.results import results_latex
+from dhsym.latex.results import results_latex, table_latex
 from dhsym.printing.printers import LatexPrinter
 
 GOLDEN = Path(__file__).parent / "golden"
@@ -37,13 +38,23 @@ INSTALL_HINT = ("pdflatex is not installed: run `make tex` (as root it installs 
 needs_tex = pytest.mark.skipif(shutil.which("pdflatex") is None, reason=INSTALL_HINT)
 
 VARIANTS = {"slides-steps": ("slides", True), "slides": ("slides", False),
-            "article-steps": ("article", True), "snippet": ("snippet", False), "fk": ("fk", False)}
+            "article-steps": ("article", True), "snippet": ("snippet", False), "fk": ("fk", False),
+            "table": ("table", False)}
 SNIPPET_HOST = "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n{}\\end{{document}}\n"
 
+# Robots as `dhsym import` writes them (iCub and Baxter arms from example-robot-data, one with
+# the URDF's joint names, one with the long decimals of an older importer), kept as YAML so that
+# these tests do not depend on the importer.
+IMPORTED = {f"imported-{path.stem}": path
+            for path in sorted((Path(__file__).parent / "data" / "imported").glob("*.yaml"))}
+
+
 def _robot(name: str):
-    """A built-in robot, or a test robot by its key in TEST_ROBOTS."""
+    """A built-in robot, a test robot by its key in TEST_ROBOTS, or an imported one from IMPORTED."""
     if name in TEST_ROBOTS:
         return load_robot_text(TEST_ROBOTS[name], f"{name}.yaml").chain
+    if name in IMPORTED:
+        return load_robot_text(IMPORTED[name].read_text(encoding="utf-8"), IMPORTED[name].name).chain
     return load(name)
 
 
@@ -51,21 +62,24 @@ def _document(robot, variant: str, **options) -> str:
     kind, steps = VARIANTS[variant]
     if kind == "fk":
         return SNIPPET_HOST.format(results_latex(robot, [(robot.first_frame, robot.last_frame, robot.fk())]) + "\n")
+    if kind == "table":  # dhsym table --format latex
+        return SNIPPET_HOST.format(table_latex(robot) + "\n")
     text = latexdoc.document(robot, kind, steps=steps, **options)
     return SNIPPET_HOST.format(text) if kind == "snippet" else text
 
 
-ROBOTS = builtin_names() + list(TEST_ROBOTS)
+ROBOTS = builtin_names() + list(TEST_ROBOTS) + list(IMPORTED)
 
 
 def _notebook_displays() -> str:
-    """Every robot's whole transform as a notebook shows it, on a line as wide as the notebook
+    """Every robot's table and whole transform as a notebook shows them, on a line as wide as the notebook
     page the layout assumes: pdflatex reads the same LaTeX as MathJax, and nothing overflows."""
     width = texlayout.PAGES["notebook"].width_pt
     preamble = (f"\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage[textwidth={width}pt,"
                 f"paperwidth={width + 60}pt,textheight=3000pt,paperheight=3100pt]{{geometry}}\n"
                 "\\begin{document}\n")  # as tall as the 7-axis arm's elements and legend
-    body = "".join(f"\\[\n{display.transform(chain, chain.first_frame, chain.last_frame).latex}\n\\]\n"
+    body = "".join(f"\\[\n{display.table(chain).latex}\n\\]\n"
+                   f"\\[\n{display.transform(chain, chain.first_frame, chain.last_frame).latex}\n\\]\n"
                    for chain in map(_robot, ROBOTS))
     return preamble + body + "\\end{document}\n"
 
@@ -89,18 +103,45 @@ def _all_elements() -> list[str]:
     return sorted(elements)
 
 
+class _Compiled(dict):
+    """{job name: (exit status, log text, pdf path)}, each document compiled when first asked for."""
+
+    def __init__(self, folder: Path):
+        super().__init__()
+        self.folder = folder
+
+    def __missing__(self, job: str):
+        self.prefetch([job])
+        return self[job]
+
+    def prefetch(self, jobs) -> None:
+        """Compile the jobs not compiled yet, in parallel."""
+        jobs = [job for job in dict.fromkeys(jobs) if job not in self]
+        for job in jobs:
+            (self.folder / f"{job}.tex").write_text(_source(job), encoding="utf-8")
+        with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
+            self.update(zip(jobs, pool.map(lambda job: _pdflatex(self.folder, job), jobs), strict=True))
+
+
+def _source(job: str) -> str:
+    if job == "puma560-inverse-slides":
+        return _document(load("puma560"), "slides-steps", start="6", end="2")
+    if job == "width-probe":
+        return _width_probe()
+    if job == "notebook-displays":
+        return _notebook_displays()
+    name, variant = next((name, variant) for name in ROBOTS for variant in VARIANTS if job == f"{name}-{variant}")
+    return _document(_robot(name), variant)
+
+
 @pytest.fixture(scope="module")
-def compiled(tmp_path_factory):
-    """{job name: (exit status, log text, pdf path)} for every document, compiled once."""
-    folder = tmp_path_factory.mktemp("latex")
-    sources = {f"{name}-{variant}": _document(_robot(name), variant) for name in ROBOTS for variant in VARIANTS}
-    sources["puma560-inverse-slides"] = _document(load("puma560"), "slides-steps", start="6", end="2")
-    sources["width-probe"] = _width_probe()
-    sources["notebook-displays"] = _notebook_displays()
-    for job, text in sources.items():
-        (folder / f"{job}.tex").write_text(text, encoding="utf-8")
-    with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
-        return dict(zip(sources, pool.map(lambda job: _pdflatex(folder, job), sources), strict=True))
+def compiled(tmp_path_factory, request):
+    """The compiled documents; those of the selected robot tests (all, or those `-k` picks) at once."""
+    result = _Compiled(tmp_path_factory.mktemp("latex"))
+    selected = [item.callspec.params for item in request.session.items
+                if item.module is request.module and hasattr(item, "callspec")]
+    result.prefetch(f"{p['name']}-{p['variant']}" for p in selected if "name" in p and "variant" in p)
+    return result
 
 
 def _pdflatex(folder: Path, job: str):
@@ -156,10 +197,12 @@ def test_width_estimate_matches_tex(compiled):
 
 @needs_tex
 @pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm (poppler-utils) is not installed")
-def test_puma_slides_render_with_everything_inside_the_page(compiled, tmp_path):
+@pytest.mark.parametrize("job", ["puma560-slides-steps", "imported-icub_arm_urdf_names-slides",
+                                 "imported-long_decimals-slides"])
+def test_slides_render_with_everything_inside_the_page(compiled, tmp_path, job):
     import matplotlib.image
 
-    _, log, pdf = compiled["puma560-slides-steps"]
+    _, log, pdf = compiled[job]
     pages = int(re.search(r"Output written on .*\((\d+) pages?", log).group(1))
     subprocess.run(["pdftoppm", "-r", "40", "-png", str(pdf), str(tmp_path / "page")], check=True, timeout=120)
     images = sorted(tmp_path.glob("page-*.png"))
@@ -174,6 +217,48 @@ def test_puma_slides_render_with_everything_inside_the_page(compiled, tmp_path):
 
 
 # ---------------------------------------------------------------- layout rules, no TeX needed
+
+def _table_frames(name: str) -> list[str]:
+    return [frame for frame in _frames(latexdoc.document(_robot(name), "slides")) if "{DH table" in frame]
+
+
+def test_a_table_too_wide_for_the_frame_is_split_into_arrays_of_columns_each_with_i():
+    frames = _table_frames("imported-icub_arm_urdf_names")  # long joint names from the URDF
+    arrays = [re.findall(r"\\begin\{array\}\{c\|c*\}\n(.*?) \\\\", frame) for frame in frames]
+    headers = [header for found in arrays for header in found]
+    assert len(headers) == 2 and all(header.startswith("i & ") for header in headers)
+    columns = [column for header in headers for column in header.split(" & ")[1:]]
+    assert columns == ["\\alpha_{i-1}", "a_{i-1}", "d_i", "\\theta_i"]  # every column once, in order
+    assert "l_{shoulder,pitch}^{*}" in "".join(frames)
+
+
+def test_the_notebook_table_follows_the_same_rule():
+    assert display.table(load("puma560")).latex.startswith("\\begin{array}{c|cccc}\ni & \\alpha_{i-1}")
+    split = display.table(_robot("imported-long_decimals")).latex
+    assert split.startswith("\\begin{array}{l}\n\\begin{array}{c|cc}\ni & \\theta_i & d_i \\\\")
+    assert "\\begin{array}{c|cc}\ni & a_i & \\alpha_i \\\\" in split
+
+
+def test_a_column_too_wide_alone_lists_each_rows_parameters_by_name():
+    text = "".join(_table_frames("imported-long_decimals"))
+    assert "\\begin{array}" not in text
+    assert "d_{1} &= -0.0012345678901234567 + 0.026250000000000006 \\sqrt{2} \\\\\n&\\quad {}+ 0.028877500000000004" \
+        in text  # broken before a top-level sign, as a matrix element
+    assert "\\alpha_{6} &= \\pi/2" in text and "d_{5} &= q_{5}^{*} + 0.13730000000000001" in text
+
+
+def test_a_fixed_transform_too_wide_for_the_line_is_a_display_broken_between_factors():
+    article = latexdoc.document(_robot("imported-icub_arm"), "article")
+    assert "Fixed base transform:\\par\n\\[\n\\begin{aligned}\n{}^{\\mathrm{base}}T_{0} &= T_{x}(" in article
+    assert "\\,T_{y}(0.1433) \\\\\n&\\quad {}T_{z}(" in article
+    short = load_robot_text("convention: standard\njoints: [{joint: R, alpha: 0, a: l_1, d: 0, theta: theta_1}]\n"
+                            "tool: [{Tz: d_6}]\n", "arm.yaml").chain  # one that fits stays a sentence
+    assert "Fixed tool transform: ${}^{1}T_{\\mathrm{tool}} = T_{z}(d_{6})$." in latexdoc.document(short, "article")
+    slides = _table_frames("imported-long_decimals")
+    lead_in = next(frame for frame in slides if "Fixed base transform:" in frame)
+    assert "{}^{\\mathrm{base}}T_{0} &= T_{x}(" in lead_in  # the lead-in never ends a frame alone
+
+
 
 def _frames(text: str) -> list[str]:
     return re.findall(r"\\begin\{frame\}.*?\\end\{frame\}", text, re.DOTALL)

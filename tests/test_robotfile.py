@@ -76,3 +76,40 @@ def test_every_builtin_robot_loads_and_cites_a_source():
         chain = load(name)
         assert chain.source, name
         assert set(chain.sample) >= chain.fk().free_symbols - set(chain.joint_variables), name
+
+
+def _one_row(row: str) -> str:
+    return f"convention: standard\njoints:\n  - {{{row}}}\n"
+
+
+@pytest.mark.parametrize("row, column, fix", [
+    ("joint: P, alpha: 0, a: 0, d: d_1, theta: theta_1", 47, "write joint: R if this joint turns"),
+    ("joint: P, alpha: 0, a: 0, d: l_1, theta: θ1", 47, "write joint: R if this joint turns"),
+    ("joint: P, alpha: 0, a: 0, d: d_1, theta: q_1 + pi/2", 47, "write joint: R if this joint turns"),
+    ("joint: R, alpha: 0, a: 0, d: q_1, theta: theta_1", 35, "write joint: P if this joint slides"),
+    ("joint: P, alpha: 0, a: 0, d: theta_1, theta: 0", 35, "write joint: R and put theta_1 in theta"),
+    ("joint: R, alpha: 0, a: 0, d: 0, theta: d_1", 45, "write joint: P and put d_1 in d"),
+    ("joint: R, alpha: 0, a: 0, d: d_1, theta: 0", 47, "d holds d_1: write joint: P if this joint slides"),
+])
+def test_a_joint_variable_in_the_wrong_column_is_an_error_with_the_fix(row, column, fix):
+    with pytest.raises(UserError) as error:
+        load_robot_text(_one_row(row), "arm.yaml")
+    assert str(error.value).startswith(f"arm.yaml:3:{column}: joint row 1 ")
+    assert fix in str(error.value)
+
+
+@pytest.mark.parametrize("row, variable", [
+    ("joint: P, alpha: 0, a: 0, d: d_1, theta: theta_0", "d_1"),  # a constant offset, marked by its subscript
+    ("joint: P, alpha: 0, a: 0, d: d_1, theta: beta", "d_1"),  # a constant angle with a name of its own
+    ("joint: P, alpha: 0, a: 0, d: d_1, theta: theta_1, var: d_1", "d_1"),  # var settles which one moves
+    ("joint: R, alpha: 0, a: 0, d: d_1, theta: theta_1", "theta_1"),  # d_1: the usual offset of a revolute joint
+    ("joint: P, alpha: -pi/2, a: 0, d: l_1, theta: 0", "l_1"),  # any name may slide
+])
+def test_constant_symbols_and_named_variables_stay_allowed(row, variable):
+    assert load_robot_text(_one_row(row), "arm.yaml").chain.rows[0].variable.name == variable
+
+
+@pytest.mark.parametrize("text", ["sqrt(-(theta_1*theta_1))", "sqrt(-l_1^2)", "sqrt(-1)"])
+def test_a_value_imaginary_for_every_nonzero_symbol_is_refused(text):
+    with pytest.raises(UserError, match="not a real number"):
+        parse_expression(text)

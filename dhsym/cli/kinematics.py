@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from ..latex.results import ARTICLE_TEXT_WIDTH_PT, results_latex
+from ..latex.results import ARTICLE_TEXT_WIDTH_PT, results_latex, table_latex
 from ..printing import render
 from .limits import refuse_if_too_large
 from .options import format_options, frame_options, robot_options
@@ -63,7 +63,7 @@ def run_table(robot, args) -> str:
                  "variable": r.variable.name} for r in chain.rows]
         return json.dumps({"robot": chain.name, "convention": chain.convention, "rows": rows}, indent=2)
     if args.format == "latex":
-        return "\\[\n" + render.latex_table(chain) + "\n\\]"
+        return table_latex(chain)
     note = render.wrap(render.convention_note(chain.convention, ascii=args.ascii) + "; * marks joint variables",
                        args.width, "  ")
     return _header(chain, "DH table", args.ascii) + "\n" + note + "\n\n" + \

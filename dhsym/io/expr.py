@@ -270,7 +270,7 @@ class _Builder:
             raise self.fail(node, "expression is undefined (division by zero?)")
         if _too_big(result):
             raise self.fail(node, f"number too large (more than {MAX_DIGITS} digits)")
-        if result.is_real is False:
+        if result.is_real is False or result.has(sympy.I):  # sqrt(-(x*x)) is I*|x|: real only at 0
             raise self.fail(node, "expression is not a real number")
         return result
 

@@ -1,8 +1,9 @@
 """Writing result files atomically: a temporary file beside the target, then a rename.
 
 A failure at any point leaves either the old file or no file, never half of a new one. A target
-that is not a regular file (/dev/stdout, a named pipe, /dev/full) is written in place: renaming
-over it would replace the device itself.
+that is not a regular file (/dev/stdout, /dev/null, /dev/full, a pipe) is written in place:
+renaming over it would replace the device itself. A named pipe is written only if a program
+reads it already (dhsym never waits for a reader); a socket or a disk is refused.
 
 >>> import tempfile, os
 >>> folder = tempfile.mkdtemp()
@@ -12,11 +13,14 @@ over it would replace the device itself.
 """
 from __future__ import annotations
 
+import errno
 import os
+import stat
 import tempfile
 from pathlib import Path
 
 from ..errors import Location, UserError
+from .yamlsafe import NONBLOCKING, special_file_refusal
 
 
 def write_atomic(path, data: str | bytes, inputs=()) -> None:
@@ -28,7 +32,14 @@ def write_atomic(path, data: str | bytes, inputs=()) -> None:
                 raise UserError("refusing to overwrite the input file with the output", Location(str(target)))
         except OSError:
             pass
-    if target.exists() and not target.is_file() and not target.is_dir():
+    try:
+        mode = target.stat().st_mode
+    except OSError:
+        mode = None  # a new file, or a path that the writing below reports on
+    if mode is not None and not stat.S_ISREG(mode) and not stat.S_ISDIR(mode):
+        refusal = special_file_refusal(mode, "file to write to")
+        if refusal:
+            raise UserError(refusal, Location(str(target)))
         _write_in_place(target, data)
         return
     folder = target.parent if str(target.parent) else Path(".")
@@ -58,7 +69,16 @@ def _write_in_place(target: Path, data: str | bytes) -> None:
     """Write to a device or a pipe as it is; its errors (a full device) are the user's to know."""
     binary = isinstance(data, bytes)
     try:
-        with open(target, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as stream:
+        handle = os.open(target, os.O_WRONLY | NONBLOCKING)  # a pipe with no reader fails at once (ENXIO)
+    except OSError as exc:
+        if exc.errno == errno.ENXIO:
+            raise UserError("is a named pipe that no program reads, and dhsym does not wait for one; start the "
+                            "reader first, or write to a file", Location(str(target))) from None
+        raise UserError(f"cannot write file: {exc.strerror or exc}", Location(str(target))) from None
+    try:
+        with open(handle, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as stream:
+            if NONBLOCKING:
+                os.set_blocking(handle, True)  # a reader is there: wait for it as any pipe does
             stream.write(data)
     except OSError as exc:
         raise UserError(f"cannot write file: {exc.strerror or exc}", Location(str(target))) from None

@@ -31,7 +31,7 @@ from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
 from .axesfile import axes_chain
 from .expr import Reading, parse_expression
-from .suspicious import misspelt_pi, near_multiple_of_pi, printed_key, printed_text
+from .suspicious import misplaced_variable, misspelt_pi, near_multiple_of_pi, printed_key, printed_text
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
 
 MAX_JOINTS = 24
@@ -88,7 +88,8 @@ class _Reader:
     def mapping(self, node: yaml.Node, what: str, allowed) -> dict:
         """A mapping's items as {key: (key node, value node)}, refusing unknown keys."""
         if not isinstance(node, yaml.MappingNode):
-            raise UserError(f"{what} must be a mapping of keys to values, not {_kind(node)}", self.where(node))
+            glued = _glued_key(node) if isinstance(node, yaml.ScalarNode) else ""
+            raise UserError(f"{what} must be a mapping of keys to values, not {_kind(node)}{glued}", self.where(node))
         items, previous = {}, None
         for key_node, value_node in node.value:
             if not isinstance(key_node, yaml.ScalarNode):
@@ -98,7 +99,8 @@ class _Reader:
                 raise UserError(f"unknown key {key!r} in {what}: inside {{...}} a comma separates entries; write "
                                 f"decimals with a point, as in {previous.strip()}.{key}", self.where(key_node))
             if key not in allowed:
-                raise UserError(f"unknown key {key!r} in {what}{_suggestion(key, allowed)}", self.where(key_node))
+                hint = _glued_key(key_node) or _suggestion(key, allowed)
+                raise UserError(f"unknown key {key!r} in {what}{hint}", self.where(key_node))
             if key in items:
                 raise UserError(f"key {key!r} appears twice in {what}", self.where(key_node))
             items[key] = (key_node, value_node)
@@ -229,6 +231,11 @@ class _Reader:
         moving = "theta" if kind == "R" else "d"
         variable = self.joint_variable(what, kind, values, nodes)
         self.refuse_nonlinear(values[moving], variable, f"{what} {moving}", readings[moving], nodes[moving])
+        for key in ("theta", "d"):  # a variable in the other column, or named for it: joint: P with theta_1
+            for name, place in readings[key].names:
+                slip = (key != moving or name == variable.name) and misplaced_variable(kind, key, name, "var" in nodes)
+                if slip:
+                    raise UserError(f"{what} {key}: {slip}", place)
         for key in ("alpha", "a", "theta" if kind == "P" else "d"):
             if variable in values[key].free_symbols:
                 raise UserError(f"{what} {key}: joint variable {variable} also appears here; only {moving} "
@@ -259,7 +266,9 @@ class _Reader:
             return free[0]
         if not free:
             joint = "revolute" if kind == "R" else "prismatic"
-            raise UserError(f"{what} {moving}: no joint variable; a {joint} joint needs a symbol in {moving}",
+            other = sorted(map(str, values["d"].free_symbols)) if kind == "R" else []
+            hint = f"; d holds {', '.join(other)}: write joint: P if this joint slides" if other else ""
+            raise UserError(f"{what} {moving}: no joint variable; a {joint} joint needs a symbol in {moving}{hint}",
                             self.where(nodes[moving]))
         names = ", ".join(s.name for s in free)
         pi = [misspelt_pi(s.name) for s in free if misspelt_pi(s.name)]
@@ -378,3 +387,11 @@ def _kind(node: yaml.Node) -> str:
     if isinstance(node, yaml.MappingNode):
         return "a mapping"
     return "a single value" if node.value else "an empty value"
+
+
+def _glued_key(node: yaml.ScalarNode) -> str:
+    """`; write 'alpha: 0' ...` for a value that is a key and its value without the space."""
+    key, colon, value = node.value.partition(":")
+    if node.style is None and colon and key.strip() and value and not value[0].isspace():
+        return f"; a key needs a space after its ':': write '{key.strip()}: {value}'"
+    return ""

@@ -145,3 +145,33 @@ def printed_text(name: str) -> str:
 
 
 _GREEK_NAMES = {letter: word for word, letter in greek_unicode.items()}  # 'θ' -> 'theta'
+
+
+def misplaced_variable(joint: str, column: str, name: str, named_var: bool) -> str | None:
+    """Why `name` in `column` (theta or d) of a `joint` (R or P) row reads as a joint variable
+    in the wrong column, or None. `named_var`: the row names its variable with var, which
+    settles the question. θ and q name joint angles, q any joint variable; d_1 in d of a
+    revolute row is an offset, and a subscript 0 marks a constant (theta_0).
+
+    >>> print(misplaced_variable("P", "theta", "theta_1", False)[:89])
+    theta_1 looks like a joint variable, but joint: P (prismatic) moves along d and keeps the
+    >>> misplaced_variable("P", "theta", "theta_0", False), misplaced_variable("R", "d", "d_1", False)
+    (None, None)
+    """
+    if named_var:
+        return None
+    base, subs, _ = printed_key(name)
+    if subs and subs[0] in ("0", "00", "off", "offset"):
+        return None
+    kind, other = ("P (prismatic)", "R") if joint == "P" else ("R (revolute)", "P")
+    motion = "moves along d and keeps theta constant" if joint == "P" else "turns about z and keeps d constant"
+    moving, verb = ("d", "turns") if joint == "P" else ("theta", "slides")
+    if column != moving and (base == "q" or (joint == "P" and base == "theta")):
+        return (f"{name} looks like a joint variable, but joint: {kind} {motion}; write joint: {other} if this "
+                f"joint {verb}, or move the variable to {moving} (or name it with var to keep {name} a constant)")
+    if column == moving and base == ("theta" if joint == "P" else "d"):
+        named = "an angle" if joint == "P" else "a length along z"
+        return (f"{name} is named like {named}, but joint: {kind} {motion[:motion.index(' and')]}; write "
+                f"joint: {other} and put {name} in {'theta' if joint == 'P' else 'd'} if this joint {verb}, "
+                f"or name it with var to keep it here")
+    return None

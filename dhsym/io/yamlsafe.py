@@ -13,11 +13,14 @@ dhsym.errors.UserError: arm.yaml:2:4: YAML aliases (*name) are not allowed in ro
 """
 from __future__ import annotations
 
+import os
+import stat
 from pathlib import Path
 
 import yaml
 
 from ..errors import Location, UserError
+from .yamlhints import explain
 
 MAX_FILE_BYTES = 1 << 20
 MAX_YAML_DEPTH = 10  # a robot file needs 3 (file, joints list, row)
@@ -26,20 +29,47 @@ YAML_TAG = "tag:yaml.org,2002:"  # prefix of the core schema tags: null, bool, i
 
 
 def read_text_file(path: str | Path) -> str:
-    """A small UTF-8 text file's contents; folders, huge or non-UTF-8 files are UserErrors."""
+    """A small UTF-8 text file's contents; folders, sockets, huge or non-UTF-8 files are UserErrors.
+
+    A named pipe is read only if a program writes to it already: dhsym never waits for a writer
+    (opening a pipe for reading would otherwise block until one comes, perhaps for ever).
+    """
     path = Path(path)
     where = Location(str(path))
     try:
-        if path.is_dir():
-            raise UserError("is a folder, not a robot file", where)
-        with path.open("rb") as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)  # never more than the limit, whatever stat says
+        mode = path.stat().st_mode
+        refusal = special_file_refusal(mode, "robot file")
+        if refusal:
+            raise UserError(refusal, where)
+        handle = os.open(path, os.O_RDONLY | NONBLOCKING)  # a pipe's open returns at once
+        if NONBLOCKING:
+            os.set_blocking(handle, True)  # and its read waits for the writer that is there
+        with os.fdopen(handle, "rb") as stream:
+            data = stream.read(MAX_FILE_BYTES + 1)  # never more than the limit, whatever stat says
     except OSError as exc:
         raise UserError(f"cannot read file: {exc.strerror or exc}", where) from None
+    if not data and stat.S_ISFIFO(mode):
+        raise UserError("is a named pipe that no program writes to, and dhsym does not wait for one; start the "
+                        "writer first, or give the file itself, or - to read standard input", where)
     if len(data) > MAX_FILE_BYTES:
         raise UserError(f"file is larger than {MAX_FILE_BYTES // (1 << 20)} MiB, the limit for robot files",
                         Location(str(path), 1, 1))
     return decode_utf8(data, str(path))
+
+
+NONBLOCKING = getattr(os, "O_NONBLOCK", 0)
+
+
+def special_file_refusal(mode: int, what: str) -> str | None:
+    """Why a file of this `stat` mode cannot be a `what` (a folder, a socket, a disk), or None.
+
+    >>> special_file_refusal(stat.S_IFSOCK, "robot file")
+    'is a socket, not a robot file'
+    """
+    for test, kind in ((stat.S_ISDIR, "a folder"), (stat.S_ISSOCK, "a socket"), (stat.S_ISBLK, "a block device")):
+        if test(mode):
+            return f"is {kind}, not a {what}"
+    return None
 
 
 def decode_utf8(data: bytes, filename: str) -> str:
@@ -70,8 +100,8 @@ def compose(text: str, filename: str) -> yaml.Node:
         raise UserError(f"character U+{ord(character):04X} is not allowed in a robot file",
                         Location(filename, line, column)) from None
     except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        raise UserError(f"YAML syntax error: {_yaml_problem(exc)}", mark_location(filename, mark)) from None
+        message, line, column = explain(exc, text)
+        raise UserError(f"YAML syntax error: {message}", Location(filename, line + 1, column + 1)) from None
     except yaml.YAMLError as exc:
         raise UserError(f"YAML error: {_one_line(str(exc))}", Location(filename, 1, 1)) from None
     finally:
@@ -80,13 +110,6 @@ def compose(text: str, filename: str) -> yaml.Node:
     if node is None:
         raise UserError("file is empty; expected a robot description", Location(filename, 1, 1))
     return node
-
-
-def _yaml_problem(exc: yaml.MarkedYAMLError) -> str:
-    problem = _one_line(exc.problem or exc.context or "unreadable YAML")
-    if "'\\t'" in problem:
-        return "a tab character; YAML indentation must use spaces"
-    return problem
 
 
 def _one_line(message: str) -> str:

@@ -21,9 +21,10 @@ from dataclasses import dataclass
 import sympy
 
 from ..printing.printers import LatexPrinter, chain_settings
-from ..printing.render import latex_matrix, latex_table, transform_title
-from .layout import PAGES, display, matrix_height, matrix_items, stacked
+from ..printing.render import latex_matrix, latex_printer, latex_table_cells, transform_title
+from .layout import PAGES, Block, display, matrix_height, matrix_items, stacked
 from .legend import legend_items
+from .tables import table_items
 
 
 @dataclass(frozen=True)
@@ -39,9 +40,14 @@ class Latex:
         return self.latex
 
 
-def table(chain) -> Latex:
-    """The DH table in its convention's column order; joint variables starred."""
-    return Latex(latex_table(chain))
+def table(chain, page: str = "notebook") -> Latex:
+    """The DH table in its convention's column order; joint variables starred. A table too
+    wide for the `page` is split into tables of columns (see `tables`)."""
+    header, rows = latex_table_cells(chain, latex_printer(chain, marked=chain.joint_variables))
+    items = table_items(header, rows, PAGES[page], len(rows))
+    if len(items) == 1 and isinstance(items[0], Block):
+        return Latex(items[0].math)  # the usual case: one array
+    return Latex(stacked(items, PAGES[page]))
 
 
 def matrix(chain, value, name: str = "", legend: bool = True, page: str = "notebook") -> Latex:

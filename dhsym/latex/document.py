@@ -98,8 +98,8 @@ def _article(chain, content: list[Section], page: Page) -> str:
     out = [ARTICLE_PREAMBLE, "\\begin{document}\n", f"\\section*{{{tex_text(chain.name)}}}\n",
            f"{tex_text(_subtitle(chain))}.\n\nSource: {tex_prose(chain.source or 'not given')}\n",
            f"Robot file: {tex_text(robot_file(chain))}\n"]
-    if chain.notes:
-        out.append(f"Notes: {tex_prose(chain.notes)}\n")
+    if chain.notes:  # ragged right: an imported robot's notes hold long names that justify badly
+        out.append(f"{{\\raggedright Notes: {tex_prose(chain.notes)}\\par}}\n")
     part = None
     for section in content:
         if section.part != part:

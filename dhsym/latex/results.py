@@ -19,9 +19,10 @@ c_{1} &= \cos{\theta_{1}} & s_{1} &= \sin{\theta_{1}}
 from __future__ import annotations
 
 from ..printing.printers import LatexPrinter, chain_settings
-from ..printing.render import transform_title
+from ..printing.render import latex_printer, latex_table_cells, transform_title
 from .layout import PAGES, Page, flat, matrix_items
 from .legend import legend_items
+from .tables import table_items
 
 ARTICLE_TEXT_WIDTH_PT = PAGES["snippet"].width_pt  # a standard `article` at 10 pt
 
@@ -37,3 +38,16 @@ def results_latex(chain, results, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) 
         parts.append("\n".join(block.latex for block in flat(matrix_items(title, cells, page))))
     legend = flat(legend_items(printer, page))
     return "\n\n".join(parts + (["\n".join(block.latex for block in legend)] if legend else []))
+
+
+def table_latex(chain, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) -> str:
+    r"""The DH table (``dhsym table --format latex``) as displays that fit `text_width_pt`: one
+    array, or arrays of columns, or each row's parameters by name (see `tables`).
+
+    >>> from dhsym.io.library import load
+    >>> print(table_latex(load("planar2r")).splitlines()[:3])
+    ['\\[', '\\begin{array}{c|cccc}', 'i & \\theta_i & d_i & a_i & \\alpha_i \\\\']
+    """
+    page = Page(text_width_pt, PAGES["snippet"].font_pt)
+    header, rows = latex_table_cells(chain, latex_printer(chain, marked=chain.joint_variables))
+    return "\n".join(block.latex for block in flat(table_items(header, rows, page, len(rows))))

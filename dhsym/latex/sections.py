@@ -21,20 +21,21 @@ from dataclasses import dataclass, field
 from itertools import pairwise
 
 from ..printing.printers import LatexPrinter, chain_settings
-from ..printing.render import latex_array, latex_table_cells, transform_title
+from ..printing.render import latex_table_cells, transform_title
 from .layout import (
     ARRAY_ROW,
     FIRST_DISPLAY,
     NEXT_DISPLAY,
+    TEXT_CHARACTER,
     Page,
     bmatrix_width,
     display,
     matrix_items,
     paragraph,
-    row_height,
     step_items,
 )
 from .legend import legend_items
+from .tables import product_display, table_items
 from .width import math_width
 
 SIDE_BY_SIDE_GAP = "\\qquad"
@@ -94,18 +95,21 @@ def _table_section(chain, page: Page) -> Section:
     notes = [paragraph("${}^{*}$ marks the joint variable of each row.", page)]
     for which, steps, i, j in (("base", chain.base, "base", 0), ("tool", chain.tool, chain.n, "tool")):
         if steps:
-            motions = "\\,".join(f"{s.kind[0]}_{{{s.kind[1]}}}({printer.doprint(s.value)})" for s in steps)
+            factors = [f"{s.kind[0]}_{{{s.kind[1]}}}({printer.doprint(s.value)})" for s in steps]
             shown = transform_title(chain.frame_number(i), chain.frame_number(j), "latex")
-            notes.append(paragraph(f"Fixed {which} transform: ${shown} = {motions}$.", page))
+            product = "\\,".join(factors)
+            lead = f"Fixed {which} transform: "
+            if len(lead) * TEXT_CHARACTER + math_width(f"{shown} = {product}.") <= page.width:
+                notes.append(paragraph(f"{lead}${shown} = {product}$.", page))
+            else:  # too wide for a line of text: the product as a display, broken between factors
+                lead_in = paragraph(f"Fixed {which} transform:", page)
+                lead_in.keep_with_next = True
+                notes += [lead_in, product_display(shown, factors, page)]
     per_block = len(rows)
     if page.height_pt:  # a long table continues on the next frame
         room = page.height_pt - FIRST_DISPLAY - NEXT_DISPLAY * len(notes) - sum(n.height for n in notes)
         per_block = max(3, int((room - 3.0 - ARRAY_ROW) / ARRAY_ROW))
-    items = []
-    for first in range(0, len(rows), per_block):
-        chunk = rows[first:first + per_block]
-        items.append(display(latex_array(header, chunk),
-                             3.0 + ARRAY_ROW + sum(row_height(r, array=True) for r in chunk)))
+    items = table_items(header, rows, page, per_block)
     return Section("DH table", "DH table", items + notes)
 
 

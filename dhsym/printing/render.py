@@ -287,7 +287,7 @@ def latex_table_cells(chain, printer: LatexPrinter) -> tuple[list[str], list[lis
 def latex_array(header: list[str], rows: list[list[str]]) -> str:
     """A DH table (or part of one) as an array with a rule under its header."""
     body = " & ".join(header) + " \\\\\n\\hline\n" + " \\\\\n".join(" & ".join(row) for row in rows)
-    return "\\begin{array}{c|cccc}\n" + body + "\n\\end{array}"
+    return "\\begin{array}{c|" + "c" * (len(header) - 1) + "}\n" + body + "\n\\end{array}"
 
 
 def json_result(chain, i, j, matrix: sympy.Matrix) -> dict:
