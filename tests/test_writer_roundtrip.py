@@ -368,3 +368,13 @@ def test_a_name_with_characters_yaml_refuses_in_a_file_is_escaped_and_reads_back
     chain.name, chain.notes = "arm\x85\u2028\x9f \"quoted\" → \U0001F916\tend", "line one\nline two"
     _, again = read_back(chain)
     assert (again.name, again.notes) == (chain.name, chain.notes)
+
+
+def test_a_variable_named_like_a_constant_of_its_column_is_written_with_var():
+    """A URDF joint named d_1 that turns: the reader would take d_1 in theta for a misplaced
+    length, so the writer names the variable with var and the file reads back."""
+    d_1 = sympy.Symbol("d_1", real=True)
+    chain = Chain([DHRow.revolute(d_1, d=sympy.Rational(1, 10))], "standard", name="d1arm")
+    text = robot_yaml(chain)
+    assert "var: d_1" in text
+    assert read_back(chain).rows[0].variable == d_1

@@ -36,6 +36,7 @@ from ..errors import UserError
 from ..geometry.rounding import Rounding, dh_label, fit, joined, rounding_note, written_text
 from .expr import MAX_LENGTH, parse_expression
 from .robotfile import MAX_JOINTS, load_robot_text
+from .suspicious import misplaced_variable
 from .yamlsafe import MAX_FILE_BYTES
 
 COLUMNS = {"standard": ("theta", "d", "a", "alpha"), "modified": ("alpha", "a", "d", "theta")}
@@ -143,7 +144,7 @@ def robot_yaml(chain, notes: str | None = None) -> str:
                 raise UserError(f"cannot write joint row {number} {key} as a robot file: {values.why_not(text)}; "
                                 "nothing was written")
             fields.append(f"{key}: {_yaml_value(text)}")
-        if len(written[moving].free_symbols) > 1:
+        if len(written[moving].free_symbols) > 1 or _looks_misplaced(row.joint, written):
             fields.append(f"var: {row.variable.name}")
         lines.append("  - {" + ", ".join(fields) + "}")
         rows.append(DHRow(row.joint, written["theta"], written["d"], written["a"], written["alpha"], row.variable))
@@ -184,3 +185,14 @@ def _check_reads_back(text: str, chain: Chain) -> None:
     if not (same and list(again.base) == list(chain.base) and list(again.tool) == list(chain.tool)
             and again.frame_offset == chain.frame_offset and again.name == chain.name):
         raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")
+
+
+def _looks_misplaced(joint: str, written: dict) -> bool:
+    """Would the reader take a name in theta or d for a joint variable in the wrong column (a URDF
+    joint named d_1 that turns)? Then `var:` says which symbol moves.
+
+    >>> _looks_misplaced("R", {"theta": sympy.Symbol("d_1"), "d": sympy.Integer(0)})
+    True
+    """
+    return any(misplaced_variable(joint, column, symbol.name, False)
+               for column in ("theta", "d") for symbol in written[column].free_symbols)
