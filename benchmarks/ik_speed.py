@@ -1,0 +1,106 @@
+"""Closed-form inverse kinematics: how long the derivation takes, how evaluation compares with
+forward kinematics, and how fast a chain with no closed form is refused.
+
+1. Derivation time of the PUMA 560 (kinematic decoupling) and the UR5 (three parallel axes,
+   Hawkins's way), cold (fresh chain, empty SymPy cache).
+   Both wall-clock and CPU time are printed: on a shared machine the wall clock waits for others.
+2. `evaluate()` on 10,000 poses (every branch at once) against numpy FK of the same poses
+   (the chain's contracted 0T6, lambdified), as a ratio: the issue wants evaluation at about the
+   cost of FK. The ratio is also given per branch (the PUMA has 8, the UR5 8).
+3. Refusal time of a general 6R (symbolic twists): decided from the axes, before any algebra.
+
+Run: python benchmarks/ik_speed.py
+"""
+from __future__ import annotations
+
+import math
+import time
+
+import numpy
+import sympy
+from sympy.core.cache import clear_cache
+
+import dhsym
+from dhsym.errors import UserError
+from dhsym.inverse.evaluate import evaluate
+from dhsym.inverse.solve import solve
+
+POSES = 10_000
+
+
+def derive(name: str):
+    clear_cache()
+    chain = dhsym.load(name)
+    start, cpu = time.perf_counter(), time.process_time()
+    solution = solve(chain)
+    return chain, solution, (time.perf_counter() - start, time.process_time() - cpu)
+
+
+def fk_function(chain):
+    """numpy FK: the contracted 0T6 lambdified over the joint variables, constants put in."""
+    matrix = chain.fk().xreplace({k: sympy.Float(v) for k, v in chain.sample.items()})
+    elements = sympy.lambdify(chain.joint_variables, [matrix[r, c] for r in range(3) for c in range(4)], "numpy")
+
+    def fk(*q):
+        stacked = numpy.zeros((len(q[0]), 4, 4))
+        stacked[:, 3, 3] = 1.0
+        for k, value in enumerate(elements(*q)):
+            stacked[:, k // 4, k % 4] = value
+        return stacked
+    return fk
+
+
+def poses(chain, fk, count: int) -> numpy.ndarray:
+    """`count` random poses (N, 4, 4) by numpy FK."""
+    rng = numpy.random.default_rng(1)
+    return fk(*[rng.uniform(-math.pi, math.pi, count) for _ in chain.joint_variables])
+
+
+def best_of(function, runs: int = 3) -> float:
+    times = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        function()
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def general_6r():
+    t = sympy.symbols("theta_1:7", real=True)
+    rows = [dhsym.DHRow.revolute(t[k], d=sympy.Symbol(f"d_{k + 1}", real=True),
+                                 a=sympy.Symbol(f"a_{k + 1}", real=True),
+                                 alpha=sympy.Symbol(f"alpha_{k + 1}", real=True)) for k in range(6)]
+    return dhsym.Chain(rows, "standard", name="general 6R")
+
+
+def report(name: str) -> None:
+    chain, solution, (wall, cpu) = derive(name)
+    fk = fk_function(chain)
+    targets = poses(chain, fk, POSES)
+    evaluate(solution, targets[:10])  # compile once, as a user's second call would find it
+    fk_time = best_of(lambda: poses(chain, fk, POSES))
+    ik_time = best_of(lambda: evaluate(solution, targets))
+    result = evaluate(solution, targets)
+    branches = len(solution.branches)
+    real = numpy.mean(~numpy.isnan(result).any(axis=-1)) * branches
+    print(f"{name}: derivation {wall:.2f} s ({cpu:.2f} s of CPU); {branches} branches "
+          f"({real:.1f} real per pose on average)")
+    print(f"  {POSES} poses: evaluate {ik_time * 1e3:.1f} ms, numpy FK {fk_time * 1e3:.1f} ms, "
+          f"ratio {ik_time / fk_time:.1f} (per branch {ik_time / fk_time / branches:.2f})")
+
+
+def main() -> None:
+    for name in ("puma560", "ur5"):
+        report(name)
+    chain = general_6r()
+    start = time.perf_counter()
+    try:
+        solve(chain)
+        message = "solved (unexpected)"
+    except UserError as error:
+        message = str(error)
+    print(f"general 6R: refused in {time.perf_counter() - start:.3f} s: {message}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,69 @@
+"""Random arms that satisfy Pieper's condition (a spherical wrist on an elbow, Stanford or
+cylindrical arm), in either convention, with prismatic joints, joint offsets, base and tool steps,
+lengths as symbols or as decimals: every real branch reaches the pose and one branch is q."""
+import random
+
+import sympy
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from test_inverse_robots import check_round_trip
+
+from dhsym import Chain, DHRow, Step
+from dhsym.geometry.convert import to_convention
+from dhsym.inverse.solve import solve
+
+HALF = sympy.pi / 2
+
+
+@st.composite
+def pieper_arms(draw):
+    sample = {}
+    count = iter(range(1, 40))
+
+    def length(may_be_zero=True):
+        choices = (["zero"] if may_be_zero else []) + ["symbol", "decimal"]
+        kind = draw(st.sampled_from(choices))
+        value = sympy.Rational(draw(st.integers(15, 90)), 100)
+        if kind == "zero":
+            return sympy.Integer(0)
+        if kind == "decimal":
+            return value
+        symbol = sympy.Symbol(f"L_{next(count)}", real=True)
+        sample[symbol] = value
+        return symbol
+
+    sign = lambda: draw(st.sampled_from([1, -1]))  # noqa: E731
+    offset = lambda: draw(st.sampled_from([0, 0, HALF, -sympy.pi / 6]))  # noqa: E731
+    q = sympy.symbols("q_1:7", real=True)
+    d = sympy.symbols("d_1:7", real=True)
+    family = draw(st.sampled_from(["elbow", "stanford", "cylindrical"]))
+    if family == "elbow":
+        arm = [DHRow.revolute(q[0] + offset(), d=length(), a=length(), alpha=sign() * HALF, variable=q[0]),
+               DHRow.revolute(q[1] + offset(), d=length(), a=length(False), variable=q[1]),
+               DHRow.revolute(q[2] + offset(), a=length(), alpha=sign() * HALF, variable=q[2])]
+    elif family == "stanford":
+        arm = [DHRow.revolute(q[0] + offset(), d=length(), alpha=sign() * HALF, variable=q[0]),
+               DHRow.revolute(q[1] + offset(), d=length(), alpha=sign() * HALF, variable=q[1]),
+               DHRow.prismatic(d[2] + length(), variable=d[2])]
+    else:
+        arm = [DHRow.revolute(q[0] + offset(), d=length(), variable=q[0]),
+               DHRow.prismatic(d[1] + length(), alpha=sign() * HALF, variable=d[1]),
+               DHRow.prismatic(d[2], variable=d[2])]
+    # the wrist centre off the elbow's axis (else θ3 would not move it): d4 ≠ 0 on an elbow arm
+    wrist = [DHRow.revolute(q[3] + offset(), d=length(family != "elbow"), alpha=sign() * HALF, variable=q[3]),
+             DHRow.revolute(q[4] + offset(), alpha=sign() * HALF, variable=q[4]),
+             DHRow.revolute(q[5] + offset(), d=length(), a=length(), alpha=draw(st.sampled_from([0, HALF])),
+                            variable=q[5])]
+    base = draw(st.sampled_from([[], [Step("Tz", sympy.Rational(1, 4))], [Step("Rz", HALF), Step("Tx", length())]]))
+    tool = draw(st.sampled_from([[], [Step("Tz", length())],
+                                 [Step("Rx", sympy.pi), Step("Tz", sympy.Rational(1, 10))]]))
+    chain = Chain(arm + wrist, "standard", base=base, tool=tool, name=f"random {family} arm", sample=sample)
+    return to_convention(chain, draw(st.sampled_from(["standard", "modified"])))
+
+
+@settings(max_examples=6)
+@given(pieper_arms(), st.integers(0, 10 ** 6))
+def test_random_pieper_arms_round_trip(chain, seed):
+    solution = solve(chain)
+    assert solution.method.startswith("kinematic decoupling")
+    check_round_trip(chain, solution, random.Random(seed), trials=2)
