@@ -18,6 +18,8 @@ when wider than the page; nothing is shrunk.
 """
 from __future__ import annotations
 
+import re
+
 import sympy
 
 from ..printing.ik import (
@@ -34,6 +36,7 @@ from .display import Latex
 from .layout import (
     ALIGNED_EXTRA,
     PAGES,
+    TEXT_LINE,
     Block,
     Page,
     Rows,
@@ -52,6 +55,7 @@ from .layout import (
 from .legend import legend_items
 from .prose import tex_prose, tex_text
 from .sections import Section
+from .width import math_width
 
 PART = "Inverse kinematics"
 _MATH_CHARACTERS = {"²": "$^{2}$", "³": "$^{3}$", "√": "$\\surd$"}  # tex_text has no text form for these
@@ -173,7 +177,37 @@ def snippet(solution) -> str:
 
 
 def notebook_display(solution):
-    """The sections as one display for Jupyter, laid out for the notebook's line."""
-    items = [item for section in ik_sections(solution, PAGES["notebook"])
-             for item in [paragraph(section.title, PAGES["notebook"])] + section.items]
-    return Latex(stacked(items, PAGES["notebook"]))
+    """The sections as one display for Jupyter, laid out for the notebook's line: text is set
+    as \\text{…} lines with its math between them, which MathJax renders without extensions."""
+    page = PAGES["notebook"]
+    items = []
+    for section in ik_sections(solution, page, headings=False):
+        for item in [paragraph(section.title, page)] + section.items:
+            items += _text_rows(item.latex, page) if isinstance(item, Block) and not item.is_display else [item]
+    return Latex(stacked(items, page))
+
+
+_WORD = re.compile(r"(?:\$[^$]*\$|[^\s$])+")  # a word, with any math it holds kept whole
+
+
+def _text_rows(latex: str, page: Page) -> list[Block]:
+    r"""A paragraph as displays of one line each: text in \text{…}, math as math.
+
+    >>> [b.math for b in _text_rows("find $\\theta_{1}$.", PAGES["notebook"])]
+    ['\\text{find }\\theta_{1}\\text{.}']
+    """
+    rows, line = [], ""
+    for word in _WORD.findall(latex):
+        if line and math_width(_row_math(line + " " + word)) > page.width:
+            rows.append(line)
+            line = word
+        else:
+            line = f"{line} {word}" if line else word
+    rows.append(line)
+    return [display(_row_math(row), TEXT_LINE) for row in rows]
+
+
+def _row_math(text: str) -> str:
+    pieces = text.split("$")
+    return "".join((piece if position % 2 else f"\\text{{{piece}}}") for position, piece in enumerate(pieces)
+                   if piece)

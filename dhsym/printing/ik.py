@@ -142,8 +142,9 @@ def _mentioned(text: str, names) -> dict:
 
 
 def solution_names(solution) -> list[str]:
-    """The names a solver's sentence may mention: the chain's symbols and the definitions'."""
-    return [s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
+    """The names a solver's sentence may mention: the chain's symbols, the definitions', the target's."""
+    return ([s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
+            + list(TARGET_NAMES))
 
 
 def text_sentence(text: str, names, printer) -> str:
