@@ -81,19 +81,23 @@ def random_joints(chain, rng, count: int) -> np.ndarray:
 
 def check_branches_reach(ik, chain, constants: dict, joints: np.ndarray, free=(), compare=TARGET_NAMES) -> None:
     """For every q: T = FK(q); every branch that exists reaches T (the elements `compare`: an arm
-    with fewer than six joints reaches a part of the pose), and q is one of them."""
+    with fewer than six joints reaches a part of the pose), and q is one of them. The joints
+    named in `free` are given to `ik` as keyword arguments; its columns are the other joints."""
     wanted = [TARGET_NAMES.index(name) for name in compare]
+    names = [v.name for v in chain.joint_variables]
+    unknown = [k for k, name in enumerate(names) if name not in free]
     fk = numeric_fk(chain, constants)
     poses = np.array([np.array(fk(*q), dtype=float) for q in joints])
-    given = {name: joints[:, [v.name for v in chain.joint_variables].index(name)] for name in free}
-    found = np.array([ik(pose, **{k: v[n] for k, v in given.items()}) for n, pose in enumerate(poses)])
-    revolute = [k for k, row in enumerate(chain.rows) if row.joint == "R"]
+    found = np.array([ik(pose, **{name: q[names.index(name)] for name in free}) for q, pose in zip(joints, poses)])
+    revolute = [k for k, row in enumerate(chain.rows) if row.joint == "R" and k in unknown]
     for pose, q, branches in zip(poses, joints, found, strict=True):
         existing = branches[np.isfinite(branches).all(axis=1)]
         assert len(existing), f"no branch reaches FK({q})"
-        for values in existing:
+        full = np.tile(q, (len(existing), 1))
+        full[:, unknown] = existing
+        for values in full:
             reached = np.array(fk(*values), dtype=float)[:3].reshape(12)[wanted]
             assert np.allclose(reached, pose[:3].reshape(12)[wanted], atol=1e-7), (q, values)
-        difference = existing - q
+        difference = full - q
         difference[:, revolute] = (difference[:, revolute] + np.pi) % (2 * np.pi) - np.pi
-        assert np.abs(difference).max(axis=1).min() < 1e-6, f"{q} is not among the branches {existing}"
+        assert np.abs(difference).max(axis=1).min() < 1e-6, f"{q} is not among the branches {full}"

@@ -126,7 +126,7 @@ def test_python_api_has_branches_evaluation_latex_and_code(by_hand):
     result = arm.ik()
     assert arm.ik() is result  # solved once
     assert [b.name for b in result.branches] == ["elbow down", "elbow up"]
-    assert "\\operatorname{atan2}" in result.latex().latex and "def ik(T, *, a_1=0.5, a_2=0.4):" in result.code()
+    assert "\\mathrm{atan2}" in result.latex().latex and "def ik(T, *, a_1=0.5, a_2=0.4):" in result.code()
     fk = ik_checks.numeric_fk(arm, {"a_1": 0.5, "a_2": 0.4})
     pose = np.array(fk(0.3, 1.2), dtype=float)
     assert np.allclose(result.function()(pose)[0], [0.3, 1.2])  # elbow down: θ2 > 0
@@ -151,7 +151,7 @@ def test_latex_snippet_is_the_derivation(by_hand, capsys):
     _, out, _ = dhsym_cli(capsys, "ik", "planar2r", "--format", "latex")
     assert "% Step 1 (law of cosines), for $\\theta_{2}$" in out
     assert "D &= \\frac{p_{x}^{2} + p_{y}^{2} - a_{1}^{2} - a_{2}^{2}}{2 a_{1} a_{2}}" in out
-    assert "\\theta_{2} &= \\operatorname{atan2}(-\\sqrt{1 - D^{2}}, D)" in out
+    assert "\\theta_{2} &= \\mathrm{atan2}(-\\sqrt{1 - D^{2}}, D)" in out
     assert "c_{2} &= \\cos{\\theta_{2}}" in out
 
 

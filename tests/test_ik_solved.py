@@ -102,3 +102,36 @@ def test_every_puma_branch_is_drawn_side_by_side():
     figure = draw_branches(chain, values={"theta_2": "-30deg", "theta_3": "60deg", "theta_5": "40deg"},
                            figure=Figure())
     assert len(figure.axes) == 8 and figure.get_suptitle().endswith("8 of 8 branches reach the pose")
+
+
+def test_a_redundant_arm_with_a_free_joint(tmp_path):
+    """iiwa7 --free theta_3: the module takes theta_3 as a keyword, agrees with evaluate and reaches FK."""
+    chain = load("iiwa7")
+    result = chain.ik(free=["theta_3"])
+    assert [v.name for v in result.solution.free] == ["theta_3"]
+    path = tmp_path / "iiwa_ik.py"
+    path.write_text(result.code())
+    module = import_module(path)
+    assert "theta_3" not in module.JOINTS and ", theta_3):" in result.code()
+    constants = sample_constants(chain)
+    joints = random_joints(chain, np.random.default_rng(7), 6)
+    check_branches_reach(module.ik, chain, constants, joints, free=("theta_3",))
+    pose = np.array(numeric_fk(chain, constants)(*joints[0]), dtype=float)
+    assert np.allclose(module.ik(pose, theta_3=joints[0][2]), result.evaluate(pose, theta_3=joints[0][2]),
+                       atol=1e-9, equal_nan=True)
+
+
+def test_branches_of_a_redundant_arm_are_drawn_with_the_free_joint_in_its_place():
+    from matplotlib.figure import Figure
+
+    from dhsym.plot.branches import branch_values, draw_branches, target_pose
+
+    chain = load("iiwa7")
+    values = {"theta_2": "30deg", "theta_3": "20deg", "theta_4": "-60deg"}
+    pose = target_pose(chain, values)
+    _, joints = branch_values(chain, pose, free=["theta_3"], values=values)
+    assert joints.shape == (8, 7) and np.allclose(joints[:, 2], np.radians(20))
+    fk = numeric_fk(chain, sample_constants(chain))
+    assert all(np.allclose(np.array(fk(*q), dtype=float), pose, atol=1e-8) for q in joints)
+    figure = draw_branches(chain, values=values, free=["theta_3"], figure=Figure())
+    assert all(ax.get_title().splitlines()[-2].split(", ")[2] == "20°" for ax in figure.axes)

@@ -67,3 +67,18 @@ def test_random_pieper_arms_round_trip(chain, seed):
     solution = solve(chain)
     assert solution.method.startswith("kinematic decoupling")
     check_round_trip(chain, solution, random.Random(seed), trials=2)
+
+
+@settings(max_examples=2)
+@given(st.sampled_from(["standard", "modified"]), st.integers(0, 10 ** 6))
+def test_a_wrist_at_the_start_is_decoupled_too(convention, seed):
+    q = sympy.symbols("q_1:7", real=True)
+    lengths = sympy.symbols("L_1:7", real=True)
+    rows = [DHRow.revolute(q[0], d=lengths[0], alpha=-HALF), DHRow.revolute(q[1], alpha=HALF),
+            DHRow.revolute(q[2], d=lengths[1], a=lengths[2], alpha=HALF), DHRow.revolute(q[3], a=lengths[3]),
+            DHRow.revolute(q[4], a=lengths[4], alpha=HALF), DHRow.revolute(q[5], d=lengths[5])]
+    sample = {symbol: sympy.Rational(k + 3, 10) for k, symbol in enumerate(lengths)}
+    chain = to_convention(Chain(rows, "standard", name="wrist first", sample=sample), convention)
+    solution = solve(chain)
+    assert "joints 1, 2 and 3 meet at a point fixed in the base" in solution.method
+    check_round_trip(chain, solution, random.Random(seed), trials=2)

@@ -93,6 +93,13 @@ def test_the_planar_elbow_uses_px_and_py_and_says_so():
     assert [b.name for b in solution.branches] == ["elbow down", "elbow up"]
 
 
+def test_a_pendulum_has_one_named_solution():
+    theta = sympy.Symbol("theta_1", real=True)
+    solution = solve(dhsym.Chain([dhsym.DHRow.revolute(theta, a=1)], "standard", name="pendulum"))
+    assert [(b.name, b.assignments) for b in solution.branches] == [
+        ("the only solution", ((theta, sympy.atan2(sympy.Symbol("py", real=True), sympy.Symbol("px", real=True))),))]
+
+
 def test_a_target_out_of_reach_has_no_branch():
     chain, solution = solved("planar2r")
     far = numpy.eye(4)
@@ -145,3 +152,34 @@ def test_a_general_6r_is_refused_by_its_axes():
                                  alpha=alpha[k]) for k in range(6)]
     with pytest.raises(dhsym.UserError, match="no three consecutive axes meet in a point .* or are parallel"):
         solve(dhsym.Chain(rows, "standard", name="general 6R"))
+
+
+def test_the_puma_solution_is_no_larger_than_craigs():
+    """Craig, Introduction to Robotics, §4.7 (the PUMA 560's inverse kinematics), by count_ops."""
+    _, solution = solved("puma560")
+    mine = {**dict(solution.definitions), **dict(solution.branches[0].assignments)}
+    S = lambda name: sympy.Symbol(name, real=True)  # noqa: E731
+    px, py, pz, a2, a3, d3, d4, K = (S(n) for n in "px py pz a_2 a_3 d_3 d_4 K".split())
+    r11, r13, r21, r23, r31, r33 = (S(n) for n in "r11 r13 r21 r23 r31 r33".split())
+    t1, t2, t3, t4, t5 = (S(f"theta_{i}") for i in range(1, 6))
+    c1, s1, c3, s3, c4, s4, c5, s5 = (f(t) for t in (t1, t3, t4, t5) for f in (sympy.cos, sympy.sin))
+    c23, s23 = sympy.cos(t2 + t3), sympy.sin(t2 + t3)
+    root = sympy.sqrt
+    craig = {
+        "theta_1": sympy.atan2(py, px) - sympy.atan2(d3, root(px ** 2 + py ** 2 - d3 ** 2)),
+        "K": (px ** 2 + py ** 2 + pz ** 2 - a2 ** 2 - a3 ** 2 - d3 ** 2 - d4 ** 2) / (2 * a2),
+        "theta_3": sympy.atan2(a3, d4) - sympy.atan2(K, root(a3 ** 2 + d4 ** 2 - K ** 2)),
+        "phi_1": sympy.atan2((-a3 - a2 * c3) * pz - (c1 * px + s1 * py) * (d4 - a2 * s3),
+                             (a2 * s3 - d4) * pz + (a3 + a2 * c3) * (c1 * px + s1 * py)),  # θ23
+        "theta_4": sympy.atan2(-r13 * s1 + r23 * c1, -r13 * c1 * c23 - r23 * s1 * c23 + r33 * s23),
+        "theta_5": sympy.atan2(-(r13 * (c1 * c23 * c4 + s1 * s4) + r23 * (s1 * c23 * c4 - c1 * s4) - r33 * s23 * c4),
+                               -r13 * c1 * s23 - r23 * s1 * s23 - r33 * c23),
+        "theta_6": sympy.atan2(-r11 * (c1 * c23 * s4 - s1 * c4) - r21 * (s1 * c23 * s4 + c1 * c4) + r31 * s23 * s4,
+                               r11 * ((c1 * c23 * c4 + s1 * s4) * c5 - c1 * s23 * s5)
+                               + r21 * ((s1 * c23 * c4 - c1 * s4) * c5 - s1 * s23 * s5)
+                               - r31 * (s23 * c4 * c5 + c23 * s5)),
+    }
+    for name in ("theta_1", "K", "theta_3", "phi_1"):
+        assert sympy.count_ops(mine[S(name)]) <= sympy.count_ops(craig[name]), name
+    ours = sum(sympy.count_ops(value) for value in mine.values())
+    assert ours <= sum(sympy.count_ops(form) for form in craig.values())

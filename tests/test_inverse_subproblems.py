@@ -3,7 +3,7 @@ satisfies the equation it was given, and every root a student expects is among i
 import math
 
 import sympy
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from dhsym.inverse import subproblems as sp
@@ -35,7 +35,7 @@ def _same_angle(x, y):
 @given(signed, signed, angles)
 def test_a_cos_plus_b_sin_gives_both_roots(a, b, truth):
     c = a * math.cos(truth) + b * math.sin(truth)
-    form = sp.trig_linear(a * sympy.cos(theta) + b * sympy.sin(theta) - X, theta)
+    form = sp.trig_linear(sympy.Rational(a) * sympy.cos(theta) + sympy.Rational(b) * sympy.sin(theta) - X, theta)
     roots = [_value(sp.one_equation(*form, sigma), s, c) for s in (1, -1)]
     for root in roots:
         assert abs(a * math.cos(root) + b * math.sin(root) - c) < 1e-7
@@ -43,9 +43,11 @@ def test_a_cos_plus_b_sin_gives_both_roots(a, b, truth):
 
 
 @given(lengths, lengths, angles)
+@example(2.0, 0.1015625, 0.0)  # the arm stretched out: D = 1 up to rounding
 def test_law_of_cosines_gives_elbow_up_and_down(l1, l2, truth):
     squared = l1 ** 2 + l2 ** 2 + 2 * l1 * l2 * math.cos(truth)
-    form = sp.trig_linear(X - l1 ** 2 - l2 ** 2 - 2 * l1 * l2 * sympy.cos(theta), theta)
+    exact1, exact2 = sympy.Rational(l1), sympy.Rational(l2)  # no 15-digit Floats inside the form
+    form = sp.trig_linear(X - exact1 ** 2 - exact2 ** 2 - 2 * exact1 * exact2 * sympy.cos(theta), theta)
     assert form[1] == 0  # recognised as cos θ = D
     roots = [_value(sp.one_equation(*form, sigma), s, squared) for s in (1, -1)]
     assert any(_same_angle(root, truth) for root in roots) and any(_same_angle(-root, truth) for root in roots)

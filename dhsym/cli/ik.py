@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import json
 
-from ..inverse.api import inverse_kinematics
 from .options import format_options, robot_options
 
 FORMATS = ("text", "latex", "json", "python")
@@ -34,6 +33,8 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str:
+    from ..inverse.api import inverse_kinematics  # here: the other commands need no solver
+
     result = inverse_kinematics(robot.chain, args.free)
     if args.format == "json":
         return json.dumps(result.json(), indent=2, ensure_ascii=False)

@@ -8,6 +8,8 @@ flipped (the names of the planar elbow's +√ and −√ in Spong's book); a sli
 >>> t1, t3 = sympy.symbols("theta_1 theta_3")
 >>> branch_name([(t1, "one", 1), (t3, "law", -1)], t1, [])
 'shoulder right, elbow up'
+>>> branch_name([], t1, [])
+'the only solution'
 """
 from __future__ import annotations
 
@@ -28,6 +30,8 @@ def branch_name(choices, first_joint, wrist_joints) -> str:
             role = "shoulder" if joint == first_joint else "elbow"
         roles.append((role, joint, sign))
     counts = {role: sum(1 for r, _, _ in roles if r == role) for role, _, _ in roles}
+    if not roles:
+        return "the only solution"
     parts = []
     for role, joint, sign in roles:
         word = WORDS[role][0 if sign > 0 else 1]

@@ -87,10 +87,10 @@ def module_text(solution, command: str = "") -> str:
     """The text of the standalone module for `solution` (see the module docstring)."""
     chain = solution.chain
     joints = list(solution.joint_variables)
-    constants = sorted((s for s in chain.symbols if s not in joints), key=lambda s: s.name)
+    constants = sorted((s for s in chain.symbols if s not in chain.joint_variables), key=lambda s: s.name)
     definitions = [name for name, _ in solution.definitions]
     assigned = {name for branch in solution.branches for name, _ in branch.assignments}
-    names = python_names([s.name for s in joints + constants + definitions] + list(TARGET_NAMES)
+    names = python_names([s.name for s in joints + constants + list(solution.free) + definitions] + list(TARGET_NAMES)
                          + sorted({s.name for s in assigned} - {s.name for s in joints}))
     code = _NumpyCode(names, getattr(chain, "numbers", None))
     sample = {str(symbol): value for symbol, value in chain.sample.items()}

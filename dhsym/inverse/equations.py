@@ -53,24 +53,30 @@ def squared_length(steps, variables, point=ZERO, point_length=0) -> sympy.Expr:
     return collect_by_trig(sympy.expand(total), variables)
 
 
-def moved(chain, frame, point: sympy.Matrix, point_length) -> tuple[sympy.Matrix, sympy.Expr]:
-    """The point (in the first frame) seen from `frame`, and its squared distance from that frame's origin."""
+def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None) -> tuple[sympy.Matrix, sympy.Expr]:
+    """The point (known in frame `known_in`, the first by default) seen from `frame`, and its
+    squared distance from that frame's origin."""
+    known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
-    inverse = chain.transform(frame, chain.first_frame)
+    inverse = chain.transform(frame, known_in)
     seen = inverse[:3, :3] * point + inverse[:3, 3]
     return seen.applyfunc(lambda e: collect_by_trig(sympy.expand(e), frozenset(variables))), \
-        squared_length(chain.steps(frame, chain.first_frame), variables, point, point_length)
+        squared_length(chain.steps(frame, known_in), variables, point, point_length)
 
 
-def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matrix, holder) -> list[Equation]:
-    """A point known in the first frame (`point`) that sits at `local` in frame `holder`: its
-    three coordinates and squared distance, seen from each frame up to `holder`."""
+def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matrix, holder,
+                    known_in=None) -> list[Equation]:
+    """A point known in frame `known_in` (the first by default; the last for a wrist at the start)
+    that sits at `local` in frame `holder`: its three coordinates and squared distance, seen from
+    each frame between the two."""
     frames = chain.frames
+    known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
     equations = []
     local_length = sympy.expand(sum(x ** 2 for x in local))
-    for frame in frames[:frames.index(holder) + 1]:
-        seen, seen_length = moved(chain, frame, point, point_length)
+    ends = sorted([frames.index(known_in), frames.index(holder)])
+    for frame in frames[ends[0]:ends[1] + 1]:
+        seen, seen_length = moved(chain, frame, point, point_length, known_in)
         chain_side = chain.transform(frame, holder)
         there = chain_side[:3, :3] * local + chain_side[:3, 3]
         there = there.applyfunc(lambda e: collect_by_trig(sympy.expand(e), frozenset(variables)))
@@ -84,10 +90,12 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
     return equations
 
 
-def transform_equations(chain, target: sympy.Matrix, position: bool, start=None) -> list[Equation]:
-    """(ⁱT_first) T (ʲT_last)⁻¹ = ⁱT_j for every pair of frames i ≤ j (i from `start` on): the
-    rotation elements, and with `position` the position elements and the squared distance."""
+def transform_equations(chain, target: sympy.Matrix, position: bool, start=None, end=None) -> list[Equation]:
+    """(ⁱT_first) T (ʲT_last)⁻¹ = ⁱT_j for every pair of frames i ≤ j (between `start` and `end`):
+    the rotation elements, and with `position` the position elements and the squared distance."""
     frames, first, last = chain.frames, chain.first_frame, chain.last_frame
+    if end is not None:
+        frames = frames[:frames.index(end) + 1]
     if start is not None:
         frames = frames[frames.index(start):]
     variables = frozenset(chain.joint_variables)

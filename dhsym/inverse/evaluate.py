@@ -15,6 +15,7 @@ import sympy
 
 from .solution import target_symbols
 
+COMPILED_KEPT = 2000  # compiled expressions kept between calls
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 
 
@@ -39,10 +40,14 @@ def evaluate(solution, T, constants=None):
         shared = dict(inputs)
         for name, value in solution.definitions:
             shared[name] = _compute(value, shared, names)
+        done: dict = {}  # branches share their first steps (θ1 of the shoulder): each is computed once
         for b, branch in enumerate(solution.branches):
             known = dict(shared)
-            for name, value in branch.assignments:
-                known[name] = _compute(value, known, names)
+            for k, (name, value) in enumerate(branch.assignments):
+                prefix = branch.assignments[:k + 1]
+                if prefix not in done:
+                    done[prefix] = _compute(value, known, names)
+                known[name] = done[prefix]
             result = numpy.stack([numpy.broadcast_to(numpy.asarray(known[v], dtype=float), (poses.shape[0],))
                                   for v in solution.joint_variables], axis=-1)
             result[:, revolute] = (result[:, revolute] + numpy.pi) % (2 * numpy.pi) - numpy.pi
@@ -65,6 +70,8 @@ def _compute(expr: sympy.Expr, known: dict, constants: dict):
     symbols = sorted(expr.free_symbols, key=str)
     key = (expr, tuple(symbols))
     if key not in _compiled:
+        if len(_compiled) > COMPILED_KEPT:  # a long session solving many arms keeps only recent ones
+            _compiled.clear()
         _compiled[key] = sympy.lambdify(symbols, expr, modules=[{"sqrt": _sqrt}, "numpy"])
     arguments = []
     for symbol in symbols:

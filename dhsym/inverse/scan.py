@@ -1,12 +1,15 @@
 """The search a student does by hand: among the equations, find one in a single unknown (or a
 pair) that is a known sub-problem, solve it, and go on with that unknown known.
 
-Each round takes the best of what is solvable, in this order: an atan2 pair whose determinant is
-a non-zero number (unique, never degenerate); a prismatic joint from a linear equation; an atan2
-pair whose determinant can vanish (unique, degenerate where it does); one equation with two
-roots (``a cos θ + b sin θ = c``, the law of cosines, a prismatic joint from a distance). Among
-equals the shortest wins. An angle that enters only through a sum of parallel-axis angles
-(``θ1 + θ2 + θ3``) is solved as that sum first.
+Each round takes the best of what is solvable. Equations of the preferred kind come first (the
+tip's position, then rotation elements, then inner frames' positions, which mix the two; a wrist
+prefers rotations), and within a kind this order: an atan2 pair whose determinant is a non-zero
+number (unique, never degenerate); a slide from a coordinate with a constant coefficient; an
+atan2 pair whose determinant can vanish (unique, degenerate where it does; a known sign before an
+unknown one); one equation with two roots (``a cos θ + b sin θ = c``, the law of cosines, a slide
+from a distance); last, a slide from a coordinate whose coefficient can vanish. Among equals the
+shortest wins. An angle that enters only through a sum of parallel-axis angles (``θ1 + θ2 + θ3``)
+is solved as that sum first.
 
 The number of rounds is the number of unknowns, and each looks at a fixed pool of equations: the
 work is bounded before it starts. Two roots are told apart by a sign symbol σ = ±1; one
@@ -46,6 +49,7 @@ class Derivation:
     steps: list = field(default_factory=list)
     conditions: list = field(default_factory=list)
     degenerate: list = field(default_factory=list)
+    vanishing: list = field(default_factory=list)  # (expression, index in degenerate) where a pair is singular
 
 
 @dataclass(frozen=True)
@@ -65,6 +69,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
+    _cache.clear()  # forms are reused within one search only: memory stays bounded across many
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
@@ -77,7 +82,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         rule, candidates = best
         known = len(derivation.assignments)
-        value = _apply(rule, candidates, derivation, remaining, prismatic)
+        value = _apply(rule, candidates, derivation, constants)
         for name, named in derivation.assignments[known:]:
             witness[name] = _number(named, witness)
         variable, angle = candidates[0].variable, candidates[0].angle
@@ -128,12 +133,16 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     for equation in pool:
         shape = _shape(equation, remaining, prismatic)
         if shape is not None:
-            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), tree_size(equation.expr),
+            # first the equations where the unknown is on the chain's side alone, with the shortest
+            # chain side: there the coefficients of cos and sin are the chain's constants
+            on_target_side = bool(equation.lhs.free_symbols & set(remaining))
+            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side,
+                                                    tree_size(equation.rhs), tree_size(equation.expr),
                                                     len(groups.get(shape[0], [])), equation, shape))
     singles = []
     for group in groups.values():
         worked = 0
-        for *_, equation, shape in sorted(group, key=lambda item: item[:3]):
+        for *_, equation, shape in sorted(group, key=lambda item: item[:5]):
             if worked >= FORMS_PER_UNKNOWN:
                 break
             candidate = _candidate(equation, shape, constants)
@@ -242,6 +251,19 @@ def _last(angle, unknown, remaining):
     return None
 
 
+def _degenerate_pair(det, shown) -> str:
+    """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
+    (the wrist's s5), the axes on either side of joint k line up: a one-parameter family."""
+    bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(det) if not f.is_number}
+    if len(bases) == 1:
+        (base,) = bases
+        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
+            return (f"{base} = 0: {shown} is not determined on its own: the axes on either side of "
+                    f"{base.args[0]} line up, and only the sum (or difference) of the angles about them is "
+                    "determined, a one-parameter family (evaluate gives one member)")
+    return f"{_unsigned(det)} = 0: {shown} is not determined by these equations"
+
+
 def _unsigned(expr):
     return -expr if expr.could_extract_minus_sign() else expr
 
@@ -257,7 +279,7 @@ def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
     return symbol
 
 
-def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
+def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     """The value of the candidates' unknown (or sum), with its steps, conditions and sign symbol."""
     first = candidates[0]
     angle, variable = first.angle, first.variable
@@ -269,9 +291,13 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
                                          "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
                                          (variable,), f"{c.equation.where} (equation {index} of 2)"))
         det = sp.determinant(candidates[0].form, candidates[1].form)
-        det = min([det, sympy.factor(sympy.trigsimp(det))], key=length) if length(det) < 60 else det
+        if length(det) < 60:  # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
+            shorter = sympy.factor(sympy.trigsimp(det))
+            if not any(f.args[0].as_coeff_Mul()[0] not in (1, -1) for f in shorter.atoms(sympy.sin, sympy.cos)):
+                det = min([det, shorter], key=length)
         if not det.is_number:
-            derivation.degenerate.append(f"{_unsigned(det)} = 0: {shown} is not determined by these equations")
+            derivation.vanishing.append((det, len(derivation.degenerate)))
+            derivation.degenerate.append(_degenerate_pair(det, shown))
         return sp.pair(candidates[0].form, candidates[1].form)
     sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
     if rule == "linear":
@@ -291,6 +317,9 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
         return sp.prismatic(first.form, sigma)
     a, b, c = first.form
     law = (b == 0 or a == 0)
+    shape = "A"
+    if not law and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
+        a, b, c, shape = min(_variants(a, b, c, sigma), key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
     c = _named(derivation, "D" if law else "K", c)
     derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), c,
                                  "law of cosines" if law else "a cos θ + b sin θ = c", (variable,),
@@ -298,8 +327,19 @@ def _apply(rule, candidates, derivation, remaining, prismatic) -> sympy.Expr:
     derivation.signs.append((sigma, variable, "law" if law else "one"))
     root = sp.existence(a, b, c)
     if root is not None:
-        derivation.conditions.append(f"{root} >= 0")
-    if not (a.is_number or b.is_number):
+        derivation.conditions.append(f"{root} >= 0 (else {shown} has no real value: the target is out of reach; "
+                                     "where it is 0 the two roots meet)")
+    if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
         derivation.degenerate.append(f"{_unsigned(a)} = 0 and {_unsigned(b)} = 0: {shown} is not determined "
                                      "by this equation")
-    return sp.one_equation(a, b, c, sigma)
+    return sp.one_equation(a, b, c, sigma, shape)
+
+
+def _variants(a, b, c, sigma):
+    """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
+    atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
+    placeholder = sympy.Dummy("c")
+    for sign in (1, -1):
+        sa, sb, sc = (x if sign == 1 else sympy.factor_terms(sympy.together(sympy.expand(-x))) for x in (a, b, c))
+        for shape in ("A", "B"):
+            yield sa, sb, sc, shape, sp.one_equation(sa, sb, placeholder, sigma, shape)

@@ -19,13 +19,14 @@ from itertools import product
 import sympy
 
 from ..errors import UserError
+from ..velocity.determinant import determinant
 from .branches import branch_name
 from .equations import point_equations, transform_equations
 from .scan import Derivation, scan
 from .solution import Branch, Solution, target_matrix, target_symbols
 from .structure import analyse
 from .witness import witness
-from .wrist import centre
+from .wrist import centre, centre_at_start
 
 
 def solve(chain, free=()) -> Solution:
@@ -57,6 +58,23 @@ def solve(chain, free=()) -> Solution:
              prefer=("orientation",), constants=constants, witness=numbers)
         method = (f"kinematic decoupling: the axes of joints {_joints(structure.wrist)} meet at the wrist centre; "
                   f"the position of the wrist centre gives {_names(arm)}, its orientation {_names(wrist_joints)}")
+    elif structure.first_wrist:
+        wrist_joints = [chain.joint_variables[j - 1] for j in structure.first_wrist]
+        holder, local, in_first = centre_at_start(chain, structure.first_wrist)
+        rotation_t = target[:3, :3].T
+        point = rotation_t * (in_first - target[:3, 3])  # the centre seen from the last frame: Rᵀ(c − p)
+        names = sympy.symbols("x_c y_c z_c", real=True)
+        definitions += list(zip(names, point))
+        numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
+        point = sympy.Matrix(names)
+        arm = [v for v in unknowns if v not in wrist_joints]
+        scan(point_equations(chain, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
+             arm, prismatic, derivation, constants=constants, witness=numbers)
+        scan(transform_equations(chain, target, position=False, end=holder), wrist_joints, prismatic, derivation,
+             prefer=("orientation",), constants=constants, witness=numbers)
+        method = (f"kinematic decoupling: the axes of joints {_joints(structure.first_wrist)} meet at a point fixed "
+                  f"in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
+                  f"{_names(wrist_joints)}")
     elif structure.spherical:
         scan(transform_equations(chain, target, position=False), unknowns, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
@@ -79,6 +97,8 @@ def solve(chain, free=()) -> Solution:
         conditions.append(f"the arm has {len(unknowns)} unknown joints: only {', '.join(used)} are used, "
                           "and the other elements of the target must be consistent with them"
                           + (f" (in every pose of this arm {fixed})" if fixed else ""))
+    if structure.wrist and len(unknowns) == 6 and chain.n == 6:
+        tie_to_jacobian(chain, derivation)
     branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)
     return Solution(chain, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
                     tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),
@@ -100,6 +120,17 @@ def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:
                 fixed[target[r, c]] = fk[r, c]
     said = ", ".join(f"{name} = {value}" for name, value in fixed.items())
     return target.xreplace(fixed), said
+
+
+def tie_to_jacobian(chain, derivation) -> None:
+    """Say which degenerate cases are singularities that `dhsym jacobian` prints: a factor of
+    det J (worked out fast for a wrist-partitioned arm, det A · det C)."""
+    factors = determinant(chain).factors
+    for expr, index in derivation.vanishing:
+        bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
+        matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
+        if matched:
+            derivation.degenerate[index] += f"; a singularity of J: the factor {matched[0]} of det J"
 
 
 def free_variables(chain, free) -> tuple[sympy.Symbol, ...]:
@@ -149,4 +180,4 @@ def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:
         name = branch_name([(joint, rule, c) for (_, joint, rule), c in zip(signs, choice)], first_joint,
                            wrist_joints)
         branches.append(Branch(name, tuple((n, v.xreplace(values)) for n, v in assignments)))
-    return branches or [Branch("the only solution", tuple(assignments))]
+    return branches

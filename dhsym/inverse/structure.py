@@ -41,6 +41,7 @@ class Structure:
     wrist: tuple[int, int, int] | None
     parallel: tuple[int, int, int] | None
     spherical: bool
+    first_wrist: tuple[int, int, int] | None = None  # the first three axes meet: a wrist at the start
 
 
 def analyse(chain, free=()) -> Structure:
@@ -64,12 +65,11 @@ def analyse(chain, free=()) -> Structure:
     spherical = len(unknowns) <= 3 and set(unknowns) <= revolute and (
         len(unknowns) < 3 and len(unknowns) > 1 and all(_meet(config, unknowns) for config in lines)
         or tuple(unknowns) in meeting)
-    if len(unknowns) == 6 and wrist is None and not parallel:
-        where = "; the axes of joints 1, 2, 3 meet in a point, but a wrist at the start is not handled" \
-            if meeting and meeting[0] == unknowns[:3] else ""
+    first_wrist = tuple(unknowns[:3]) if len(unknowns) == 6 and tuple(unknowns[:3]) in meeting else None
+    if len(unknowns) == 6 and wrist is None and first_wrist is None and not parallel:
         raise UserError("no closed form by the course's rules: no three consecutive axes meet in a point at the "
-                        f"end of the arm or are parallel (Pieper's condition){where}")
-    return Structure(unknowns, wrist, parallel[0] if parallel else None, spherical)
+                        "start or the end of the arm, or are parallel (Pieper's condition)")
+    return Structure(unknowns, wrist, parallel[0] if parallel else None, spherical, first_wrist)
 
 
 def _meet(config: dict, joints) -> bool:

@@ -90,8 +90,10 @@ def _common_constant(a, b, constants) -> sympy.Expr:
     return -shared if shared.could_extract_minus_sign() else shared
 
 
-def one_equation(a, b, c, sigma) -> sympy.Expr:
+def one_equation(a, b, c, sigma, shape: str = "A") -> sympy.Expr:
     """θ with a cos θ + b sin θ = c; the two roots differ by the sign σ of the square root.
+    Shape "A" is atan2(b, a) + atan2(σ√(a² + b² − c²), c), shape "B" the same angle as
+    atan2(a, −b) − atan2(c, σ√(a² + b² − c²)) (Craig's way of writing the PUMA's θ1).
 
     >>> x, sigma = sympy.symbols("x sigma", real=True)
     >>> one_equation(1, 0, x, sigma)          # cos θ = x: the law of cosines' form
@@ -105,7 +107,10 @@ def one_equation(a, b, c, sigma) -> sympy.Expr:
         return sympy.atan2(sigma * sympy.sqrt(1 - (c / a) ** 2), c / a)
     if a == 0:
         return sympy.atan2(c / b, sigma * sympy.sqrt(1 - (c / b) ** 2))
-    return sympy.atan2(b, a) + sympy.atan2(sigma * sympy.sqrt(a ** 2 + b ** 2 - c ** 2), c)
+    root = sigma * sympy.sqrt(a ** 2 + b ** 2 - c ** 2)
+    if shape == "B":
+        return sympy.atan2(a, -b) - sympy.atan2(c, root)
+    return sympy.atan2(b, a) + sympy.atan2(root, c)
 
 
 def existence(a, b, c) -> sympy.Expr | None:

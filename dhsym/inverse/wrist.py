@@ -37,3 +37,18 @@ def centre(chain, wrist) -> tuple[int, sympy.Matrix, sympy.Matrix]:
     back = chain.transform(chain.last_frame, holder).xreplace(zero)
     in_last = (back[:3, :3] * point + back[:3, 3]).applyfunc(sympy.simplify)
     return holder, point, in_last
+
+
+def centre_at_start(chain, wrist) -> tuple[int, sympy.Matrix, sympy.Matrix]:
+    """(holder frame, the centre in it, the centre in the first frame) for a wrist at the start:
+    the first two axes meet at a point fixed in the base, and in the link after the wrist."""
+    first = chain.first_frame
+    zero = {chain.joint_variables[j - 1]: 0 for j in wrist}
+    (p1, u1), (p2, u2) = axis_in(chain, wrist[0], first, zero), axis_in(chain, wrist[1], first, zero)
+    w = p1 - p2
+    b, d, e = u1.dot(u2), u1.dot(w), u2.dot(w)
+    s = sympy.simplify((b * e - d) / (1 - b ** 2))
+    point = (p1 + s * u1).applyfunc(sympy.simplify)
+    holder = wrist[-1]
+    there = chain.transform(holder, first).xreplace(zero)
+    return holder, (there[:3, :3] * point + there[:3, 3]).applyfunc(sympy.simplify), point

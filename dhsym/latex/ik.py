@@ -89,7 +89,7 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
         rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in branch.assignments]
         out.append(Section(PART, f"Branch {number}: {tex_text(branch.name)}", [Rows([rows])]))
     names = solution_names(solution)
-    remarks = [paragraph(f"The branches exist when {latex_sentence(text, names, printer)}.", page)
+    remarks = [paragraph(f"Condition: {latex_sentence(text, names, printer)}.", page)
                for text in solution.conditions]
     remarks += [paragraph(f"Degenerate: {latex_sentence(text, names, printer)}.", page)
                 for text in solution.degenerate]

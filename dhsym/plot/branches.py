@@ -45,13 +45,20 @@ def target_pose(chain, values=None, target=None) -> np.ndarray:
 
 
 def branch_values(chain, pose, constants=None, free=(), values=None) -> tuple[list[str], np.ndarray]:
-    """(branch names, joint values (B, n)) of `chain.ik(free)` at `pose`; NaN where a branch does
-    not exist. Free joints take their values from `values`, constants from `constants` or the sample."""
+    """(branch names, joint values (B, n) of every joint of the chain, in joint order) of
+    `chain.ik(free)` at `pose`; NaN where a branch does not exist. Free joints keep their values
+    from `values` (default 0), constants come from `constants` or the sample."""
     result = chain.ik(free)
     given = {str(k): as_number(v, str(k)) for k, v in (constants or {}).items()}
     for variable in result.solution.free:
         given[variable.name] = as_number((values or {}).get(variable.name, 0), variable.name)
-    joints = result.function()(pose, **given)
+    solved = result.function()(pose, **given)
+    joints = np.empty((len(result.branches), chain.n))
+    for k, variable in enumerate(chain.joint_variables):
+        if variable in result.joint_variables:
+            joints[:, k] = solved[:, list(result.joint_variables).index(variable)]
+        else:
+            joints[:, k] = given[variable.name]
     return [branch.name for branch in result.branches], joints
 
 

@@ -13,7 +13,7 @@ starts with the target's terms, positive ones first.
 >>> printer.doprint((px**2 + py**2 - a1**2 - a2**2) / (2 * a1 * a2))
 '(px² + py² − a1² − a2²)/(2 a1 a2)'
 >>> IKLatexPrinter(chain_settings(arm)).doprint(sympy.atan2(py, px) - sympy.acos(px / a1))
-'\\\\operatorname{atan2}(p_{y}, p_{x}) - \\\\arccos(\\\\frac{p_{x}}{a_{1}})'
+'\\\\mathrm{atan2}(p_{y}, p_{x}) - \\\\arccos(\\\\frac{p_{x}}{a_{1}})'
 """
 from __future__ import annotations
 
@@ -74,10 +74,10 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
 
 
 class IKLatexPrinter(_InverseNotation, LatexPrinter):
-    r"""LaTeX: \operatorname{atan2}(y, x), \arccos, \arcsin, p_{x}."""
+    r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
 
     def _print_atan2(self, expr):
-        return f"\\operatorname{{atan2}}({self._arguments(expr)})"
+        return f"\\mathrm{{atan2}}({self._arguments(expr)})"
 
     def _print_acos(self, expr, exp=None):
         return f"\\arccos({self._arguments(expr)})"
