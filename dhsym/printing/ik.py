@@ -109,15 +109,26 @@ RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", "
 
 
 def sentence_parts(text: str, names) -> list:
-    """A solver's sentence ("1 - D**2 >= 0", "a_3 = 0 and d_4 = 0: theta_3 is not determined") as
-    parts to print: ("relation", lhs, operator, rhs) for each relation before the colon, read by
-    dhsym's safe parser, and ("words", text, symbols) with the `names` it mentions. A sentence
-    that does not read that way stays words.
+    """A solver's sentence ("1 - D**2 >= 0 (else …)", "a_3 = 0 and d_4 = 0: theta_3 is not
+    determined") as parts to print: ("relation", lhs, operator, rhs) for each relation it starts
+    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, symbols)
+    for the rest, with the `names` it mentions. A sentence that starts with no relation stays words.
 
-    >>> sentence_parts("1 - D**2 >= 0", ["D"])
-    [('relation', 1 - D**2, '>=', 0)]
+    >>> sentence_parts("1 - D**2 >= 0 (else no branch)", ["D"])[0]
+    ('relation', 1 - D**2, '>=', 0)
     """
-    math, colon, words = text.partition(": ")
+    cuts = [len(text)] + [m.start() for m in re.finditer(r": | \(", text)]
+    for cut in sorted(set(cuts)):
+        relations = _relations(text[:cut])
+        if relations:
+            rest = text[cut:]
+            return relations + ([("words", rest, _mentioned(rest, names))] if rest else [])
+    return [("words", text, _mentioned(text, names))]
+
+
+def _relations(math: str) -> list:
+    """[("relation", lhs, operator, rhs), ("words", " and ", {}), …] for `math`, or [] if it is not
+    a conjunction of relations the safe parser reads."""
     parts = []
     for clause in math.split(" and "):
         match = _RELATION.match(clause.strip())
@@ -126,12 +137,10 @@ def sentence_parts(text: str, names) -> list:
         except UserError:
             sides = None
         if sides is None:
-            return [("words", text, _mentioned(text, names))]
+            return []
         if parts:
             parts.append(("words", " and ", {}))
         parts.append(("relation", sides[0], match.group(2), sides[1]))
-    if colon:
-        parts.append(("words", ": " + words, _mentioned(words, names)))
     return parts
 
 
