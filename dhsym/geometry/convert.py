@@ -74,5 +74,5 @@ def _nonzero(steps) -> list[Step]:
 
 
 def _copy(chain: Chain, convention: str, rows, base, tool) -> Chain:
-    return Chain(rows, convention, base, tool, chain.simplifier, chain.timeout, name=chain.name,
+    return Chain(rows, convention, base, tool, chain.simplifier, name=chain.name,
                  source=chain.source, notes=chain.notes, sample=chain.sample)
