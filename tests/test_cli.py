@@ -138,6 +138,24 @@ def test_decimals_print_as_decimals_everywhere(robot_file):
     assert json.loads(run("table", path, "--format", "json").stdout)["rows"][0]["d"] == "0.089159"
 
 
+def test_a_factored_determinant_keeps_the_decimals_as_written(robot_file):
+    text = run("jacobian", robot_file(UR5_PUBLISHED)).stdout
+    assert "det J = −0.16670625 s3 s5(0.425 c2 + 0.39225 c23 − 0.09465 s234)\n" in text
+    assert "  0.425 c2 + 0.39225 c23 − 0.09465 s234 = 0: shoulder" in text
+
+
+def test_control_characters_in_names_are_escaped_in_every_output(robot_file):
+    path = robot_file('name: "arm\\e[31mRED\\x9b"\nsource: "a\\u202eb"\nconvention: standard\n'
+                      "joints:\n  - {joint: R, alpha: 0, a: l_1, d: 0, theta: theta_1}\n")
+    for command in (["table"], ["fk"], ["jacobian"], ["screws"], ["fk", "--format", "json"], ["latex"],
+                    ["latex", "--document", "article"], ["check", "--against", path]):
+        result = run(command[0], path, *command[1:])
+        assert result.returncode == 0 and result.stdout, command
+        assert not any(ch not in "\n\t" and not ch.isprintable() for ch in result.stdout), command
+    assert run("table", path).stdout.startswith("arm\\x1b[31mRED\\x9b: DH table")
+    assert json.loads(run("fk", path, "--format", "json").stdout)["robot"] == "arm\x1b[31mRED\x9b"
+
+
 def test_sums_and_products_of_decimals_stay_decimals(robot_file):
     path = robot_file(UR5_PUBLISHED.replace("a: -0.39225, d: 0,        theta: theta_3",
                                             "a: -0.39225, d: 0,        theta: theta_3, var: theta_3")

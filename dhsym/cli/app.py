@@ -20,6 +20,7 @@ any normal case, for an input that no estimate foresaw.
 """
 from __future__ import annotations
 
+import json
 import os
 import sys
 
@@ -101,6 +102,20 @@ def printable(message: str) -> str:
     return "".join(ch if ch.isprintable() else ascii(ch)[1:-1] for ch in message)
 
 
+def _without_control_characters(text: str, json_format: bool) -> str:
+    """The output with every control character escaped (a robot name with terminal escape
+    sequences, a right-to-left override in a note), line breaks and tabs kept: as \\u escapes
+    in JSON, as Python-style escapes like the error messages' in text. LaTeX has none left.
+
+    >>> _without_control_characters("arm\x1b[31m\n", False), _without_control_characters('"a\x7f"', True)
+    ('arm\\x1b[31m\n', '"a\\u007f"')
+    """
+    if text.isprintable():
+        return text
+    return "".join(ch if ch.isprintable() or ch in "\n\t" else
+                   json.dumps(ch)[1:-1] if json_format else ascii(ch)[1:-1] for ch in text)
+
+
 def _dispatch(args, read) -> int:
     robot = None
     if hasattr(args, "robot"):
@@ -111,6 +126,7 @@ def _dispatch(args, read) -> int:
         args.width = text_width(args.width)  # --width, else $COLUMNS, else the terminal's, else 100
     output = args.run(robot, args)
     if output is not None:
+        output = _without_control_characters(output, getattr(args, "format", "text") == "json")
         if sys.stdout is None:  # started with standard output closed (`dhsym fk puma560 >&-`)
             raise UserError("standard output is closed; there is nowhere to write the result")
         try:

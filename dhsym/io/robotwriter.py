@@ -65,7 +65,9 @@ def _value(value) -> str:
 
 
 def _string(text: str) -> str:
-    return json.dumps(text, ensure_ascii=False)
+    """A YAML double-quoted string; characters a robot file may not hold raw (DEL, C1 controls) escaped."""
+    return "".join(ch if ch.isprintable() or ch in '\n\t' else json.dumps(ch)[1:-1]
+                   for ch in json.dumps(text, ensure_ascii=False))
 
 
 def robot_yaml(chain, notes: str | None = None) -> str:

@@ -163,7 +163,7 @@ def _wrist_partitioned(chain, centre) -> Determinant:
 
 
 def _result(chain, det, block: str, note: str) -> Determinant:
-    value = factored(det)
+    value = as_written(factored(det), chain.numbers)
     variables = set(chain.joint_variables)
     factors = []
     for factor in sympy.Mul.make_args(value):
@@ -175,6 +175,45 @@ def _result(chain, det, block: str, note: str) -> Determinant:
     last_joint = {v: k for k, v in enumerate(chain.joint_variables)}
     factors.sort(key=lambda f: -max(last_joint[v] for v in f.free_symbols & variables))
     return Determinant(value, block, factors, note)
+
+
+def as_written(value: sympy.Expr, numbers) -> sympy.Expr:
+    """A factored determinant with each factor scaled back to the decimals its robot file wrote:
+    factoring makes 0.425 c2 + 0.39225 c23 into (8500 c2 + 7845 c23)/20000 (the printers write
+    17/40 as 0.425 again).
+
+    >>> from dhsym.core.numbers import WrittenNumbers
+    >>> c2, c3 = sympy.symbols("c2 c3")
+    >>> as_written(3 * c3 * (8500 * c2 + 7845) / 20000, WrittenNumbers(6, values=frozenset({sympy.Rational(17, 40)})))
+    3*c3*(17*c2/40 + 1569/4000)
+    """
+    if not numbers.places:
+        return value
+    coefficient, factors = value.as_coeff_mul()
+    scaled, changed = [], False
+    for factor in factors:
+        base, exponent = factor.as_base_exp()
+        scale = _written_scale(base, numbers) if base.is_Add else None
+        if scale is None:
+            scaled.append(factor)
+            continue
+        scaled.append(sympy.Pow(sympy.expand(base * scale), exponent))
+        coefficient, changed = coefficient / scale ** exponent, True
+    return sympy.Mul(coefficient, *scaled, evaluate=False) if changed else value
+
+
+def _written_scale(base: sympy.Add, numbers):
+    """The factor that turns the coefficients of `base` into decimals as written: one of them
+    into a value the file wrote and the others into decimals, else None."""
+    coefficients = [abs(term.as_coeff_Mul()[0]) for term in base.args]
+    if not all(c.is_Rational for c in coefficients):
+        return None
+    for written in sorted(numbers.values, key=lambda v: (-v.q, v)):
+        for coefficient in coefficients:
+            scale = written / coefficient
+            if scale != 1 and all(numbers.decimal(c * scale, alone=True) for c in coefficients):
+                return scale
+    return None
 
 
 def factored(expr: sympy.Expr) -> sympy.Expr:
