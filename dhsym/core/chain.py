@@ -209,7 +209,7 @@ class Chain:
         if size > MAX_WORK_NODES:
             frames = self.frames
             shown = [self.frame_number(frames[self._bounds().index(p)]) for p in (start, end)]
-            raise UserError(f"{{{shown[0]}}}T{{{shown[1]}}} would have about {size:,} expression nodes, more than "
+            raise UserError(f"{shown[0]}T{shown[1]} would have about {size:,} expression nodes, more than "
                             f"the {MAX_WORK_NODES:,} that dhsym works out; ask for a shorter part of the chain")
         if raw:
             return self._raw_links(start, end)
