@@ -28,6 +28,7 @@ from ..core.chain import Chain
 from ..core.estimate import estimated_size
 from ..core.size import expanded_terms, rough_count
 from ..core.transforms import product
+from ..errors import UserError
 from .screws import rate
 
 TOLERANCE = 1e-9
@@ -89,7 +90,8 @@ def _algebra_agrees(candidate: Chain, reference: Chain) -> bool | str:
     constants by name, sample values in exactly); a reason instead when it is too large to expand."""
     size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in (candidate, reference))
     if size > ALGEBRA_MAX_NODES:
-        return f"base → tool has about {size:,} expression nodes, more than the {ALGEBRA_MAX_NODES:,} that are expanded"
+        return (f"base → tool has {rough_count(size)} expression nodes, more than the {ALGEBRA_MAX_NODES:,} "
+                "that are expanded")
     names = {s.name: s for s in reference.symbols}
     renamed = dict(zip(candidate.joint_variables, reference.joint_variables))
     renamed.update({s: names[s.name] for s in candidate.symbols - set(candidate.joint_variables) if s.name in names})
@@ -131,7 +133,11 @@ def _numeric_fk(chain: Chain, constants: dict):
         pose = base
         for link, value in zip(links, q):
             pose = _times(pose, link(value))
-        return [x for row in _times(pose, tool)[:3] for x in row]
+        flat = [x for row in _times(pose, tool)[:3] for x in row]
+        if not all(math.isfinite(x) for x in flat):
+            raise UserError(f"{chain.name or 'the robot'}: base → tool overflows the floating-point numbers at a "
+                            "random configuration (lengths too large), so it cannot be compared by numbers")
+        return flat
     return fk
 
 
