@@ -31,11 +31,6 @@ class CommandTooSlow(BaseException):
     """Raised when a whole command passes its safety net."""
 
 
-class NotSimplified(UserWarning):
-    """Warned when a result is returned unsimplified because its estimated size is past the limit
-    for simplification (a decision made from the size alone, never from the clock)."""
-
-
 def has_timer() -> bool:
     """Whether this platform can interrupt a computation after a time (not Windows)."""
     return hasattr(signal, "setitimer") and hasattr(signal, "SIGALRM")
