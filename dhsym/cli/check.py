@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from ..geometry.compare import compare
 from ..io import library
+from .limits import refuse_long_entries
 from .messages import warn
 from .options import robot_options
 
@@ -37,5 +38,7 @@ def add_parsers(commands) -> None:
 def run(robot, args) -> str:
     reference = library.read(args.against)
     warn(reference.warnings)
+    refuse_long_entries(robot)
+    refuse_long_entries(reference)
     verdict = compare(robot.chain, reference.chain)
     return (Outcome if verdict.same else Different)(f"{args.robot}: {verdict.message}")

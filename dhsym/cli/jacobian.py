@@ -14,7 +14,13 @@ from ..printing.printers import chain_settings
 from ..printing.render import convention_note, text_legend
 from ..velocity import determinant, jacobian, propagate, rate_symbols, singularities
 from ..velocity.jacobian import resolve_frames
-from .limits import refuse_jacobian_if_too_large
+from .limits import (
+    LATEX_MAX_NODES,
+    MAX_NODES,
+    refuse_jacobian_if_too_large,
+    refuse_long_entries,
+    refuse_steps_if_too_large,
+)
 from .options import format_options, robot_options
 
 
@@ -34,7 +40,10 @@ def add_parsers(commands) -> None:
 def run(robot, args) -> str:
     chain = robot.chain
     frame, point = resolve_frames(chain, args.frame, args.point)
-    refuse_jacobian_if_too_large(robot, frame, point)
+    refuse_long_entries(robot)
+    refuse_jacobian_if_too_large(robot, frame, point, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
+    if args.steps:
+        refuse_steps_if_too_large(robot)
     if args.format == "latex":
         from ..latex.velocity import snippet  # the LaTeX layout lives with the documents
 

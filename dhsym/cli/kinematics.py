@@ -13,7 +13,7 @@ import json
 
 from ..latex.results import ARTICLE_TEXT_WIDTH_PT, results_latex, table_latex
 from ..printing import render
-from .limits import refuse_if_too_large
+from .limits import LATEX_MAX_NODES, MAX_NODES, refuse_if_too_large
 from .options import format_options, frame_options, robot_options
 
 
@@ -79,7 +79,7 @@ def run_fk(robot, args) -> str:
     chain = robot.chain
     start = chain.first_frame if args.start is None else chain.frame(args.start)
     end = chain.last_frame if args.end is None else chain.frame(args.end)
-    refuse_if_too_large(robot, start, end, args.raw)
+    refuse_if_too_large(robot, start, end, args.raw, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
     return _results(chain, [(start, end, chain.transform(start, end, raw=args.raw))], args)
 
 

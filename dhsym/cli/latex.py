@@ -7,7 +7,13 @@ from __future__ import annotations
 from ..errors import UserError
 from ..io.output import write_atomic
 from ..latex.document import DOCUMENTS, document
-from .limits import refuse_if_too_large, refuse_jacobian_if_too_large
+from .limits import (
+    LATEX_MAX_NODES,
+    refuse_if_too_large,
+    refuse_jacobian_if_too_large,
+    refuse_long_entries,
+    refuse_steps_if_too_large,
+)
 from .options import frame_options, robot_options
 
 
@@ -40,11 +46,14 @@ def run(robot, args) -> str | None:
     except UserError:
         pass  # document() names the frame that is wrong, and the option
     else:
-        refuse_if_too_large(robot, start, end)
+        refuse_if_too_large(robot, start, end, limit=LATEX_MAX_NODES, others=False)
     if args.free and not args.ik:
         raise UserError("--free names the parameters of the inverse kinematics; add --ik")
     if args.jacobian:
-        refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame)
+        refuse_long_entries(robot)
+        refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame, LATEX_MAX_NODES, option="")
+        if args.steps:
+            refuse_steps_if_too_large(robot)
     text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end,
                     jacobian=args.jacobian, ik=args.ik, free=args.free)
     if args.output is None:

@@ -1,66 +1,128 @@
-"""Refusing, within a second, a result too large to print, with advice on what to ask for instead.
+"""Refusing, within a second, a result too large to work out or print, with advice that the
+command at hand accepts.
 
-The estimate (dhsym.core.estimate) is made before any simplification or printing, so a general
-24-link chain is refused at once instead of running for minutes. A Jacobian is about as large as
-the transform from its frame to its point plus those to each joint axis (a general 8-link
+Every estimate (dhsym.core.estimate, dhsym.core.size) is made before any simplification or
+printing, so whether a command works depends on the problem alone: a general 24-link chain is
+refused at once, on any machine, instead of running for minutes. A Jacobian is about as large
+as the transform from its frame to its point plus those to each joint axis (a general 8-link
 chain: 203,000 nodes estimated, 200,000 built).
 """
 from __future__ import annotations
 
-from ..core.estimate import estimated_size
+from ..core.estimate import estimated_size, product_size
+from ..core.size import expanded_terms, rough_count
+from ..core.transforms import product
 from ..errors import UserError
 from ..printing.render import transform_title
-from ..velocity.jacobian import axis_frame
+from ..velocity.jacobian import axis_frame, jacobian_size
 
 MAX_NODES = 200_000  # about 400,000 printed characters, a few seconds of printing
 CHARACTERS_PER_NODE = 2  # measured: 1 (textbook robots) to 1.9 (general chains)
+# LaTeX breaks a long element line by line, in time that grows with the square of its length:
+# 0T5 of a general chain (6,900 nodes) takes seconds, 0T6 (18,000) a minute. The largest
+# built-in result is the iiwa7's 0T7, 1,600 nodes; its Jacobian 3,300.
+LATEX_MAX_NODES = 8_000
+# The screw axes are simplified one by one (sympy.simplify), in time that grows fast with the size
+# of the zero pose: a general 3-link chain's takes 2 s, 4 links (422 nodes) 5 s, 5 links (916) 16 s;
+# the built-ins' zero poses have at most 12 nodes.
+SCREWS_MAX_NODES = 300
+# Velocity propagation applies the sum formulas at every step: its size is the sum of the sizes of
+# each frame's transforms to the axes before it. The iiwa7 has 6,700 (1.4 s), a planar 12R arm 7,900
+# (4 s), a general 4-link chain 5,300 (8 s), a general 5-link chain 16,000 (minutes).
+STEPS_MAX_NODES = 10_000
+# A table entry that expands into many terms ((a + b)^16 nested: 17 terms and more per level) makes
+# every determinant, screw axis and comparison expand it; textbook entries have one to three.
+ENTRY_MAX_TERMS = 1_000
 
 
-def refuse_if_too_large(robot, start, end, raw: bool = False) -> None:
-    """A UserError saying what to do instead when {start}T{end} would be too large to print."""
+def refuse_if_too_large(robot, start, end, raw: bool = False, limit: int = MAX_NODES, others: bool = True) -> None:
+    """A UserError saying what to do instead when {start}T{end} would be larger than `limit`
+    nodes. `others`: also advise `dhsym links` and --raw (commands that print matrices)."""
     chain = robot.chain
     size = estimated_size(chain, start, end, raw)
-    if size <= MAX_NODES:
+    if size <= limit:
         return
     frames = chain.frames
     first, last = sorted((frames.index(start), frames.index(end)))
     reach = first + 1
-    while reach + 1 <= last and estimated_size(chain, frames[first], frames[reach + 1]) <= MAX_NODES:
+    while reach + 1 <= last and estimated_size(chain, frames[first], frames[reach + 1]) <= limit:
         reach += 1
-    advice = (f"ask for part of the chain with --from/--to (--from {frames[first]} --to {frames[reach]} fits), "
-              f"or print the link matrices with 'dhsym links'")
-    if not raw and estimated_size(chain, start, end, raw=True) <= MAX_NODES:
-        advice += ", or the unsimplified product with --raw"
-    characters = _round(size * CHARACTERS_PER_NODE)
-    raise UserError(f"{robot.path}: {transform_title(start, end, 'ascii')} would take about {characters} "
-                    f"characters, too large to print or read; {advice}")
+    shown = [chain.frame_number(frames[k]) for k in (first, reach)]
+    advice = f"ask for part of the chain with --from/--to (--from {shown[0]} --to {shown[1]} fits)"
+    if others:
+        advice += ", or print the link matrices with 'dhsym links'"
+        if not raw and estimated_size(chain, start, end, raw=True) <= limit:
+            advice += ", or the unsimplified product with --raw"
+    title = transform_title(chain.frame_number(start), chain.frame_number(end), "ascii")
+    what = "too large to print or read" if limit == MAX_NODES else "too large to lay out as LaTeX"
+    raise UserError(f"{robot.path}: {title} would take {rough_count(size * CHARACTERS_PER_NODE)} "
+                    f"characters, {what}; {advice}")
 
 
-def _round(number: int) -> str:
-    """A rough count in words people read at a glance: 600,000 or 2.4 billion."""
-    for size, word in ((10**12, "trillion"), (10**9, "billion"), (10**6, "million")):
-        if number >= size:
-            return f"{number / size:.1f} {word}"
-    return f"{round(number, -4):,}"
-
-
-def refuse_jacobian_if_too_large(robot, frame, point) -> None:
-    """A UserError when ᵏJ of `point` would be too large to print, naming a frame where it fits."""
+def refuse_jacobian_if_too_large(robot, frame, point, limit: int = MAX_NODES, option: str = "--frame") -> None:
+    """A UserError when ᵏJ of `point` would be larger than `limit` nodes, naming a frame where it
+    fits (`option` is how the command names that frame), else advising another point."""
     chain = robot.chain
     size = jacobian_size(chain, frame, point)
-    if size <= MAX_NODES:
+    if size <= limit:
         return
-    fitting = [f for f in chain.frames if jacobian_size(chain, f, point) <= MAX_NODES]
-    if fitting:
+    fitting = [f for f in chain.frames if jacobian_size(chain, f, point) <= limit]
+    if fitting and option:
         nearest = min(fitting, key=lambda f: abs(chain.frames.index(f) - chain.frames.index(frame)))
-        advice = f"express it in a frame nearer the point with --frame (--frame {nearest} fits)"
-    else:
+        advice = f"express it in a frame nearer the point with {option} ({option} {chain.frame_number(nearest)} fits)"
+    elif option:
         advice = "ask for the velocity of a frame nearer the base with --point"
-    raise UserError(f"{robot.path}: the Jacobian of frame {point} in frame {frame} would take about "
-                    f"{_round(size * CHARACTERS_PER_NODE)} characters, too large to print or read; {advice}")
+    else:
+        advice = "leave out --jacobian, or print it with 'dhsym jacobian', which takes --frame and --point"
+    what = "too large to print or read" if limit == MAX_NODES else "too large to lay out as LaTeX"
+    raise UserError(f"{robot.path}: the Jacobian of frame {chain.frame_number(point)} in frame "
+                    f"{chain.frame_number(frame)} would take {rough_count(size * CHARACTERS_PER_NODE)} "
+                    f"characters, {what}; {advice}")
 
 
-def jacobian_size(chain, frame, point) -> int:
-    """Estimated nodes of ᵏJ: the transform to the point, plus one to each joint's axis."""
-    axes = (axis_frame(chain, joint) for joint in range(1, chain.n + 1))
-    return estimated_size(chain, frame, point) + sum(estimated_size(chain, frame, axis) for axis in axes)
+def refuse_steps_if_too_large(robot, option: str = "--steps") -> None:
+    """A UserError when Craig's velocity propagation would be too large to work out."""
+    size = propagation_size(robot.chain)
+    if size > STEPS_MAX_NODES:
+        raise UserError(f"{robot.path}: the velocity propagation (--steps) would take "
+                        f"{rough_count(size * CHARACTERS_PER_NODE)} characters, too large to derive step by step; "
+                        f"leave out {option} to get the Jacobian alone")
+
+
+def propagation_size(chain) -> int:
+    """Estimated nodes of every step of the propagation: frame k's ω and v depend on the axes before it."""
+    frames = chain.frames
+    axes = [frames.index(axis_frame(chain, joint)) for joint in range(1, chain.n + 1)]
+    return sum(estimated_size(chain, frames[k], frames[a]) for k in range(1, len(frames)) for a in axes if a < k)
+
+
+def refuse_screws_if_too_large(robot) -> None:
+    """A UserError when the zero pose is too large to simplify into screw axes."""
+    size = zero_pose_size(robot.chain)
+    if size > SCREWS_MAX_NODES:
+        raise UserError(f"{robot.path}: the zero pose of this chain has {rough_count(size)} expression nodes, "
+                        f"more than the {SCREWS_MAX_NODES:,} whose screw axes dhsym simplifies; print the link "
+                        f"matrices with 'dhsym links' and set the joint variables to zero by hand")
+
+
+def zero_pose_size(chain) -> int:
+    """Estimated nodes of base → tool with every joint variable zero, link by link, as the screw axes take it."""
+    zero = {v: 0 for v in chain.joint_variables}
+    links = [product(row.steps(chain.convention)).xreplace(zero) for row in chain.rows]
+    base, tool = ([product([step]) for step in steps] for steps in (chain.base, chain.tool))
+    return product_size([*base, *links, *tool])
+
+
+def refuse_long_entries(robot) -> None:
+    """A UserError when a table entry would expand to too many terms for the commands that expand."""
+    chain = robot.chain
+    fields = [(f"joint row {k} {key}", getattr(row, key)) for k, row in enumerate(chain.rows, 1)
+              for key in ("theta", "d", "a", "alpha")]
+    fields += [(f"{side} step {k}", step.value) for side, steps in (("base", chain.base), ("tool", chain.tool))
+               for k, step in enumerate(steps, 1)]
+    for name, value in fields:
+        terms = expanded_terms(value)
+        if terms > ENTRY_MAX_TERMS:
+            raise UserError(f"{robot.path}: {name} would expand to {rough_count(terms)} terms, more than the "
+                            f"{ENTRY_MAX_TERMS:,} that dhsym expands; name it as a constant (a symbol such as l_1) "
+                            "and give its value in the robot file's sample")

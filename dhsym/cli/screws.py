@@ -9,6 +9,7 @@ import json
 
 from ..geometry.screws import screw_axes
 from ..printing import render
+from .limits import refuse_long_entries, refuse_screws_if_too_large
 from .options import format_options, robot_options
 
 
@@ -23,6 +24,8 @@ def add_parsers(commands) -> None:
 
 def run(robot, args) -> str:
     chain = robot.chain
+    refuse_long_entries(robot)
+    refuse_screws_if_too_large(robot)
     screws = screw_axes(chain)
     variables = chain.joint_variables
     if args.format == "json":  # exact, with the decimals as the file wrote them, as every JSON output

@@ -1,5 +1,7 @@
-"""Time budgets: one per simplification, so a huge chain prints its raw product instead of
-hanging, and one for a whole command, so that nothing (printing included) runs for hours.
+"""Bounded work. Whether a result is worked out is decided before the work, from sizes and
+counts (dhsym.core.estimate), so the answer is the same on any machine under any load. A time
+limit remains only as a safety net, far above any normal case, for a bug or an input that no
+estimate foresaw:
 
 >>> with time_budget(5):
 ...     pass
@@ -9,11 +11,8 @@ hanging, and one for a whole command, so that nothing (printing included) runs f
 Traceback (most recent call last):
 dhsym.core.budget.CommandTooSlow
 
-Budgets nest. `within` runs a computation and falls back only when its own time is up; an
-outer budget that runs out inside passes through to whoever set it:
-
->>> within(5, lambda: "done", lambda: "fallback")
-'done'
+Without `signal.setitimer` (Windows) or off the main thread there is no safety net; the
+estimates alone bound the work.
 """
 from __future__ import annotations
 
@@ -21,9 +20,6 @@ import signal
 import threading
 import time
 from contextlib import contextmanager
-from typing import Callable, TypeVar
-
-Result = TypeVar("Result")
 
 
 class BudgetExceeded(BaseException):
@@ -32,17 +28,18 @@ class BudgetExceeded(BaseException):
 
 
 class CommandTooSlow(BaseException):
-    """Raised when a whole command is over its budget; a separate class, so that the
-    simplification fallback (which catches BudgetExceeded) cannot swallow it."""
+    """Raised when a whole command passes its safety net."""
 
 
-class SimplificationTimeout(UserWarning):
-    """Warned when a result is returned unsimplified because its budget ran out."""
+def has_timer() -> bool:
+    """Whether this platform can interrupt a computation after a time (not Windows)."""
+    return hasattr(signal, "setitimer") and hasattr(signal, "SIGALRM")
 
 
 @contextmanager
-def time_budget(seconds: float | None, exception: type = BudgetExceeded, owner: object = None):
-    """Raise `exception` in the block after `seconds`; no limit for None or off the main thread.
+def time_budget(seconds: float | None, exception: type = BudgetExceeded):
+    """Raise `exception` in the block after `seconds`; no limit for None, off the main thread,
+    or where the platform has no interval timer.
 
     Uses SIGALRM, so it interrupts Python code (SymPy's included) but not one long call into C.
     A timer that was already running (an outer budget, a test's watchdog) is put back
@@ -50,7 +47,7 @@ def time_budget(seconds: float | None, exception: type = BudgetExceeded, owner: 
     """
     if seconds is not None and seconds < 0:
         raise ValueError("a time budget must be positive (or None for no limit)")
-    if not seconds or threading.current_thread() is not threading.main_thread():
+    if not seconds or not has_timer() or threading.current_thread() is not threading.main_thread():
         yield
         return
     outer_delay, outer_interval = signal.getitimer(signal.ITIMER_REAL)
@@ -59,9 +56,7 @@ def time_budget(seconds: float | None, exception: type = BudgetExceeded, owner: 
         return
 
     def expire(signum, frame):
-        error = exception()
-        error.owner = owner  # which budget ran out, for `within`
-        raise error
+        raise exception()
 
     started = time.monotonic()
     previous = signal.signal(signal.SIGALRM, expire)
@@ -74,16 +69,3 @@ def time_budget(seconds: float | None, exception: type = BudgetExceeded, owner: 
         if outer_delay:
             left = max(outer_delay - (time.monotonic() - started), 1e-3)
             signal.setitimer(signal.ITIMER_REAL, left, outer_interval)
-
-
-def within(seconds: float | None, compute: Callable[[], Result], fallback: Callable[[], Result]) -> Result:
-    """compute(), or fallback() when it takes longer than `seconds` (None: no limit). Only this
-    budget's expiry falls back: a budget set outside that runs out meanwhile is raised on."""
-    mine = object()
-    try:
-        with time_budget(seconds, owner=mine):
-            return compute()
-    except BudgetExceeded as error:
-        if getattr(error, "owner", None) is not mine:
-            raise
-    return fallback()

@@ -10,20 +10,20 @@ l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2)
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
 import sympy
 
 from ..errors import UserError
-from .budget import SimplificationTimeout, within
+from .estimate import contracted_size, span_size
 from .numbers import WrittenNumbers
 from .simplify import contract
 from .transforms import CONVENTIONS, Step, as_expr, inverse_transform, link_steps, product
 
 Frame = int | str  # 0..n, or "base" / "tool"
 Simplifier = Callable[[Sequence[Step], frozenset], sympy.Matrix]
+MAX_WORK_NODES = 2_000_000  # estimated expression nodes: past this a transform is not built (a general 11-link chain)
 
 
 @dataclass(frozen=True)
@@ -79,7 +79,7 @@ class Chain:
     """
 
     def __init__(self, rows: Sequence[DHRow], convention: str, base: Sequence[Step] = (),
-                 tool: Sequence[Step] = (), simplifier: Simplifier = contract, timeout: float | None = None, *,
+                 tool: Sequence[Step] = (), simplifier: Simplifier = contract, *,
                  name: str = "", source: str = "", notes: str = "", sample: dict | None = None,
                  frame_offset: int = 0, file: str = "", numbers: WrittenNumbers | None = None):
         if convention not in CONVENTIONS:
@@ -89,7 +89,6 @@ class Chain:
         self.rows, self.convention = tuple(rows), convention
         self.base, self.tool = tuple(base), tuple(tool)
         self.simplifier = simplifier
-        self.timeout = timeout  # seconds of simplification per result; past it the raw product is returned
         self.name, self.source, self.notes = name, source, notes
         self.file = file  # the robot file it was read from, if any
         self.sample = dict(sample or {})  # symbol -> exact number
@@ -209,21 +208,23 @@ class Chain:
         return self._cache[key]
 
     def _compute(self, start: int, end: int, raw: bool) -> sympy.Matrix:
+        """The transform between two step positions. Its size is estimated first, so that a
+        transform too large to work out is refused at once, whatever the machine."""
         if start > end:
             if raw:
                 return inverse_transform(self._compute(end, start, raw=True))
             steps = [step.inverse() for step in reversed(self._steps()[end:start])]
         else:
             steps = self._steps()[start:end]
+        size = span_size(self, start, end, raw=True) if raw else contracted_size(steps)
+        if size > MAX_WORK_NODES:
+            frames = self.frames
+            shown = [self.frame_number(frames[self._bounds().index(p)]) for p in (start, end)]
+            raise UserError(f"{shown[0]}T{shown[1]} would have about {size:,} expression nodes, more than "
+                            f"the {MAX_WORK_NODES:,} that dhsym works out; ask for a shorter part of the chain")
         if raw:
             return self._raw_links(start, end)
-        return within(self.timeout, lambda: self.simplifier(steps, frozenset(self.joint_variables)),
-                      lambda: self._unsimplified(start, end))
-
-    def _unsimplified(self, start: int, end: int) -> sympy.Matrix:
-        warnings.warn(SimplificationTimeout(f"simplification took longer than {self.timeout:g} s; "
-                                            "showing the unsimplified product"), stacklevel=4)
-        return self._compute(start, end, raw=True)
+        return self.simplifier(steps, frozenset(self.joint_variables))
 
     def _raw_links(self, start: int, end: int) -> sympy.Matrix:
         """The plain product of whole link matrices (and base/tool matrices)."""

@@ -25,18 +25,41 @@ Sizes = list  # 4×4 of ints: 0 for a zero element, else the size of its express
 
 def estimated_size(chain, start, end, raw: bool = False) -> int:
     """Estimated total size (expression-tree nodes) of the 3×4 upper part of {start}T{end}."""
-    first, last = sorted((_step_index(chain, start), _step_index(chain, end)))
+    return span_size(chain, _step_index(chain, start), _step_index(chain, end), raw)
+
+
+def span_size(chain, start: int, end: int, raw: bool = False) -> int:
+    """estimated_size between two positions in the chain's list of steps (either order)."""
+    first, last = sorted((start, end))
     steps = _steps(chain)[first:last]
-    if raw:
-        matrices = [product(steps[lo - first:hi - first]) for lo, hi in _link_spans(chain, first, last)]
-        sizes = None
-        for matrix in matrices:
-            sizes = _sizes(matrix) if sizes is None else _product_sizes(sizes, _sizes(matrix))
-    else:
-        sizes = None
-        for block in reversed(split_into_blocks(merge_steps(steps))):  # B1·(B2·(…·Bg)), as contract() does
-            outer = _sizes(block_matrix(block))
-            sizes = outer if sizes is None else _product_sizes(outer, sizes)
+    if not raw:
+        return contracted_size(steps)
+    matrices = []
+    for lo, hi in _link_spans(chain, first, last):
+        span = steps[lo - first:hi - first]
+        # a link is one matrix (4 steps); a long base or tool is taken step by step, never multiplied out here
+        matrices += [product(span)] if len(span) <= 4 else [product([step]) for step in span]
+    return product_size(matrices)
+
+
+def contracted_size(steps) -> int:
+    """Estimated size of the contracted product of `steps` (dhsym.core.simplify.contract)."""
+    sizes = None
+    for block in reversed(split_into_blocks(merge_steps(steps))):  # B1·(B2·(…·Bg)), as contract() does
+        outer = _sizes(block_matrix(block))
+        sizes = outer if sizes is None else _product_sizes(outer, sizes)
+    return _total(sizes)
+
+
+def product_size(matrices) -> int:
+    """Estimated size of the plain product of `matrices` (4×4, multiplied left to right)."""
+    sizes = None
+    for matrix in matrices:
+        sizes = _sizes(matrix) if sizes is None else _product_sizes(sizes, _sizes(matrix))
+    return _total(sizes)
+
+
+def _total(sizes) -> int:
     return sum(sum(row) for row in sizes[:3]) if sizes else 0
 
 

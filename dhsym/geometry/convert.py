@@ -77,6 +77,6 @@ def _copy(chain: Chain, convention: str, rows, base, tool) -> Chain:
     """The converted chain keeps everything its file said: name, source, notes, sample values,
     the number of its first frame (the frames on the joint axes are the same ones), how it
     wrote its numbers, and the file."""
-    return Chain(rows, convention, base, tool, chain.simplifier, chain.timeout, name=chain.name,
+    return Chain(rows, convention, base, tool, chain.simplifier, name=chain.name,
                  source=chain.source, notes=chain.notes, sample=chain.sample, frame_offset=chain.frame_offset,
                  file=chain.file, numbers=chain.numbers)

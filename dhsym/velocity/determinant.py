@@ -24,19 +24,28 @@ is used and `block` says which. Otherwise `value` is None and `note` says why.
 from __future__ import annotations
 
 import random
-import time
 from dataclasses import dataclass
-from functools import partial
 
 import sympy
 
-from ..core.budget import within
 from ..core.simplify import collect_by_trig
-from ..core.size import length
+from ..core.size import expanded_terms, length, rough_count
 from .geometry import wrist_centre
-from .jacobian import ROWS, angular_part, axis_frame, jacobian, linear_part, resolve_frames
+from .jacobian import ROWS, angular_part, axis_frame, jacobian, jacobian_size, linear_part, resolve_frames
 
-FULL_DETERMINANT_BUDGET = 5.0  # seconds for a 6×6 determinant without a wrist centre
+# Terms of a determinant written out, counted before it is expanded: past this it is not factored.
+# The UR5's in frame 4 has 7,812 (a second), in frame 3 40,968 (3 s), in frame 0 44 million, and a
+# general six-link chain's 350 billion. The count depends on the problem alone, never on the machine.
+FACTOR_MAX_TERMS = 50_000
+MIDDLE_FRAMES = (4, 3, 5, 2, 1)  # frames by their distance from the middle of a six-joint arm
+
+
+class TooManyTerms(Exception):
+    """A determinant that would expand to more than FACTOR_MAX_TERMS terms."""
+
+    def __init__(self, terms: int):
+        super().__init__(terms)
+        self.terms = terms
 
 
 @dataclass(frozen=True)
@@ -50,16 +59,25 @@ class Determinant:
     note: str
 
 
-def determinant(chain, frame=None, point=None, budget: float | None = FULL_DETERMINANT_BUDGET) -> Determinant:
-    """The factored determinant of ᵏJ (or of the square block of the rows that move). `budget`
-    (seconds, None for no limit) bounds only the one slow case, a 6×6 J without a wrist centre."""
+def determinant(chain, frame=None, point=None) -> Determinant:
+    """The factored determinant of ᵏJ (or of the square block of the rows that move), or a note
+    saying why none is computed: J is not square, or its determinant would expand to more than
+    FACTOR_MAX_TERMS terms (counted before any expansion, so the answer is the same everywhere)."""
     frame, point = resolve_frames(chain, frame, point)  # checked even where J in `frame` is not needed
+    try:
+        return _determinant(chain, frame, point)
+    except TooManyTerms as error:
+        return Determinant(None, "", [], f"the determinant would expand to {rough_count(error.terms)} terms, "
+                           f"more than the {FACTOR_MAX_TERMS:,} that dhsym factors: not computed.")
+
+
+def _determinant(chain, frame, point) -> Determinant:
     n = chain.n
     if n == 6:  # the same in every frame: worked out where it is short, not from J in `frame`
         centre = wrist_centre(chain)
         if centre is not None:
             return _wrist_partitioned(chain, centre)
-        return _full(chain, budget)
+        return _full(chain)
     if n > 6:
         return Determinant(None, "", [], f"J is 6×{n}: the arm is redundant, and no determinant is computed. "
                            f"It is singular where all {sympy.binomial(n, 6)} of its 6×6 minors vanish (rank < 6); "
@@ -82,13 +100,20 @@ def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
     block = "rows " + ", ".join(ROWS[r] for r in rows)
     what = "the rows that move" if rows == moving else "the velocity of the point" if rows[0] < 3 else "the axes"
     note = f"J is 6×{n}; the determinant is that of its {n}×{n} block of {block} ({what})."
-    results = []
+    results, refused, asked = [], [], None
     for other in dict.fromkeys([frame, *(axis_frame(chain, j) for j in range(1, n + 1)), chain.last_frame]):
         candidate = matrix if other == frame else jacobian(chain, other, point)
         if [r for r in range(6) if any(x != 0 for x in candidate.row(r))] == moving:
-            results.append(_result(chain, candidate.extract(rows, list(range(n))).det(method="berkowitz"), block, note))
+            det = candidate.extract(rows, list(range(n))).det(method="berkowitz")
+            asked = det if asked is None else asked  # the block in the frame asked for comes first
+            try:
+                results.append(_result(chain, det, block, note))
+            except TooManyTerms as error:  # too long in this frame; another may be short
+                refused.append(error)
+    if not results:
+        raise min(refused, key=lambda error: error.terms)
     shortest = min(results, key=lambda result: length(result.value))
-    if _same_sign(shortest.value, results[0].value):  # results[0] is the block in the frame asked for
+    if _same_sign(shortest.value, asked):
         return shortest
     return _result(chain, -shortest.value, block, note)
 
@@ -108,29 +133,20 @@ def _same_sign(a, b) -> bool:
     return True  # zero everywhere we looked: the sign cannot matter
 
 
-def _full(chain, budget: float | None) -> Determinant:
+def _full(chain) -> Determinant:
     """det J of a 6-joint arm without a wrist centre. det J is the same in every frame (a rotation of
     both halves has determinant 1), and in a frame near the middle of the arm the entries are
-    short: the UR5's factors in under a second from frame 4, where frame 0 takes minutes.
-
-    Frames are tried from the middle out; each try gets half of the time left (the last one all
-    of it), so the likeliest frame has most of the budget and a slow machine still finishes it."""
-    middle = [4, 3, 5, 2, 1]  # frames by their distance from the middle of a six-joint arm
-    deadline = None if budget is None else time.monotonic() + budget
-    for other in middle:
-        left = None if deadline is None else deadline - time.monotonic()
-        if left is not None and left <= 0:
-            break
-        share = left if left is None or other == middle[-1] else left / 2
-        result = within(share, partial(_full_in, chain, other), lambda: None)
-        if result is not None:
-            return result
-    return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
-                       f"determinant did not factor within {budget:g} s: not computed.")
-
-
-def _full_in(chain, frame: int) -> Determinant:
-    return _result(chain, jacobian(chain, frame).det(method="berkowitz"), "J", "")
+    short: the UR5's factors in under a second from frame 4, where frame 0 takes minutes. The frame
+    is the one where J is estimated shortest (the middle first on a tie): one attempt, whatever
+    the machine."""
+    frame = min(MIDDLE_FRAMES, key=lambda f: jacobian_size(chain, f, chain.last_frame))
+    try:
+        return _result(chain, jacobian(chain, frame).det(method="berkowitz"), "J", "")
+    except TooManyTerms as error:
+        return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
+                           f"determinant would expand to {rough_count(error.terms)} terms even in frame "
+                           f"{frame}, where J is shortest; that is more than the {FACTOR_MAX_TERMS:,} that dhsym "
+                           "factors: not computed.")
 
 
 def _wrist_partitioned(chain, centre) -> Determinant:
@@ -147,7 +163,7 @@ def _wrist_partitioned(chain, centre) -> Determinant:
 
 
 def _result(chain, det, block: str, note: str) -> Determinant:
-    value = factored(det)
+    value = as_written(factored(det), chain.numbers)
     variables = set(chain.joint_variables)
     factors = []
     for factor in sympy.Mul.make_args(value):
@@ -161,8 +177,48 @@ def _result(chain, det, block: str, note: str) -> Determinant:
     return Determinant(value, block, factors, note)
 
 
+def as_written(value: sympy.Expr, numbers) -> sympy.Expr:
+    """A factored determinant with each factor scaled back to the decimals its robot file wrote:
+    factoring makes 0.425 c2 + 0.39225 c23 into (8500 c2 + 7845 c23)/20000 (the printers write
+    17/40 as 0.425 again).
+
+    >>> from dhsym.core.numbers import WrittenNumbers
+    >>> c2, c3 = sympy.symbols("c2 c3")
+    >>> as_written(3 * c3 * (8500 * c2 + 7845) / 20000, WrittenNumbers(6, values=frozenset({sympy.Rational(17, 40)})))
+    3*c3*(17*c2/40 + 1569/4000)
+    """
+    if not numbers.places:
+        return value
+    coefficient, factors = value.as_coeff_mul()
+    scaled, changed = [], False
+    for factor in factors:
+        base, exponent = factor.as_base_exp()
+        scale = _written_scale(base, numbers) if base.is_Add else None
+        if scale is None:
+            scaled.append(factor)
+            continue
+        scaled.append(sympy.Pow(sympy.expand(base * scale), exponent))
+        coefficient, changed = coefficient / scale ** exponent, True
+    return sympy.Mul(coefficient, *scaled, evaluate=False) if changed else value
+
+
+def _written_scale(base: sympy.Add, numbers):
+    """The factor that turns the coefficients of `base` into decimals as written: one of them
+    into a value the file wrote and the others into decimals, else None."""
+    coefficients = [abs(term.as_coeff_Mul()[0]) for term in base.args]
+    if not all(c.is_Rational for c in coefficients):
+        return None
+    for written in sorted(numbers.values, key=lambda v: (-v.q, v)):
+        for coefficient in coefficients:
+            scale = written / coefficient
+            if scale != 1 and all(numbers.decimal(c * scale, alone=True) for c in coefficients):
+                return scale
+    return None
+
+
 def factored(expr: sympy.Expr) -> sympy.Expr:
-    """Factor a polynomial in cos/sin, then shorten each factor with sin² = 1 − cos².
+    """Factor a polynomial in cos/sin, then shorten each factor with sin² = 1 − cos². Raises
+    TooManyTerms, before any work, when it would expand to more than FACTOR_MAX_TERMS terms.
 
     >>> t4, t5 = sympy.symbols("theta_4 theta_5", real=True)
     >>> factored(-sympy.sin(t4)**2*sympy.sin(t5) - sympy.cos(t4)**2*sympy.sin(t5))
@@ -170,6 +226,9 @@ def factored(expr: sympy.Expr) -> sympy.Expr:
     """
     if expr == 0:
         return sympy.Integer(0)
+    terms = expanded_terms(expr)
+    if terms > FACTOR_MAX_TERMS:
+        raise TooManyTerms(terms)
     result = sympy.factor(sympy.expand(expr))
     shortened = sympy.Mul(*[_pythagoras(f) for f in sympy.Mul.make_args(result)])
     return sympy.factor(shortened) if shortened != result else result

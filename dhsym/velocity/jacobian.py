@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import sympy
 
+from ..core.estimate import estimated_size
 from ..core.simplify import block_matrix, collect_by_trig, merge_steps, split_into_blocks
 from ..core.size import length
 from ..errors import UserError
@@ -57,6 +58,13 @@ def resolve_frames(chain, frame, point) -> tuple:
     frame = chain.first_frame if frame is None else frame
     point = chain.last_frame if point is None else point
     return tuple(f if f in chain.frames else chain.frame(str(f)) for f in (frame, point))
+
+
+def jacobian_size(chain, frame, point) -> int:
+    """Estimated nodes of ᵏJ, before it is built: the transform to the point plus one to each
+    joint's axis (a general 8-link chain in frame 0: 203,000 estimated, 200,000 built)."""
+    axes = (axis_frame(chain, joint) for joint in range(1, chain.n + 1))
+    return estimated_size(chain, frame, point) + sum(estimated_size(chain, frame, axis) for axis in axes)
 
 
 def axis_frame(chain, joint: int):
