@@ -107,8 +107,8 @@ def _without_control_characters(text: str, json_format: bool) -> str:
     sequences, a right-to-left override in a note), line breaks and tabs kept: as \\u escapes
     in JSON, as Python-style escapes like the error messages' in text. LaTeX has none left.
 
-    >>> _without_control_characters("arm\x1b[31m\n", False), _without_control_characters('"a\x7f"', True)
-    ('arm\\x1b[31m\n', '"a\\u007f"')
+    >>> _without_control_characters("arm\\x1b[31m\\n", False), _without_control_characters('"a\\x7f"', True)
+    ('arm\\\\x1b[31m\\n', '"a\\\\u007f"')
     """
     if text.isprintable():
         return text
