@@ -7,9 +7,9 @@ closed-form solver and 100x faster than IKBT).
   method, with python-flint). It is installed with its `[ik]` extra into its own venv
   (build/peers/rtb, never the project's) and run in a subprocess of that venv; where it cannot be
   installed (no network) the benchmark says so and goes on.
-- IKBT (UW BioRobotics): not on PyPI (`pip download ikbt` finds no distribution), and its
-  repository is a research code base with no installable package; it is not run, and the
-  benchmark says so.
+- IKBT (UW BioRobotics): not on PyPI (`pip download ikbt` finds no distribution); it runs from a
+  git checkout of its repository (`python ikSolver.py`), which a benchmark should not fetch; it
+  is not run, and the benchmark says so.
 - SymPy doing the same steps, the fallback the issue allows and always run: the plain product
   ⁰T₆ of the PUMA's link matrices, trigsimp of its elements and of Paul's first equation
   (⁰T₁)⁻¹ T = ¹T₆, and `sympy.solve` of its element (2, 4) for θ1.
@@ -122,8 +122,8 @@ def main() -> None:
               f"dhsym is {theirs / ours:.0f}x faster (the issue asks for 10x)")
     else:
         print(f"Robotics Toolbox 1.5.0: {reason}; compared with SymPy doing the same steps below")
-    print("IKBT: not installable (not on PyPI: `pip download ikbt` finds no distribution; its repository has "
-          "no installable package): not run; compared with SymPy doing the same steps below")
+    print("IKBT: not installable (not on PyPI: `pip download ikbt` finds no distribution; it runs from a git "
+          "checkout of its repository): not run; compared with SymPy doing the same steps below")
     baseline = sympy_same_steps()
     print(f"SymPy doing the same steps (plain product 0T6, trigsimp of it and of Paul's first equation, "
           f"solve for theta_1): {baseline:.2f} s of CPU: dhsym is {baseline / ours:.0f}x faster")

@@ -133,7 +133,8 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
     groups: dict = {}
     for equation in pool:
-        key = (equation.expr, tuple(remaining))
+        held = equation.expr.free_symbols
+        key = (equation.expr, tuple(v for v in remaining if v in held))
         if key not in _shapes:  # rounds look at the same equations again; their structure is kept
             _shapes[key] = _shape(equation, remaining, prismatic)
         shape = _shapes[key]
