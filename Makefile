@@ -47,6 +47,8 @@ bench: install
 	$(BIN)/python benchmarks/simplify_speed.py
 	$(BIN)/python benchmarks/velocity_speed.py
 	$(BIN)/python benchmarks/geometry_speed.py
+	$(BIN)/python benchmarks/ik_speed.py
+	$(BIN)/python benchmarks/ik_peers.py
 
 notebooks: install node-packages
 	bash scripts/export-notebooks.sh

@@ -15,6 +15,7 @@ a_1**2 + 2*a_1*a_2*cos(theta_2) + a_2**2
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import sympy
 
@@ -35,8 +36,8 @@ class Equation:
     where: str
     source: str = ""  # the matrix equation it is an element of: pairs are taken within one
 
-    @property
-    def expr(self) -> sympy.Expr:
+    @cached_property
+    def expr(self) -> sympy.Expr:  # built once: the search reads it in every round
         return self.lhs - self.rhs
 
 

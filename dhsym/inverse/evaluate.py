@@ -15,7 +15,7 @@ import sympy
 
 from .solution import target_symbols
 
-COMPILED_KEPT = 2000  # compiled expressions kept between calls
+COMPILED_KEPT = 64  # compiled solutions kept between calls
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 
 
@@ -32,27 +32,23 @@ def evaluate(solution, T, constants=None):
     values = dict(solution.chain.sample)
     values.update(constants or {})
     names = {str(k): v for k, v in values.items()}
-    inputs = {symbol: poses[:, r, c] for symbol, (r, c) in zip(target_symbols(), _positions())}
-    out = numpy.full((poses.shape[0], len(solution.branches), len(solution.joint_variables)), numpy.nan)
+    function, parameters = _program(solution)
+    arguments = [poses[:, r, c] for r, c in _positions()]
+    for symbol in parameters:
+        if str(symbol) not in names:
+            from ..errors import UserError
+            raise UserError(f"no value for {symbol}: give it in the constants (a --free joint variable needs one)")
+        arguments.append(float(names[str(symbol)]))
+    count, branches, joints = poses.shape[0], len(solution.branches), len(solution.joint_variables)
     revolute = [row.joint == "R" for row, v in zip(solution.chain.rows, solution.chain.joint_variables)
                 if v in solution.joint_variables]
     with numpy.errstate(invalid="ignore", divide="ignore"):
-        shared = dict(inputs)
-        for name, value in solution.definitions:
-            shared[name] = _compute(value, shared, names)
-        done: dict = {}  # branches share their first steps (θ1 of the shoulder): each is computed once
-        for b, branch in enumerate(solution.branches):
-            known = dict(shared)
-            for k, (name, value) in enumerate(branch.assignments):
-                prefix = branch.assignments[:k + 1]
-                if prefix not in done:
-                    done[prefix] = _compute(value, known, names)
-                known[name] = done[prefix]
-            result = numpy.stack([numpy.broadcast_to(numpy.asarray(known[v], dtype=float), (poses.shape[0],))
-                                  for v in solution.joint_variables], axis=-1)
-            result[:, revolute] = (result[:, revolute] + numpy.pi) % (2 * numpy.pi) - numpy.pi
-            result[numpy.isnan(result).any(axis=-1)] = numpy.nan  # half a branch is no branch
-            out[:, b] = result
+        out = numpy.empty((count, branches * joints))
+        for k, value in enumerate(function(*arguments)):
+            out[:, k] = value  # a number (a joint the pose does not change) fills its column
+        out = out.reshape((count, branches, joints))
+        out[..., revolute] = (out[..., revolute] + numpy.pi) % (2 * numpy.pi) - numpy.pi
+        out[numpy.isnan(out).any(axis=-1)] = numpy.nan  # half a branch is no branch
     return out[0] if single else out
 
 
@@ -63,26 +59,29 @@ def _positions():
 _compiled: dict = {}
 
 
-def _compute(expr: sympy.Expr, known: dict, constants: dict):
-    """The value of `expr` from arrays of the names it uses (and numbers for the constants)."""
-    import numpy
-
-    symbols = sorted(expr.free_symbols, key=str)
-    key = (expr, tuple(symbols))
+def _program(solution):
+    """One numpy function of the target elements and the robot's constants that gives every
+    joint of every branch, flat, with the sub-expressions that branches share (θ1, D, √(1 − D²),
+    c1 of the shoulder) computed once: each name is put in for its value, and common
+    sub-expression elimination shares what the branches have in common. Kept per solution."""
+    key = (solution.definitions, solution.branches, solution.joint_variables)
     if key not in _compiled:
         if len(_compiled) > COMPILED_KEPT:  # a long session solving many arms keeps only recent ones
             _compiled.clear()
-        _compiled[key] = sympy.lambdify(symbols, expr, modules=[{"sqrt": _sqrt}, "numpy"])
-    arguments = []
-    for symbol in symbols:
-        if symbol in known:
-            arguments.append(known[symbol])
-        elif str(symbol) in constants:
-            arguments.append(float(constants[str(symbol)]))
-        else:
-            from ..errors import UserError
-            raise UserError(f"no value for {symbol}: give it in the constants (a --free joint variable needs one)")
-    return numpy.asarray(_compiled[key](*arguments), dtype=float)
+        shared: dict = {}
+        for name, value in solution.definitions:
+            shared[name] = value.xreplace(shared)
+        outputs = []
+        for branch in solution.branches:
+            known = dict(shared)
+            for name, value in branch.assignments:
+                known[name] = value.xreplace(known)
+            outputs += [sympy.sympify(known.get(v, v)) for v in solution.joint_variables]
+        inputs = list(target_symbols())
+        parameters = sorted(set().union(*(e.free_symbols for e in outputs)) - set(inputs), key=str)
+        function = sympy.lambdify(inputs + parameters, outputs, modules=[{"sqrt": _sqrt}, "numpy"], cse=True)
+        _compiled[key] = function, parameters
+    return _compiled[key]
 
 
 def _sqrt(x):

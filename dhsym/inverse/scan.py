@@ -70,6 +70,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
     _cache.clear()  # forms are reused within one search only: memory stays bounded across many
+    _lengths.clear()
+    _shapes.clear()
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
@@ -131,7 +133,11 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
     groups: dict = {}
     for equation in pool:
-        shape = _shape(equation, remaining, prismatic)
+        held = equation.expr.free_symbols
+        key = (equation.expr, tuple(v for v in remaining if v in held))
+        if key not in _shapes:  # rounds look at the same equations again; their structure is kept
+            _shapes[key] = _shape(equation, remaining, prismatic)
+        shape = _shapes[key]
         if shape is not None:
             # first the equations where the unknown is on the chain's side alone, with the shortest
             # chain side: there the coefficients of cos and sin are the chain's constants
@@ -156,9 +162,9 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
             rule = "linear" if len(c.form) == 2 else "quadratic"
             # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
             rank = (1 if c.form[0].is_number else 5) if rule == "linear" else 4
-            options.append(((kind_rank(c), rank, length(c.form)), rule, [c]))
+            options.append(((kind_rank(c), rank, _form_length(c.form)), rule, [c]))
         else:
-            options.append(((kind_rank(c), 4, length(c.form)), "one", [c]))
+            options.append(((kind_rank(c), 4, _form_length(c.form)), "one", [c]))
     by_source: dict = {}
     for c in singles:
         if c.variable not in prismatic:
@@ -170,7 +176,7 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
             constant = all(x.is_number for x in first.form[:2] + second.form[:2])
             rank = 0 if constant else 2 if sp.determinant_sign(first.form, second.form) else 3
             options.append(((max(kind_rank(first), kind_rank(second)), rank,
-                             length(first.form) + length(second.form)), "pair", [first, second]))
+                             _form_length(first.form) + _form_length(second.form)), "pair", [first, second]))
     if not options:
         return None
     _, rule, candidates = min(options, key=lambda o: o[0])
@@ -217,6 +223,15 @@ def _shape(equation, remaining, prismatic):
 
 
 _cache: dict = {}
+_lengths: dict = {}
+_shapes: dict = {}
+
+
+def _form_length(form) -> int:
+    """length(form), measured once per search: every round compares the same forms again."""
+    if form not in _lengths:
+        _lengths[form] = length(form)
+    return _lengths[form]
 
 
 def _candidate(equation, shape, constants) -> Candidate | None:
@@ -264,6 +279,14 @@ def _degenerate_pair(det, shown) -> str:
     return f"{_unsigned(det)} = 0: {shown} is not determined by these equations"
 
 
+def _has_square_pair(expr) -> bool:
+    """Whether sin(x)**k and cos(x)**k of one angle both occur: only then can trigsimp shorten
+    without double angles (a cheap test that spares trigsimp most determinants)."""
+    powers = {(type(p.base), p.base.args[0], p.exp) for p in expr.atoms(sympy.Pow)
+              if isinstance(p.base, (sympy.sin, sympy.cos))}
+    return any((sympy.cos, x, k) in powers for f, x, k in powers if f is sympy.sin)
+
+
 def _unsigned(expr):
     return -expr if expr.could_extract_minus_sign() else expr
 
@@ -291,7 +314,8 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
                                          "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
                                          (variable,), f"{c.equation.where} (equation {index} of 2)"))
         det = sp.determinant(candidates[0].form, candidates[1].form)
-        if length(det) < 60:  # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
+        if not det.is_number and _has_square_pair(det) and length(det) < 60:
+            # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
             shorter = sympy.factor(sympy.trigsimp(det))
             if not any(f.args[0].as_coeff_Mul()[0] not in (1, -1) for f in shorter.atoms(sympy.sin, sympy.cos)):
                 det = min([det, shorter], key=length)

@@ -18,6 +18,8 @@ atan2(y, x)
 """
 from __future__ import annotations
 
+import math
+
 import sympy
 
 from ..core.size import length
@@ -65,11 +67,11 @@ def trig_linear(expr: sympy.Expr, variable: sympy.Symbol, constants=frozenset())
     a, b = parts.get(c_, sympy.Integer(0)), parts.get(s_, sympy.Integer(0))
     if a.has(c_, s_) or b.has(c_, s_) or (a == 0 and b == 0):
         return None
+    factor = _common_constant(a, b, constants)  # from the expanded terms, before they are factored
     a, b = sympy.factor_terms(a), sympy.factor_terms(b)
     c = -(rest + parts.get(sympy.S.One, sympy.Integer(0)))
-    if (b == 0 or a == 0) and _common_constant(a + b, 0, constants) in (a + b, -a - b):  # cos θ = D, sin θ = D
+    if (b == 0 or a == 0) and factor in (a + b, -a - b):  # cos θ = D, sin θ = D
         return sympy.Integer(b == 0), sympy.Integer(a == 0), _divided(c, a if b == 0 else b)
-    factor = _common_constant(a, b, constants)
     return tuple(_divided(x, factor) for x in (a, b, c))
 
 
@@ -81,13 +83,51 @@ def _divided(value, factor):
 
 
 def _common_constant(a, b, constants) -> sympy.Expr:
-    """The factor of constants that every term of a and b shares (2 a2 of 2 a2 a3 and −2 a2 d4)."""
+    """The factor of constants that every term of a and b shares (2 a2 of 2 a2 a3 and −2 a2 d4).
+    Read off the terms when they are monomials in symbols with rational coefficients (linear
+    time); otherwise by factor_terms of the expanded sum."""
+    shared = _monomial_gcd(sympy.Add.make_args(a) + sympy.Add.make_args(b), set(constants))
+    if shared is not None:
+        return shared
     x, y = sympy.Dummy("x"), sympy.Dummy("y")
     shared, _ = sympy.factor_terms(sympy.expand(a * x + b * y)).as_independent(x, y, as_Add=False)
     kept = [f for f in sympy.Mul.make_args(shared)
             if f.is_number and f != 0 or (f.free_symbols <= set(constants) and not f.atoms(sympy.Function))]
     shared = sympy.Mul(*kept)
     return -shared if shared.could_extract_minus_sign() else shared
+
+
+def _monomial_gcd(terms, constants):
+    """The positive rational gcd of the terms' coefficients times the lowest power of each constant
+    that all of them hold; None when a term is not a product of a rational and powers of symbols.
+
+    >>> a2, a3, d4 = sympy.symbols("a_2 a_3 d_4")
+    >>> _monomial_gcd((2*a2*a3, -4*a2**2*d4), {a2, a3, d4})
+    2*a_2
+    """
+    terms = [t for t in terms if t != 0]
+    if not terms:
+        return None
+    numerator, denominator, powers = 0, 1, None
+    for term in terms:
+        coefficient, rest = term.as_coeff_Mul()
+        if not coefficient.is_Rational:
+            return None
+        numerator = math.gcd(numerator, abs(coefficient.p))
+        denominator = math.lcm(denominator, coefficient.q)
+        held = {}
+        for factor in sympy.Mul.make_args(rest):
+            base, exponent = factor.as_base_exp()
+            if not (base.is_Symbol and exponent.is_Integer):
+                if base.is_number or base.free_symbols & constants:
+                    return None
+                continue  # cos θ, px**k: no constant of the robot in it
+            if exponent < 0:
+                return None
+            held[base] = exponent
+        held = {k: v for k, v in held.items() if k in constants}
+        powers = held if powers is None else {k: min(v, held[k]) for k, v in powers.items() if k in held}
+    return sympy.Rational(numerator, denominator) * sympy.Mul(*[k ** v for k, v in powers.items()])
 
 
 def one_equation(a, b, c, sigma, shape: str = "A") -> sympy.Expr:
