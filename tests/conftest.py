@@ -22,7 +22,8 @@ SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_fuzz.py", "te
 SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_through_subprocess",
               "test_commands_without_pictures_import_no_numpy", "test_transform_times_its_inverse_is_identity",
               "test_every_frame_matches_the_raw_product_numerically",
-              "test_the_ur5_determinant_factors_without_a_wrist_centre")
+              "test_the_ur5_determinant_factors_without_a_wrist_centre",
+              "test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics")
 SLOW_FIXTURES = ("compiled",)  # tests that run pdflatex
 
 

@@ -139,7 +139,7 @@ def compiled(tmp_path_factory, request):
     """The compiled documents; those of the selected robot tests (all, or those `-k` picks) at once."""
     result = _Compiled(tmp_path_factory.mktemp("latex"))
     selected = [item.callspec.params for item in request.session.items
-                if item.module is request.module and hasattr(item, "callspec")]
+                if getattr(item, "module", None) is request.module and hasattr(item, "callspec")]
     result.prefetch(f"{p['name']}-{p['variant']}" for p in selected if "name" in p and "variant" in p)
     return result
 
