@@ -57,29 +57,37 @@ def _positions():
 
 
 _compiled: dict = {}
+_KEPT = sympy.Function("kept")  # a named value put in as it is: no rewriting across it
+
+
+def _identity(x):
+    return x
 
 
 def _program(solution):
     """One numpy function of the target elements and the robot's constants that gives every
     joint of every branch, flat, with the sub-expressions that branches share (θ1, D, √(1 − D²),
     c1 of the shoulder) computed once: each name is put in for its value, and common
-    sub-expression elimination shares what the branches have in common. Kept per solution."""
+    sub-expression elimination shares what the branches have in common. Kept per solution.
+    A name is put in unevaluated: SymPy would turn sin(atan2(y, x)) into y/√(x² + y²), which is
+    0/0 where atan2(0, 0) is a number (the shoulder on the axis, the wrist at s5 = 0)."""
     key = (solution.definitions, solution.branches, solution.joint_variables)
     if key not in _compiled:
         if len(_compiled) > COMPILED_KEPT:  # a long session solving many arms keeps only recent ones
             _compiled.clear()
         shared: dict = {}
         for name, value in solution.definitions:
-            shared[name] = value.xreplace(shared)
+            shared[name] = _KEPT(value.xreplace(shared))
         outputs = []
         for branch in solution.branches:
             known = dict(shared)
             for name, value in branch.assignments:
-                known[name] = value.xreplace(known)
+                known[name] = _KEPT(value.xreplace(known))
             outputs += [sympy.sympify(known.get(v, v)) for v in solution.joint_variables]
         inputs = list(target_symbols())
         parameters = sorted(set().union(*(e.free_symbols for e in outputs)) - set(inputs), key=str)
-        function = sympy.lambdify(inputs + parameters, outputs, modules=[{"sqrt": _sqrt}, "numpy"], cse=True)
+        function = sympy.lambdify(inputs + parameters, outputs, modules=[{"sqrt": _sqrt, "kept": _identity}, "numpy"],
+                                   cse=True)
         _compiled[key] = function, parameters
     return _compiled[key]
 
