@@ -1,0 +1,282 @@
+"""Every example in README.md and docs/*.md is run, so that none can go stale.
+
+What a page shows, and how it is checked (blocks run in page order, in a scratch folder per page
+that sees the repository's `docs/` and `tests/`, with COLUMNS=100):
+
+- ```console: `$ dhsym ARGS` followed by its output (standard output and error as a terminal shows
+  them, in order). The command runs as `python -m dhsym.cli ARGS` does (`dhsym.cli.main` inside this
+  process, which is what `python -m dhsym.cli` calls; one README example also runs as a real process),
+  and the output must be exactly what is shown. The exit status must be 0 unless the next line is
+  `$ echo $?` followed by the status. `< FILE` and `> FILE` redirect as a shell does.
+- ```sh: a list of commands without output. Lines `dhsym ...` run and must exit with status 0;
+  `make TARGET` must name a Makefile target and `pip install '.[EXTRA]'` an extra of pyproject.toml.
+- ```python: run in order in one namespace per page. `>>>` lines (with `...` continuations) are
+  compared with the output below them as doctest does; a block without prompts must not raise.
+- ```yaml: a robot file; it must load (```yaml refused: it must be refused with a UserError).
+  ```yaml file=NAME also writes it as NAME for the commands after it.
+- ```text: shown, not run (measurements, pictures of the layout).
+
+Relative links must point at files that exist, and the README stays a five-minute read.
+
+When outputs change on purpose, regenerate the pages and review the diff:
+
+    DHSYM_UPDATE_DOCS=1 python -m pytest tests/test_docs.py && git diff README.md docs/
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import re
+import shlex
+import subprocess
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+UPDATE = os.environ.get("DHSYM_UPDATE_DOCS") == "1"
+COLUMNS = "100"  # the shown outputs are 100 columns wide, whatever the tester's terminal
+SHELL_WORDS = ("make", "pip", "git", "cd", "python", "python3", "pdflatex", "jupyter", "source", ".")
+FENCE = re.compile(r"^( *)```(\S*)(.*)$")
+
+
+@dataclass
+class Block:
+    """A fenced code block: its info string and its lines, with where they sit in the page."""
+    kind: str
+    options: str
+    indent: str
+    start: int  # index of the first line inside the fence
+    lines: list[str] = field(default_factory=list)
+    replacement: list[str] | None = None  # the block's new lines in update mode
+
+    @property
+    def text(self) -> str:
+        return "".join(line + "\n" for line in self.lines)
+
+    def option(self, name: str) -> str | None:
+        found = re.search(rf"\b{name}=(\S+)", self.options)
+        return found.group(1) if found else None
+
+
+def blocks(page: Path) -> list[Block]:
+    """The fenced blocks of a markdown page, dedented by their fence's indentation."""
+    found, current = [], None
+    for number, line in enumerate(page.read_text(encoding="utf-8").split("\n")):
+        fence = FENCE.match(line)
+        if current is None and fence:
+            current = Block(fence.group(2), fence.group(3).strip(), fence.group(1), number + 1)
+        elif current is not None and fence and not fence.group(2) and not fence.group(3).strip():
+            found.append(current)
+            current = None
+        elif current is not None:
+            current.lines.append(line[len(current.indent):] if line.startswith(current.indent) else line.lstrip())
+    assert current is None, f"{page.name}: a code block is not closed"
+    return found
+
+
+def run_dhsym(argv: list[str], stdin: bytes | None = None) -> tuple[str, int]:
+    """`python -m dhsym.cli ARGV` in this process: standard output and error together, and the status."""
+    from dhsym.cli import main
+
+    merged = io.StringIO()
+    saved_stdin = sys.stdin
+    if stdin is not None:
+        sys.stdin = io.TextIOWrapper(io.BytesIO(stdin), encoding="utf-8")
+    try:
+        with contextlib.redirect_stdout(merged), contextlib.redirect_stderr(merged):
+            try:
+                status = main(argv)
+            except SystemExit as exit_:  # argparse's --help and usage errors
+                status = exit_.code if isinstance(exit_.code, int) else 1
+    finally:
+        sys.stdin = saved_stdin
+    return merged.getvalue(), status
+
+
+def run_console(block: Block, where: str) -> list[str]:
+    """Run a console session; returns its lines with today's outputs (for update mode)."""
+    sessions, current = [], None
+    for line in block.lines:
+        if line.startswith("$ "):
+            current = [line[2:], []]
+            sessions.append(current)
+        else:
+            assert current is not None, f"{where}: a console block starts with `$ command`"
+            current[1].append(line)
+    rewritten, status, previous = [], None, ""
+    for command, shown in sessions:
+        words = shlex.split(command)
+        if words == ["echo", "$?"]:
+            assert status is not None, f"{where}: `echo $?` follows no dhsym command"
+            output, status = f"{status}\n", None
+        else:
+            assert words[0] == "dhsym", f"{where}: only `dhsym ...` and `echo $?` run in a console block: {command}"
+            if status not in (None, 0):
+                raise AssertionError(f"{where}: `{previous}` exited with status {status}; show it with `$ echo $?`")
+            output, status = run_command(words[1:], where)
+            previous = command
+        expected = "".join(line + "\n" for line in shown)
+        if not UPDATE:
+            assert output == expected, f"{where}: `{command}` prints something else today " \
+                                       f"(DHSYM_UPDATE_DOCS=1 rewrites the page)"
+        rewritten += ["$ " + command, *output.splitlines()]
+    if status not in (None, 0):
+        raise AssertionError(f"{where}: `{previous}` exited with status {status}; show it with `$ echo $?`")
+    return rewritten
+
+
+def run_command(words: list[str], where: str) -> tuple[str, int]:
+    """One dhsym command line with optional `< FILE` and `> FILE` at its end."""
+    stdin = target = None
+    while len(words) >= 2 and words[-2] in ("<", ">"):
+        if words[-2] == "<":
+            stdin = Path(words[-1]).read_bytes()
+        else:
+            target = Path(words[-1])
+        words = words[:-2]
+    output, status = run_dhsym(words, stdin)
+    if target is not None:
+        target.write_text(output, encoding="utf-8")
+        output = ""
+    return output, status
+
+
+def run_sh(block: Block, where: str, makefile: str, pyproject: str) -> None:
+    for line in block.lines:
+        command = line.split("#")[0].strip()
+        if not command:
+            continue
+        words = shlex.split(command)
+        while "=" in words[0] and words[0].split("=")[0].isidentifier():  # VAR=value before a command
+            words = words[1:]
+        if words[0] == "dhsym":
+            output, status = run_command(words[1:], where)
+            assert status == 0, f"{where}: `{command}` exited with status {status}:\n{output}"
+        elif words[0] == "make":
+            for target in words[1:]:
+                assert re.search(rf"^{re.escape(target)}:", makefile, re.M), f"{where}: no make target {target}"
+        elif words[:2] == ["pip", "install"]:
+            for extra in re.findall(r"\[([\w,-]+)\]", command):
+                for name in extra.split(","):
+                    assert re.search(rf"^{name} = \[", pyproject, re.M), f"{where}: pyproject.toml has no extra {name}"
+        else:
+            assert words[0] in SHELL_WORDS, f"{where}: a sh block runs dhsym, make, pip and shell basics: {command}"
+
+
+def run_python(block: Block, where: str, namespace: dict) -> list[str]:
+    """Run a python block in the page's namespace; returns its lines with today's outputs."""
+    if not any(line.startswith(">>>") for line in block.lines):
+        exec(compile(block.text, where, "exec"), namespace)
+        return block.lines
+    examples, current = [], None
+    for line in block.lines:
+        if line.startswith(">>>"):
+            current = [[line[4:]], [], line]
+            examples.append(current)
+        elif line.startswith("...") and current is not None and not current[1]:
+            current[0].append(line[4:])
+            current[2] += "\n" + line
+        elif current is not None and line.strip():
+            current[1].append(line)
+        else:
+            current = None
+    rewritten = []
+    for source, shown, prompt in examples:
+        got = io.StringIO()
+        with contextlib.redirect_stdout(got):
+            exec(compile("\n".join(source) + "\n", where, "single"), namespace)
+        output = [line.rstrip() for line in got.getvalue().rstrip("\n").split("\n")] if got.getvalue() else []
+        if not UPDATE:
+            assert output == [line.rstrip() for line in shown], \
+                f"{where}: `{source[0]}` gives\n" + "\n".join(output) + "\n(DHSYM_UPDATE_DOCS=1 rewrites the page)"
+        rewritten += [*prompt.split("\n"), *output]
+    return rewritten
+
+
+def load_yaml(block: Block, where: str) -> None:
+    import dhsym
+
+    name = Path(block.option("file") or "robot.yaml")
+    name.write_text(block.text, encoding="utf-8")
+    try:
+        dhsym.load(str(name))
+    except dhsym.UserError as error:
+        assert "refused" in block.options.split(), f"{where}: the robot file does not load: {error}"
+    else:
+        assert "refused" not in block.options.split(), f"{where}: the file marked `refused` loads"
+    if not block.option("file"):
+        name.unlink()
+
+
+def write_back(page: Path, found: list[Block]) -> None:
+    lines = page.read_text(encoding="utf-8").split("\n")
+    for block in reversed(found):
+        if block.replacement is not None and block.replacement != block.lines:
+            end = block.start + len(block.lines)
+            lines[block.start:end] = [block.indent + line if line else line for line in block.replacement]
+    page.write_text("\n".join(lines), encoding="utf-8")
+
+
+@pytest.fixture
+def sandbox(tmp_path, monkeypatch):
+    """A scratch folder that sees the repository's examples, as the pages' commands expect."""
+    for name in ("docs", "tests"):
+        (tmp_path / name).symlink_to(ROOT / name)
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("COLUMNS", COLUMNS)
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    return tmp_path
+
+
+@pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
+def test_every_example_on_the_page_is_current(page, sandbox):
+    makefile = (ROOT / "Makefile").read_text(encoding="utf-8")
+    pyproject = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
+    namespace: dict = {"__name__": "__docs__"}
+    found = blocks(page)
+    for block in found:
+        where = f"{page.relative_to(ROOT)}:{block.start}"
+        if block.kind == "console":
+            block.replacement = run_console(block, where)
+        elif block.kind == "sh":
+            run_sh(block, where, makefile, pyproject)
+        elif block.kind == "python":
+            block.replacement = run_python(block, where, namespace)
+        elif block.kind == "yaml":
+            load_yaml(block, where)
+        else:
+            assert block.kind == "text", f"{where}: say what the block is: console, sh, python, yaml or text"
+    if UPDATE:
+        write_back(page, found)
+
+
+@pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
+def test_relative_links_point_at_files(page):
+    text = page.read_text(encoding="utf-8")
+    for target in re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", text):
+        if not re.match(r"[a-z]+:", target):
+            assert (page.parent / target).exists(), f"{page.name}: the link {target} points at nothing"
+
+
+def test_the_readme_is_a_five_minute_read():
+    """Short, with the examples a newcomer runs first, and a way on to every page in docs/."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert len(readme.splitlines()) <= 250
+    assert len(re.findall(r"^\$ dhsym ", readme, re.M)) >= 5
+    for page in PAGES[1:]:
+        assert f"docs/{page.name}" in readme, f"the README does not lead to docs/{page.name}"
+
+
+def test_the_readme_example_runs_as_a_process_too():
+    """The examples run inside this process; the first one also runs the way a user runs it."""
+    readme = next(b for b in blocks(ROOT / "README.md") if b.kind == "console")
+    command, *shown = readme.lines
+    result = subprocess.run([sys.executable, "-m", "dhsym.cli", *shlex.split(command[2:])[1:]], capture_output=True,
+                            text=True, timeout=120, cwd=ROOT, env={**os.environ, "COLUMNS": COLUMNS})
+    assert (result.returncode, result.stderr) == (0, "")
+    assert result.stdout == "".join(line + "\n" for line in shown)
