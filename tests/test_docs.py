@@ -13,7 +13,8 @@ that sees the repository's `docs/` and `tests/`, with COLUMNS=100):
 - ```python: run in order in one namespace per page. `>>>` lines (with `...` continuations) are
   compared with the output below them as doctest does; a block without prompts must not raise.
 - ```yaml: a robot file; it must load (```yaml refused: it must be refused with a UserError).
-  ```yaml file=NAME also writes it as NAME for the commands after it.
+  ```yaml file=NAME also writes it as NAME for the commands after it; ```yaml shows=PATH is a copy of
+  the repository's file PATH and must stay one.
 - ```text: shown, not run (measurements, pictures of the layout).
 
 Relative links must point at files that exist, and the README stays a five-minute read.
@@ -201,6 +202,14 @@ def run_python(block: Block, where: str, namespace: dict) -> list[str]:
 def load_yaml(block: Block, where: str) -> None:
     import dhsym
 
+    shown_file = block.option("shows")
+    if shown_file:  # a copy of a file in the repository, which must stay the same
+        text = (ROOT / shown_file).read_text(encoding="utf-8")
+        if UPDATE:
+            block.replacement = text.splitlines()
+        assert UPDATE or block.text == text, f"{where}: the block is not what {shown_file} holds"
+        dhsym.load(str(ROOT / shown_file))
+        return
     name = Path(block.option("file") or "robot.yaml")
     name.write_text(block.text, encoding="utf-8")
     try:
