@@ -264,12 +264,23 @@ def test_every_example_on_the_page_is_current(page, sandbox):
         write_back(page, found)
 
 
+def anchors(page: Path) -> set[str]:
+    """The anchors GitHub gives a page's headings: lower case, punctuation dropped, spaces as hyphens."""
+    headings = re.findall(r"^#+ (.+)$", re.sub(r"^```.*?^```", "", page.read_text(encoding="utf-8"), flags=re.M | re.S),
+                          re.M)
+    return {re.sub(r"[^\w\- ]", "", heading.lower()).replace(" ", "-") for heading in headings}
+
+
 @pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
-def test_relative_links_point_at_files(page):
+def test_relative_links_point_at_files_and_headings(page):
     text = page.read_text(encoding="utf-8")
-    for target in re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", text):
-        if not re.match(r"[a-z]+:", target):
-            assert (page.parent / target).exists(), f"{page.name}: the link {target} points at nothing"
+    for target, anchor in re.findall(r"\]\(([^)#\s]*)(?:#([^)\s]*))?\)", text):
+        if re.match(r"[a-z]+:", target):
+            continue
+        linked = (page.parent / target) if target else page
+        assert linked.exists(), f"{page.name}: the link {target} points at nothing"
+        if anchor:
+            assert anchor in anchors(linked), f"{page.name}: {target} has no heading #{anchor}"
 
 
 def test_the_readme_is_a_five_minute_read():
