@@ -11,8 +11,9 @@ that sees the repository's `docs/` and `tests/`, with COLUMNS=100):
 - ```sh: a list of commands without output. Lines `dhsym ...` run and must exit with status 0;
   `make TARGET` must name a Makefile target and `pip install '.[EXTRA]'` an extra of pyproject.toml.
 - ```python: run in order in one namespace per page. `>>>` lines (with `...` continuations) are
-  compared with the output below them as doctest does (`<BLANKLINE>` for an empty line); a block
-  without prompts must not raise.
+  compared with the output below them as doctest does (`<BLANKLINE>` for an empty line; an
+  exception as `Traceback (most recent call last):` and its last line); a block without prompts
+  must not raise.
 - ```yaml: a robot file; it must load (```yaml refused: it must be refused with a UserError).
   ```yaml file=NAME also writes it as NAME for the commands after it; ```yaml shows=PATH is a copy of
   the repository's file PATH and must stay one.
@@ -191,7 +192,12 @@ def run_python(block: Block, where: str, namespace: dict) -> list[str]:
     for source, shown, prompt in examples:
         got = io.StringIO()
         with contextlib.redirect_stdout(got):
-            exec(compile("\n".join(source) + "\n", where, "single"), namespace)
+            try:
+                exec(compile("\n".join(source) + "\n", where, "single"), namespace)
+            except Exception as error:  # shown as doctest shows it: the header and the last line
+                kind = type(error)
+                name = kind.__qualname__ if kind.__module__ == "builtins" else f"{kind.__module__}.{kind.__qualname__}"
+                print(f"Traceback (most recent call last):\n{name}: {error}")
         printed = got.getvalue().rstrip("\n")
         output = [line.rstrip() or "<BLANKLINE>" for line in printed.split("\n")] if printed else []
         if not UPDATE:
