@@ -3,11 +3,12 @@
 What a page shows, and how it is checked (blocks run in page order, in a scratch folder per page
 that sees the repository's `docs/` and `tests/`, with COLUMNS=100):
 
-- ```console: `$ dhsym ARGS` followed by its output (standard output and error as a terminal shows
-  them, in order). The command runs as `python -m dhsym.cli ARGS` does (`dhsym.cli.main` inside this
-  process, which is what `python -m dhsym.cli` calls; one README example also runs as a real process),
-  and the output must be exactly what is shown. The exit status must be 0 unless the next line is
-  `$ echo $?` followed by the status. `< FILE` and `> FILE` redirect as a shell does.
+- ```console: `$ dhsym ARGS` followed by its output (standard error, then standard output, as a
+  terminal shows them: dhsym warns before it prints, and an error leaves no output). The command
+  runs as `python -m dhsym.cli ARGS` does (`dhsym.cli.main` inside this process, which is what
+  `python -m dhsym.cli` calls; one README example also runs as a real process), and the output must
+  be exactly what is shown. The exit status must be 0 unless the next line is `$ echo $?` followed
+  by the status. `< FILE` and `> FILE` redirect as a shell does.
 - ```sh: a list of commands without output. Lines `dhsym ...` run and must exit with status 0;
   `make TARGET` must name a Makefile target and `pip install '.[EXTRA]'` an extra of pyproject.toml.
 - ```python: run in order in one namespace per page. `>>>` lines (with `...` continuations) are
@@ -36,6 +37,7 @@ import subprocess
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 import pytest
 
@@ -82,23 +84,31 @@ def blocks(page: Path) -> list[Block]:
     return found
 
 
-def run_dhsym(argv: list[str], stdin: bytes | None = None) -> tuple[str, int]:
-    """`python -m dhsym.cli ARGV` in this process: standard output and error together, and the status."""
+class Result(NamedTuple):
+    status: int
+    stdout: str
+    stderr: str
+
+
+def run_dhsym(*args, stdin: str = "") -> Result:
+    """`dhsym ARGS` in this process, as `python -m dhsym.cli ARGS` runs it (`dhsym.cli.main`).
+
+    The same call as tests/cli_runner.py's `run_dhsym` on the `ci` branch; once both are merged,
+    this function gives way to that one.
+    """
     from dhsym.cli import main
 
-    merged = io.StringIO()
-    saved_stdin = sys.stdin
-    if stdin is not None:
-        sys.stdin = io.TextIOWrapper(io.BytesIO(stdin), encoding="utf-8")
+    out, err = io.StringIO(), io.StringIO()
+    saved_stdin, sys.stdin = sys.stdin, io.TextIOWrapper(io.BytesIO(stdin.encode("utf-8")), encoding="utf-8")
     try:
-        with contextlib.redirect_stdout(merged), contextlib.redirect_stderr(merged):
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
             try:
-                status = main(argv)
-            except SystemExit as exit_:  # argparse's --help and usage errors
-                status = exit_.code if isinstance(exit_.code, int) else 1
+                status = main([str(arg) for arg in args])
+            except SystemExit as leaving:  # --help and usage errors leave through argparse
+                status = leaving.code if isinstance(leaving.code, int) else int(leaving.code is not None)
     finally:
         sys.stdin = saved_stdin
-    return merged.getvalue(), status
+    return Result(status, out.getvalue(), err.getvalue())
 
 
 def run_console(block: Block, where: str) -> list[str]:
@@ -121,7 +131,7 @@ def run_console(block: Block, where: str) -> list[str]:
             assert words[0] == "dhsym", f"{where}: only `dhsym ...` and `echo $?` run in a console block: {command}"
             if status not in (None, 0):
                 raise AssertionError(f"{where}: `{previous}` exited with status {status}; show it with `$ echo $?`")
-            output, status = run_command(words[1:], where)
+            output, status = run_command(words[1:])
             previous = command
         expected = "".join(line + "\n" for line in shown)
         if not UPDATE:
@@ -133,20 +143,21 @@ def run_console(block: Block, where: str) -> list[str]:
     return rewritten
 
 
-def run_command(words: list[str], where: str) -> tuple[str, int]:
-    """One dhsym command line with optional `< FILE` and `> FILE` at its end."""
-    stdin = target = None
+def run_command(words: list[str]) -> tuple[str, int]:
+    """One dhsym command line with optional `< FILE` and `> FILE` at its end: what a terminal shows
+    (warnings and errors come before any output: dhsym reads and checks before it prints), and the status."""
+    stdin, target = "", None
     while len(words) >= 2 and words[-2] in ("<", ">"):
         if words[-2] == "<":
-            stdin = Path(words[-1]).read_bytes()
+            stdin = Path(words[-1]).read_text(encoding="utf-8")
         else:
             target = Path(words[-1])
         words = words[:-2]
-    output, status = run_dhsym(words, stdin)
+    result = run_dhsym(*words, stdin=stdin)
     if target is not None:
-        target.write_text(output, encoding="utf-8")
-        output = ""
-    return output, status
+        target.write_text(result.stdout, encoding="utf-8")
+        return result.stderr, result.status
+    return result.stderr + result.stdout, result.status
 
 
 def run_sh(block: Block, where: str, makefile: str, pyproject: str) -> None:
@@ -158,7 +169,7 @@ def run_sh(block: Block, where: str, makefile: str, pyproject: str) -> None:
         while "=" in words[0] and words[0].split("=")[0].isidentifier():  # VAR=value before a command
             words = words[1:]
         if words[0] == "dhsym":
-            output, status = run_command(words[1:], where)
+            output, status = run_command(words[1:])
             assert status == 0, f"{where}: `{command}` exited with status {status}:\n{output}"
         elif words[0] == "make":
             for target in words[1:]:
