@@ -39,7 +39,7 @@ def cpu_seconds(argv: list[str]) -> float:
 def medians(runs: int) -> dict[str, float]:
     """The median CPU time of each process, the runs interleaved (baseline, commands, baseline, ...)."""
     times: dict[str, list[float]] = {name: [] for name, _ in [BASELINE, *COMMANDS]}
-    for name, argv in [BASELINE, *COMMANDS]:  # one warm-up round: the file cache, .pyc files
+    for _, argv in [BASELINE, *COMMANDS]:  # one warm-up round: the file cache, .pyc files
         cpu_seconds(argv)
     for _ in range(runs):
         for name, argv in [BASELINE, *COMMANDS]:
