@@ -8,7 +8,7 @@ import re
 import sympy
 from robots import NUMBERED_WRIST as WRIST
 
-from dhsym import display
+from dhsym.latex import display
 from dhsym.cli import main
 from dhsym.core.chain import Chain, DHRow
 from dhsym.io.library import load
