@@ -17,6 +17,7 @@ IPython's `display` alone. `dir(dhsym)` lists the names.
 """
 from __future__ import annotations
 
+import os
 from importlib import import_module
 
 # Each exported name and where it lives: (module, attribute), or (module, None) for a module.
@@ -106,7 +107,7 @@ def convert(robot, convention: str):
 
 
 def check(a, b):
-    """Are `a` and `b` the same? Two robots (the second may be a built-in name or a file): the
+    """Are `a` and `b` the same? Two robots (the second may be a built-in name or a file's path): the
     same kinematics from base to tool for every joint value, as `dhsym check A --against B`,
     and if not, what to fix (`.same`, `.message`). Two expressions or matrices: equal, proven
     by algebra and by numbers at random points (a verdict that is true or false).
@@ -124,7 +125,8 @@ def check(a, b):
         from .geometry.compare import compare
         from .io.library import load
 
-        return compare(_chain_of(a), _chain_of(load(b) if isinstance(b, str) else b))
+        reference = load(os.fspath(b)) if isinstance(b, (str, os.PathLike)) else b
+        return compare(_chain_of(a), _chain_of(reference))
     from .checking.verify import check as equal
 
     return equal(a, b)

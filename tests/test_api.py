@@ -88,3 +88,25 @@ def test_the_dhsym_process_runs_a_command_and_reports_a_mistake():
     mistake = subprocess.run([sys.executable, "-m", "dhsym.cli", "fk", "puma650"], capture_output=True, text=True,
                              timeout=300)
     assert mistake.returncode == 2 and mistake.stderr.startswith("dhsym: error: unknown robot 'puma650'")
+
+
+def test_check_compares_robots_by_name_or_path_and_expressions_by_value():
+    from pathlib import Path
+
+    import sympy
+
+    arm = dhsym.convert(dhsym.load("planar3r"), "modified")
+    assert dhsym.check(arm, "planar3r").same
+    assert dhsym.check(arm, Path(dhsym.__file__).parent / "robots" / "planar3r.yaml").same
+    different = dhsym.check(dhsym.load("planar2r"), "planar3r")
+    assert not different.same and "2 and 3 joints" in different.message
+    t = sympy.Symbol("t", real=True)
+    assert dhsym.check(sympy.cos(t) ** 2, 1 - sympy.sin(t) ** 2)
+    assert not dhsym.check(sympy.cos(t), sympy.sin(t))
+
+
+def test_fk_takes_the_frames_the_chain_takes():
+    arm = dhsym.load("planar3r")
+    assert dhsym.fk(arm) == arm.fk()
+    assert dhsym.fk(arm, 1, 2) == arm.transform(1, 2)
+    assert dhsym.fk(arm, raw=True) == arm.transform(arm.first_frame, arm.last_frame, raw=True)
