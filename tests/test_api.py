@@ -110,3 +110,9 @@ def test_fk_takes_the_frames_the_chain_takes():
     assert dhsym.fk(arm) == arm.fk()
     assert dhsym.fk(arm, 1, 2) == arm.transform(1, 2)
     assert dhsym.fk(arm, raw=True) == arm.transform(arm.first_frame, arm.last_frame, raw=True)
+
+
+@pytest.mark.parametrize("module", sorted(set(app.COMMANDS.values())))
+def test_each_command_module_imports_on_its_own(module):
+    """The dispatcher imports only the command's module, so no command may rely on another having been imported."""
+    assert _probe(f"import dhsym.cli.{module}\nprint('ok')") == ["ok"]
