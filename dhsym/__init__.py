@@ -10,10 +10,10 @@ a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2)
 a_1*a_2*sin(theta_2)
 
 Every name is imported on first use (`__getattr__` below), so that `import dhsym`, and each
-command of the command line, loads only what it uses: numpy and matplotlib come with
-`dhsym.plot`, the Jacobian with `dhsym.jacobian`, and so on. `dhsym.show` renders tables and
-matrices in Jupyter; it is not called `display`, so that `from dhsym import *` leaves
-IPython's `display` alone. `dir(dhsym)` lists the names.
+command of the command line, loads only what it uses: numpy comes with `dhsym.plot`
+(matplotlib with the first picture), the velocity layer with `dhsym.jacobian`, and so on.
+`dhsym.show` renders tables and matrices in Jupyter; it is not called `display`, so that
+`from dhsym import *` leaves IPython's `display` alone. `dir(dhsym)` lists the names.
 """
 from __future__ import annotations
 
