@@ -49,6 +49,7 @@ bench: install
 	$(BIN)/python benchmarks/geometry_speed.py
 	$(BIN)/python benchmarks/ik_speed.py
 	$(BIN)/python benchmarks/ik_peers.py
+	$(BIN)/python benchmarks/startup.py
 
 notebooks: install node-packages
 	bash scripts/export-notebooks.sh

@@ -1,34 +1,182 @@
 """dhsym: Denavit–Hartenberg tables to textbook-form symbolic kinematics.
 
-A notebook starts with one import:
+A notebook or a script needs one import:
 
 >>> import dhsym
 >>> arm = dhsym.load("planar2r")
->>> arm.fk()[0, 3]
+>>> dhsym.fk(arm)[0, 3]
 a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2)
 >>> dhsym.velocity.determinant(arm).value
 a_1*a_2*sin(theta_2)
 
-`dhsym.plot` (pictures) is imported on first use, so that the math and the command line
-never load numpy or matplotlib.
+Every name is imported on first use (`__getattr__` below), so that `import dhsym`, and each
+command of the command line, loads only what it uses: numpy comes with `dhsym.plot`
+(matplotlib with the first picture), the velocity layer with `dhsym.jacobian`, and so on.
+`dhsym.show` renders tables and matrices in Jupyter; it is not called `display`, so that
+`from dhsym import *` leaves IPython's `display` alone. `dir(dhsym)` lists the names.
 """
+from __future__ import annotations
+
+import os
 from importlib import import_module
 
-from . import velocity
-from .checking import errata, verify
-from .checking.verify import check
-from .core.chain import Chain, DHRow
-from .core.transforms import Step
-from .errors import Location, UserError
-from .io.expr import parse_expression, real_symbol
-from .io.library import builtin_names, load
-from .latex import display
+# Each exported name and where it lives: (module, attribute), or (module, None) for a module.
+# The functions defined below are the command line's commands, for Python.
+_LAZY = {
+    "load": ("dhsym.io.library", "load"),
+    "builtin_names": ("dhsym.io.library", "builtin_names"),
+    # TODO(robot): "Robot": ("dhsym.core.robot", "Robot"), added by the lead when core/robot.py is merged.
+    "Chain": ("dhsym.core.chain", "Chain"),
+    "DHRow": ("dhsym.core.chain", "DHRow"),
+    "Step": ("dhsym.core.transforms", "Step"),
+    "show": ("dhsym.latex.display", None),
+    "plot": ("dhsym.plot", None),  # numpy and matplotlib only when pictures are wanted
+    "velocity": ("dhsym.velocity", None),
+    "errata": ("dhsym.checking.errata", None),
+    "verify": ("dhsym.checking.verify", None),
+    "real_symbol": ("dhsym.io.expr", "real_symbol"),
+    "parse_expression": ("dhsym.io.expr", "parse_expression"),
+    "UserError": ("dhsym.errors", "UserError"),
+    "Location": ("dhsym.errors", "Location"),
+}
+_COMMANDS = ["fk", "jacobian", "convert", "check", "screws", "import_urdf", "ik"]
 
-__all__ = ["Chain", "DHRow", "Location", "Step", "UserError", "builtin_names", "check", "display", "errata",
-           "load", "parse_expression", "plot", "real_symbol", "velocity", "verify"]
+__all__ = sorted([*_LAZY, *_COMMANDS])
 
 
-def __getattr__(name):
-    if name == "plot":  # numpy and matplotlib only when pictures are wanted
-        return import_module(".plot", __name__)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+def __getattr__(name: str):
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    module, attribute = _LAZY[name]
+    value = import_module(module) if attribute is None else getattr(import_module(module), attribute)
+    globals()[name] = value  # the next use is a plain lookup
+    return value
+
+
+def __dir__() -> list[str]:
+    return list(__all__)
+
+
+def _chain_of(robot):
+    """The chain of a robot (what a robot file gives), or the chain itself."""
+    return getattr(robot, "chain", robot)
+
+
+def fk(robot, start=None, end=None, raw: bool = False):
+    """ⁱTⱼ, the transform from frame `start` (default: the first) to frame `end` (default: the
+    last), simplified into textbook form unless `raw`, as `dhsym fk ROBOT --from I --to J`.
+
+    >>> import dhsym
+    >>> dhsym.fk(dhsym.load("planar2r"))[:2, 3]
+    Matrix([
+    [a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2)],
+    [a_1*sin(theta_1) + a_2*sin(theta_1 + theta_2)]])
+    """
+    chain = _chain_of(robot)
+    return chain.transform(chain.first_frame if start is None else start,
+                           chain.last_frame if end is None else end, raw=raw)
+
+
+def jacobian(robot, frame=None, point=None):
+    """The 6×n geometric Jacobian of the origin of frame `point` (default: the last), expressed
+    in frame `frame` (default: the first), as `dhsym jacobian`; `dhsym.velocity` has the
+    determinant, the singularities and velocity propagation.
+
+    >>> import dhsym
+    >>> dhsym.jacobian(dhsym.load("planar2r"))[:2, :]
+    Matrix([
+    [-a_1*sin(theta_1) - a_2*sin(theta_1 + theta_2), -a_2*sin(theta_1 + theta_2)],
+    [ a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2),  a_2*cos(theta_1 + theta_2)]])
+    """
+    from .velocity.jacobian import jacobian as geometric_jacobian
+
+    return geometric_jacobian(_chain_of(robot), frame, point)
+
+
+def convert(robot, convention: str):
+    """The same robot in the other DH convention ("standard" or "modified"), as `dhsym convert`.
+
+    >>> import dhsym
+    >>> arm = dhsym.convert(dhsym.load("puma560"), "standard")
+    >>> arm.convention, dhsym.check(arm, "puma560").same
+    ('standard', True)
+    """
+    from .geometry.convert import to_convention
+
+    return to_convention(_chain_of(robot), convention)
+
+
+def check(a, b):
+    """Are `a` and `b` the same? Two robots (the second may be a built-in name or a file's path): the
+    same kinematics from base to tool for every joint value, as `dhsym check A --against B`,
+    and if not, what to fix (`.same`, `.message`). Two expressions or matrices: equal, proven
+    by algebra and by numbers at random points (a verdict that is true or false).
+
+    >>> import dhsym, sympy
+    >>> print(dhsym.check(dhsym.load("spatial3r"), "inline6"))
+    the tables have 3 and 6 joints; they cannot describe the same robot
+    >>> t = sympy.Symbol("t", real=True)
+    >>> print(dhsym.check(sympy.sin(2*t), 2*sympy.sin(t)*sympy.cos(t)))  # doctest: +ELLIPSIS
+    equal: by algebra, and numerically (max error ...)
+    """
+    from .core.chain import Chain
+
+    if isinstance(_chain_of(a), Chain):
+        from .geometry.compare import compare
+        from .io.library import load
+
+        reference = load(os.fspath(b)) if isinstance(b, (str, os.PathLike)) else b
+        return compare(_chain_of(a), _chain_of(reference))
+    from .checking.verify import check as equal
+
+    return equal(a, b)
+
+
+def screws(robot):
+    """The screw axes of the joints (the columns of a 6×n matrix, ω over v) and the home pose M,
+    in the first frame with every joint at zero, as `dhsym screws`.
+
+    >>> import dhsym
+    >>> dhsym.screws(dhsym.load("planar2r")).matrix.T
+    Matrix([
+    [0, 0, 1, 0,    0, 0],
+    [0, 0, 1, 0, -a_1, 0]])
+    """
+    from .geometry.screws import screw_axes
+
+    return screw_axes(_chain_of(robot))
+
+
+def import_urdf(path, base: str | None = None, tip: str | None = None, convention: str = "standard",
+                variables: str = "q"):
+    """A DH robot derived from a URDF (or .xacro) file's base → tip path, as `dhsym import`:
+    `.chain`, `.notes` for its robot file, and `.warnings`; `variables="urdf"` names the joint
+    variables after the URDF's joints.
+
+    >>> import dhsym, pathlib, tempfile
+    >>> urdf = pathlib.Path(tempfile.mkdtemp(), "arm.urdf")
+    >>> _ = urdf.write_text('''<robot name="arm"> <link name="base"/> <link name="upper"/> <link name="tip"/>
+    ...   <joint name="shoulder" type="revolute"> <parent link="base"/> <child link="upper"/>
+    ...     <axis xyz="0 0 1"/> <limit lower="-3" upper="3" effort="1" velocity="1"/> </joint>
+    ...   <joint name="hand" type="fixed"> <parent link="upper"/> <child link="tip"/>
+    ...     <origin xyz="0.5 0 0"/> </joint> </robot>''')
+    >>> dhsym.fk(dhsym.import_urdf(urdf))[:2, 3].T
+    Matrix([[cos(q_1)/2, sin(q_1)/2]])
+    """
+    from .io.urdfimport import import_urdf as imported
+
+    return imported(path, base, tip, convention, variables)
+
+
+def ik(robot, free=()):
+    """The closed-form inverse kinematics, every branch named, as `dhsym ik`: `.branches`,
+    `.evaluate(T)` (all branches at once, numpy), `.latex()`, `.text()`, `.code()`; the joint
+    variables `free` stay parameters (a redundant arm).
+
+    >>> import dhsym
+    >>> [branch.name for branch in dhsym.ik(dhsym.load("planar2r")).branches]
+    ['elbow down', 'elbow up']
+    """
+    from .inverse.api import inverse_kinematics
+
+    return inverse_kinematics(_chain_of(robot), free)

@@ -11,7 +11,11 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class Location:
-    """A place in a user's input; line and column count from 1."""
+    """A place in a user's input; line and column count from 1.
+
+    >>> print(Location("arm.yaml", 4, 12))
+    arm.yaml:4:12
+    """
 
     file: str
     line: int | None = None
@@ -33,7 +37,15 @@ class Location:
 
 
 class UserError(Exception):
-    """A mistake in the user's input or command line: reported in one line, exit status 2."""
+    """A mistake in the user's input or command line: reported in one line, exit status 2.
+
+    >>> import dhsym
+    >>> try:
+    ...     dhsym.load("puma650")
+    ... except dhsym.UserError as error:
+    ...     print(str(error)[:42])
+    unknown robot 'puma650'; built-in robots a
+    """
 
     def __init__(self, message: str, where: Location | None = None):
         super().__init__(message)

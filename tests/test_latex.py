@@ -20,10 +20,10 @@ from pathlib import Path
 import pytest
 from robots import GREEK_PRISMATIC, TEN_JOINTS, TEST_ROBOTS
 
-from dhsym import display
 from dhsym.cli import main
 from dhsym.io.library import builtin_names, load
 from dhsym.io.robotfile import load_robot_text
+from dhsym.latex import display
 from dhsym.latex import document as latexdoc
 from dhsym.latex import layout as texlayout
 from dhsym.latex import width as texwidth

@@ -8,13 +8,12 @@ import re
 import sympy
 from robots import NUMBERED_WRIST as WRIST
 
-from dhsym import display
 from dhsym.cli import main
 from dhsym.core.chain import Chain, DHRow
 from dhsym.io.library import load
 from dhsym.io.robotfile import load_robot_text
+from dhsym.latex import display, layout
 from dhsym.latex import document as latexdoc
-from dhsym.latex import layout
 from dhsym.latex.prose import tex_prose
 from dhsym.latex.results import ARTICLE_TEXT_WIDTH_PT
 from dhsym.latex.width import math_width

@@ -1,5 +1,28 @@
+"""The `dhsym` process: `python -m dhsym.cli ...` and the installed `dhsym` command call `run()`.
+
+It is `app.main` plus housekeeping that only a whole process should do (tests and notebooks
+call `main` in their own process). SymPy's import makes a few hundred thousand objects that
+live until the process ends; Python's garbage collector would walk through all of them while
+they are imported and again at exit, a quarter of the CPU time of `dhsym fk` (measured by
+benchmarks/startup.py). So the collector is off while the modules are imported, and what
+exists then is frozen (`gc.freeze`: kept, never walked again) before the command runs and
+before the process exits. The command's own work is collected as usual.
+"""
+import gc
 import sys
 
-from .app import main
 
-sys.exit(main())
+def run() -> None:
+    """Run the command in sys.argv and exit with its status."""
+    gc.disable()
+    from .app import main  # SymPy and the dispatcher: objects that live until exit
+
+    gc.freeze()
+    gc.enable()
+    status = main()
+    gc.freeze()  # the final collections need not walk SymPy's objects again
+    sys.exit(status)
+
+
+if __name__ == "__main__":
+    run()

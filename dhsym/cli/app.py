@@ -5,8 +5,10 @@
     dhsym fk puma560 --from 3 --to 6 --format latex
     dhsym fk - < arm.yaml
 
-Each command lives in its own module (listing, kinematics, latex, plot) with
-`add_parsers(commands)`, which registers its subcommands and their `run(robot, args)`.
+Each command lives in its own module (listing, kinematics, latex, plot, ...) with
+`add_parsers(commands)`, which registers its subcommands and their `run(robot, args)`. Only the
+module of the command being run is imported (COMMANDS), so that `dhsym fk` does not pay for the
+Jacobian, the documents or the URDF reader; `dhsym --help` and a mistyped command import them all.
 
 Exit status: 0, with warnings (if any) on stderr; 2 after one `dhsym: error:` line (a mistake in
 the input or the command line, or output that cannot be written: a full disk, a closed standard
@@ -23,16 +25,20 @@ from __future__ import annotations
 import json
 import os
 import sys
+from importlib import import_module
 
 from ..core.budget import CommandTooSlow, time_budget
 from ..errors import Location, UserError
 from ..io import library
 from ..io.robotfile import load_robot_text
 from ..io.yamlsafe import MAX_FILE_BYTES, decode_utf8
-from . import check, convert, ik, jacobian, kinematics, latex, listing, plot, screws, urdf_import
+from .messages import printable, warn
 from .options import Parser, text_width
 
-COMMAND_MODULES = (listing, kinematics, latex, plot, jacobian, ik, urdf_import, convert, check, screws)
+# Each command and the module (in dhsym.cli) that registers it, in the order `dhsym --help` lists them.
+COMMANDS = {"list": "listing", "table": "kinematics", "links": "kinematics", "fk": "kinematics", "latex": "latex",
+            "plot": "plot", "jacobian": "jacobian", "ik": "ik", "import": "urdf_import", "convert": "convert",
+            "check": "check", "screws": "screws"}
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70
@@ -40,22 +46,39 @@ EXIT_BROKEN_PIPE = 141  # what a shell reports for a tool stopped by SIGPIPE
 ISSUE_URL = "the dhsym issue tracker"
 
 
-def build_parser() -> Parser:
+def build_parser(argv=None) -> Parser:
+    """The parser for `argv`: with the command's own module only, when argv starts with a known command.
+
+    >>> build_parser(["fk", "puma560"]).parse_args(["fk", "puma560", "--to", "3"]).end
+    '3'
+    """
     parser = Parser(prog="dhsym", description="Denavit–Hartenberg tables to textbook-form kinematics: "
                     "link matrices, products iTj and 0Tn in c1/s23/c123 notation, as text, LaTeX or JSON.",
                     epilog="ROBOT is a built-in name (see 'dhsym list') or a path to a robot YAML file.")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     commands.required = True
-    for module in COMMAND_MODULES:
-        module.add_parsers(commands)
+    for module in command_modules(argv):
+        import_module(f".{module}", __package__).add_parsers(commands)
     return parser
+
+
+def command_modules(argv=None) -> list[str]:
+    """The modules to import for `argv`: the command's, else (help, no command, a typo) all of them.
+
+    >>> command_modules(["fk", "puma560"]), len(command_modules(["--help"]))
+    (['kinematics'], 10)
+    """
+    argv = sys.argv[1:] if argv is None else argv
+    if argv and argv[0] in COMMANDS:
+        return [COMMANDS[argv[0]]]
+    return list(dict.fromkeys(COMMANDS.values()))
 
 
 def main(argv=None, read=library.read) -> int:
     """Run one command; `read` turns ROBOT into a RobotFile (tests pass their own)."""
     args = None
     try:
-        args = build_parser().parse_args(argv)
+        args = build_parser(argv).parse_args(argv)
         with time_budget(getattr(args, "timeout", None), CommandTooSlow):
             return _dispatch(args, read)
     except BrokenPipeError:  # `dhsym fk iiwa7 | head -0`: the reader left; say so, the output is cut short
@@ -93,15 +116,6 @@ def _silence_stdout() -> None:
         pass
 
 
-def printable(message: str) -> str:
-    """One line whatever the message quotes: line breaks and control characters are escaped.
-
-    >>> printable("bad\\nname")
-    'bad\\\\nname'
-    """
-    return "".join(ch if ch.isprintable() else ascii(ch)[1:-1] for ch in message)
-
-
 def _without_control_characters(text: str, json_format: bool) -> str:
     """The output with every control character escaped (a robot name with terminal escape
     sequences, a right-to-left override in a note), line breaks and tabs kept: as \\u escapes
@@ -120,8 +134,7 @@ def _dispatch(args, read) -> int:
     robot = None
     if hasattr(args, "robot"):
         robot = read_standard_input() if args.robot == "-" else read(args.robot)
-        for warning in robot.warnings:
-            print(f"dhsym: warning: {printable(warning)}", file=sys.stderr)
+        warn(robot.warnings)
     if hasattr(args, "width"):
         args.width = text_width(args.width)  # --width, else $COLUMNS, else the terminal's, else 100
     output = args.run(robot, args)

@@ -14,7 +14,6 @@ from ..core.size import expanded_terms, rough_count
 from ..core.transforms import product
 from ..errors import UserError
 from ..printing.render import transform_title
-from ..velocity.jacobian import axis_frame, jacobian_size
 
 MAX_NODES = 200_000  # about 400,000 printed characters, a few seconds of printing
 CHARACTERS_PER_NODE = 2  # measured: 1 (textbook robots) to 1.9 (general chains)
@@ -62,6 +61,8 @@ def refuse_if_too_large(robot, start, end, raw: bool = False, limit: int = MAX_N
 def refuse_jacobian_if_too_large(robot, frame, point, limit: int = MAX_NODES, option: str = "--frame") -> None:
     """A UserError when ᵏJ of `point` would be larger than `limit` nodes, naming a frame where it
     fits (`option` is how the command names that frame), else advising another point."""
+    from ..velocity.jacobian import jacobian_size  # the velocity layer only for the commands that use it
+
     chain = robot.chain
     size = jacobian_size(chain, frame, point)
     if size <= limit:
@@ -91,6 +92,8 @@ def refuse_steps_if_too_large(robot, option: str = "--steps") -> None:
 
 def propagation_size(chain) -> int:
     """Estimated nodes of every step of the propagation: frame k's ω and v depend on the axes before it."""
+    from ..velocity.jacobian import axis_frame
+
     frames = chain.frames
     axes = [frames.index(axis_frame(chain, joint)) for joint in range(1, chain.n + 1)]
     return sum(estimated_size(chain, frames[k], frames[a]) for k in range(1, len(frames)) for a in axes if a < k)

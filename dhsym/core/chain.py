@@ -28,7 +28,13 @@ MAX_WORK_NODES = 2_000_000  # estimated expression nodes: past this a transform 
 
 @dataclass(frozen=True)
 class DHRow:
-    """One joint's row. In the `modified` convention `a` and `alpha` are a_{i-1}, α_{i-1}."""
+    """One joint's row. In the `modified` convention `a` and `alpha` are a_{i-1}, α_{i-1}.
+
+    >>> import dhsym
+    >>> theta_1, l_1 = dhsym.real_symbol("theta_1"), dhsym.real_symbol("l_1")
+    >>> dhsym.DHRow.revolute(theta_1, a=l_1).variable
+    theta_1
+    """
 
     joint: str  # "R" revolute or "P" prismatic
     theta: sympy.Expr

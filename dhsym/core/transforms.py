@@ -24,7 +24,11 @@ STEP_KINDS = ("Rx", "Ry", "Rz", "Tx", "Ty", "Tz")
 
 @dataclass(frozen=True)
 class Step:
-    """One elementary motion: a rotation about or a translation along a frame axis."""
+    """One elementary motion: a rotation about or a translation along a frame axis.
+
+    >>> Step("Tx", 2).matrix()[:3, 3].T
+    Matrix([[2, 0, 0]])
+    """
 
     kind: str
     value: sympy.Expr

@@ -18,6 +18,11 @@ ROBOTS_DIR = Path(__file__).parent.parent / "robots"
 
 
 def builtin_names() -> list[str]:
+    """The names of the built-in robots, for `load`.
+
+    >>> "puma560" in builtin_names()
+    True
+    """
     return sorted(p.stem for p in ROBOTS_DIR.glob("*.yaml"))
 
 

@@ -19,7 +19,6 @@ dhsym.errors.UserError: arm.yaml:2:21: unknown key 'alpah' in joint row 1; did y
 """
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -29,7 +28,6 @@ import yaml
 from ..core.chain import Chain, DHRow
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
-from .axesfile import axes_chain
 from .expr import Reading, parse_expression
 from .suspicious import misplaced_variable, misspelt_pi, near_multiple_of_pi, printed_key, printed_text
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
@@ -63,6 +61,8 @@ def load_robot_text(text: str, filename: str = "<robot>") -> RobotFile:
 
 def _suggestion(key: str, allowed) -> str:
     """`; did you mean 'alpha'?` for a near miss, else the list of what is allowed."""
+    import difflib  # only after a mistake: a command pays at start-up for what it uses
+
     allowed = list(allowed)
     same_but_case = [name for name in allowed if name.lower() == key.lower()]
     hint = same_but_case or difflib.get_close_matches(key, allowed, n=1)
@@ -184,6 +184,8 @@ class _Reader:
             raise UserError(f"unknown convention {self.text(convention_node, 'convention')!r}; use standard or "
                             f"modified", self.where(convention_node))
         if "axes" in top:  # the geometric form (io/axesfile.py): joint axes instead of DH rows
+            from .axesfile import axes_chain  # the geometry of frames, only for a file that needs it
+
             chain = axes_chain(self, top, convention)
         else:
             chain = self.dh_chain(top, convention)

@@ -6,12 +6,15 @@ rows, which MathJax 2, 3 and 4 and pdflatex all stack the same way (MathJax 3 ig
 ``\\`` outside an environment).
 
 Objects here only carry LaTeX text and expose `_repr_latex_`, so the package needs no IPython.
+A notebook reaches this module as `dhsym.show` (`show.table(arm)`, `show.transform(arm, 0, 2)`,
+`show.matrix(arm, M, "J")`, `show.expression(arm, e, "p_x")`): not as `display`, a name that
+would hide IPython's own `display` after `from dhsym import *`.
 
->>> from dhsym.io.library import load
->>> arm = load("planar2r")
->>> print(transform(arm, 0, 2).latex.splitlines()[:2])
+>>> import dhsym
+>>> arm = dhsym.load("planar2r")
+>>> print(dhsym.show.transform(arm, 0, 2).latex.splitlines()[:2])
 ['\\begin{array}{l}', '{}^{0}T_{2} =']
->>> "r_{11} & r_{12}" in transform(load("puma560"), 0, 6).latex  # too wide: named elements
+>>> "r_{11} & r_{12}" in dhsym.show.transform(dhsym.load("puma560"), 0, 6).latex  # too wide: named elements
 True
 """
 from __future__ import annotations
@@ -25,6 +28,8 @@ from ..printing.render import latex_matrix, latex_printer, latex_table_cells, tr
 from .layout import PAGES, Block, display, matrix_height, matrix_items, stacked
 from .legend import legend_items
 from .tables import table_items
+
+__all__ = ["Latex", "expression", "matrix", "table", "transform"]
 
 
 @dataclass(frozen=True)

@@ -2,6 +2,11 @@
 `frame_poses`, and `close_loop` for mechanisms cut into serial chains.
 
 Importing this package imports numpy and matplotlib; nothing outside it needs them.
+
+>>> import dhsym
+>>> ax = dhsym.plot.draw(dhsym.load("planar2r"), {"theta_1": "30deg", "theta_2": "45deg"})
+>>> ax.get_title().splitlines()[0]
+'Planar elbow manipulator (2R)'
 """
 from .draw import draw, draw_closed, picture_format, save
 from .loops import close_loop
