@@ -26,6 +26,7 @@ import sympy
 from ..checking.verify import algebraically_equal
 from ..core.chain import Chain
 from ..core.estimate import estimated_size
+from ..core.robot import as_chain
 from ..core.size import expanded_terms, rough_count
 from ..core.transforms import product
 from ..errors import UserError
@@ -88,7 +89,8 @@ def compare(candidate: Chain, reference: Chain, seed: int = 0) -> Comparison:
 def _algebra_agrees(candidate: Chain, reference: Chain) -> bool | str:
     """Whether base → tool is identical by algebra (joint i's variable renamed to the reference's,
     constants by name, sample values in exactly); a reason instead when it is too large to expand."""
-    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in (candidate, reference))
+    plain = [as_chain(c) for c in (candidate, reference)]  # a Robot's own chain, frames 0..n
+    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in plain)
     if size > ALGEBRA_MAX_NODES:
         return (f"base → tool has {rough_count(size)} expression nodes, more than the {ALGEBRA_MAX_NODES:,} "
                 "that are expanded")
