@@ -165,7 +165,7 @@ def test_the_ur5_determinant_factors_without_a_wrist_centre():
 
 def test_a_general_six_link_determinant_is_refused_from_its_count_of_terms():
     rows = "".join(f"  - {{joint: R, alpha: alpha_{i}, a: a_{i}, d: d_{i}, theta: theta_{i}}}\n" for i in range(1, 7))
-    chain = load_robot_text(f"convention: standard\njoints:\n{rows}", "general6.yaml").chain
+    chain = load_robot_text(f"convention: standard\njoints:\n{rows}", "general6.yaml")
     result = determinant(chain)
     assert result.value is None and result.factors == []
     assert result.note == ("the axes of joints 4–6 do not meet in a point, and the full 6×6 determinant would expand "

@@ -26,7 +26,7 @@ import sympy
 from ..checking.verify import algebraically_equal
 from ..core.chain import Chain
 from ..core.estimate import estimated_size
-from ..core.robot import as_chain
+from ..core.robot import Robot, as_chain, as_robot
 from ..core.size import expanded_terms, rough_count
 from ..core.transforms import product
 from ..errors import UserError
@@ -55,8 +55,9 @@ class Comparison:
         return self.message
 
 
-def compare(candidate: Chain, reference: Chain, seed: int = 0) -> Comparison:
-    """Compare `candidate` against `reference`, joint i with joint i."""
+def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -> Comparison:
+    """Compare `candidate` against `reference`, joint i with joint i (robots, or plain chains)."""
+    candidate, reference = as_robot(candidate), as_robot(reference)  # their sample values and names
     if candidate.n != reference.n:
         return Comparison(False, "joints", None, f"the tables have {candidate.n} and {reference.n} joints; "
                           "they cannot describe the same robot")
