@@ -29,9 +29,9 @@ def add_parsers(commands) -> None:
     text_width_option(links)
     links.set_defaults(run=run_links)
     fk = commands.add_parser("fk", parents=parents, help="print the transform between two frames "
-                             "(default: whole chain)", description="Print {FROM}T_{TO}. Frames are 0..n (numbered from the "
-                             "robot file's first_frame when it has one), plus base and tool when the robot has "
-                             "them. FROM after TO gives the inverse transform.")
+                             "(default: whole chain)", description="Print {FROM}T_{TO}. Frames are 0..n (numbered "
+                             "from the robot file's first_frame when it has one), plus base and tool when the robot "
+                             "has them. FROM after TO gives the inverse transform.")
     frame_options(fk)
     fk.add_argument("--raw", action="store_true", help="the plain product, without simplification")
     text_width_option(fk)

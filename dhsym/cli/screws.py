@@ -43,7 +43,8 @@ def run(robot, args) -> str:
     lines = [title, "S_i = (ωx, ωy, ωz; vx, vy, vz)", ""]
     for i, variable in enumerate(variables):
         column = [printer.doprint(x) for x in screws.matrix[:, i]]
-        lines.append(f"S{robot.joints[i]} ({printer.doprint(variable)}) = ({', '.join(column[:3])}; {', '.join(column[3:])})")
+        joint = robot.joints[i]  # numbered as the table numbers its rows
+        lines.append(f"S{joint} ({printer.doprint(variable)}) = ({', '.join(column[:3])}; {', '.join(column[3:])})")
     lines += ["", "M =", render.text_matrix(screws.home, printer, args.width)]
     text = "\n".join(lines)
     return text.replace("ω", "w").replace("−", "-") if args.ascii else text

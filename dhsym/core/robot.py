@@ -45,8 +45,8 @@ class Robot:
     """A chain and what its robot file says: `name`, `source`, `notes`, `sample` (numbers for its
     constants, for pictures and numeric checks), `numbers` (how the file wrote its numbers, so
     that printers write them back the same way), `frame_offset` (the number printed for the
-    chain's frame 0: a robot file's `first_frame`), `file` (the file it was read from) and `warnings` (what its reading noticed:
-    "FILE:LINE:COL: message")."""
+    chain's frame 0: a robot file's `first_frame`), `file` (the file it was read from) and
+    `warnings` (what its reading noticed: "FILE:LINE:COL: message")."""
 
     chain: Chain
     name: str = ""
@@ -202,6 +202,11 @@ class Robot:
 
     def links(self, raw: bool = False) -> list[sympy.Matrix]:
         return [self.link(i, raw=raw) for i in self.joints]
+
+    def steps(self, i: Frame, j: Frame) -> list:
+        """The elementary steps (Rz, Tz, Tx, Rx, base and tool steps) from frame i to frame j, as
+        printed; inverted and reversed for i after j."""
+        return self.chain.steps(self.chain_frame(i), self.chain_frame(j))
 
     def jacobian(self, frame: Frame | None = None, point: Frame | None = None) -> sympy.Matrix:
         """The geometric Jacobian (rows vx vy vz ωx ωy ωz) of the origin of frame `point` (default:

@@ -14,7 +14,7 @@ a name a robot file can hold (`right_s0`; `joint-1` becomes `joint_1`).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import sympy
@@ -33,7 +33,7 @@ class Imported:
     warnings are the URDF reader's) and the URDF joint of each row."""
 
     robot: Robot
-    joint_names: tuple = ()
+    joint_names: list = field(default_factory=list)
 
     @property
     def chain(self):
@@ -63,7 +63,7 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     robot = assign_frames(urdf.axes, urdf.tool, convention, symbols).robot(
         name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}", notes=notes,
         warnings=urdf.warnings)
-    return Imported(robot, tuple(urdf.joint_names))
+    return Imported(robot, list(urdf.joint_names))
 
 
 def joint_symbols(names: list[str], style: str) -> list[sympy.Symbol]:

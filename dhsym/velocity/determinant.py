@@ -148,8 +148,8 @@ def _full(chain, robot) -> Determinant:
     except TooManyTerms as error:
         return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
                            f"determinant would expand to {rough_count(error.terms)} terms even in frame "
-                           f"{robot.frame_number(frame)}, where J is shortest; that is more than the {FACTOR_MAX_TERMS:,} that dhsym "
-                           "factors: not computed.")
+                           f"{robot.frame_number(frame)}, where J is shortest; that is more than the "
+                           f"{FACTOR_MAX_TERMS:,} that dhsym factors: not computed.")
 
 
 def _wrist_partitioned(chain, centre, robot) -> Determinant:
@@ -160,7 +160,8 @@ def _wrist_partitioned(chain, centre, robot) -> Determinant:
     wrist = [angular_part(chain, j, wrist_frame, centre, body) for j in (4, 5, 6)]
     arm_det = factored(sympy.Matrix(arm).T.det(method="berkowitz"))
     result = _result(robot, arm_det * factored(sympy.Matrix(wrist).T.det(method="berkowitz")), "J", "")
-    note = (f"The last three axes meet at the origin of frame {robot.frame_number(centre)} (the wrist centre), so det J = (det A)(det C): "
+    note = (f"The last three axes meet at the origin of frame {robot.frame_number(centre)} (the wrist centre), "
+            "so det J = (det A)(det C): "
             "A the linear velocities of the wrist centre from joints 1–3, C the wrist axes 4–6.")
     return Determinant(result.value, "J", result.factors, note)
 
