@@ -180,3 +180,27 @@ def test_check_and_too_large_advice_use_the_printed_numbers(capsys, tmp_path):
     assert Robot(dhsym.load("planar2r").chain, frame_offset=3).frames == [3, 4, 5]
     status, out, _ = run(capsys, "check", "spherical_wrist", "--against", "spherical_wrist")
     assert status == 0
+
+
+def test_check_names_joints_and_rows_as_the_table_numbers_them(capsys, tmp_path):
+    text = load_wrist_text().replace("alpha: -pi/2, a: 0, d: 0,   theta: theta_4",
+                                     "alpha: 0, a: 0, d: 0,   theta: theta_4")
+    path = tmp_path / "homework.yaml"
+    path.write_text(text, encoding="utf-8")
+    status, out, _ = run(capsys, "check", str(path), "--against", "spherical_wrist")
+    assert status == 1 and "joint 5's axis points along" in out and "check the twist α in row 4" in out
+
+
+def test_ik_plot_and_pictures_use_the_printed_numbers(capsys):
+    from matplotlib.figure import Figure
+
+    _, out, _ = run(capsys, "ik", "spherical_wrist")
+    assert "Target ³T₆" in out and "the axes of joints 4, 5 and 6 meet in a point" in out
+    labels = {text.get_text() for text in dhsym.plot.draw(dhsym.load("spherical_wrist"), ax=Figure()).texts}
+    assert any("3" in label for label in labels) and not any("0" in label for label in labels)
+
+
+def load_wrist_text() -> str:
+    from dhsym.io.library import ROBOTS_DIR
+
+    return (ROBOTS_DIR / "spherical_wrist.yaml").read_text(encoding="utf-8")

@@ -56,14 +56,17 @@ class Comparison:
 
 
 def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -> Comparison:
-    """Compare `candidate` against `reference`, joint i with joint i (robots, or plain chains)."""
-    candidate, reference = as_robot(candidate), as_robot(reference)  # their sample values and names
+    """Compare `candidate` against `reference`, joint i with joint i (robots, or plain chains).
+    Joints and rows are named as the candidate's table numbers them (a wrist's 4..6)."""
+    candidate, reference = as_robot(candidate), as_robot(reference)  # their sample values, names, numbering
+    shown = candidate.frame_offset
     if candidate.n != reference.n:
         return Comparison(False, "joints", None, f"the tables have {candidate.n} and {reference.n} joints; "
                           "they cannot describe the same robot")
     for number, (mine, theirs) in enumerate(zip(candidate.rows, reference.rows), 1):
         if mine.joint != theirs.joint:
-            return Comparison(False, "joints", number, f"joint {number} is {_type(mine.joint)} in yours but "
+            return Comparison(False, "joints", number + shown, f"joint {number + shown} is {_type(mine.joint)} in "
+                              "yours but "
                               f"{_type(theirs.joint)} in the reference")
     values = _constants(candidate, reference, seed)
     mine, theirs = _numeric_fk(candidate, values), _numeric_fk(reference, values)
@@ -83,7 +86,7 @@ def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -
     shifts = _zero_shifts(candidate, reference, values, mine, theirs, configurations)
     if shifts:
         first = min(shifts)
-        return Comparison(False, "offset", first + 1, _offset_message(candidate, shifts) + note)
+        return Comparison(False, "offset", first + 1 + shown, _offset_message(candidate, shifts) + note)
     return _first_axis_difference(candidate, reference, values, note)
 
 
@@ -219,21 +222,24 @@ def _least_squares(b: list, c: list, t: list) -> tuple[float, float]:
     return (bt * cc - ct * bc) / det, (bb * ct - bc * bt) / det
 
 
-def _offset_message(candidate: Chain, shifts: dict) -> str:
-    joints = sorted(shifts)
+def _offset_message(candidate: Robot, shifts: dict) -> str:
+    """What to write instead; joints and rows numbered as the candidate's table numbers them."""
+    joints, shown = sorted(shifts), candidate.frame_offset
     exact = {k: _exact_shift(shifts[k], candidate.rows[k].joint) for k in joints}
     fixes = []
     for k in joints:
         row = candidate.rows[k]
         moving, written = ("θ", row.theta) if row.joint == "R" else ("d", row.d)
-        fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {k + 1} instead of {_show_exact(written)}")
+        fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {k + 1 + shown} instead of "
+                     f"{_show_exact(written)}")
     if len(joints) == 1:
-        return f"the same axes, but joint {joints[0] + 1}'s zero differs by {_show_exact(exact[joints[0]])}: write " \
+        return f"the same axes, but joint {joints[0] + 1 + shown}'s zero differs by {_show_exact(exact[joints[0]])}: " \
+            "write " \
             + fixes[0]
-    numbers = " and ".join(str(k + 1) for k in joints)
+    numbers = " and ".join(str(k + 1 + shown) for k in joints)
     if len(joints) == 2 and joints[1] == joints[0] + 1 and all(abs(exact[k]) == sympy.pi for k in joints):
         # Rz(π) Tx(a) Rx(α) Rz(π) = Tx(−a) Rx(−α): two half-turn zeros are one flipped twist
-        row = joints[0] + (1 if candidate.convention == "standard" else 2)
+        row = joints[0] + (1 if candidate.convention == "standard" else 2) + shown
         return (f"the same axes, but the zeros of joints {numbers} both differ by π: the sign of α (and of a) in "
                 f"row {row} is flipped; flip it back, or write " + " and ".join(fixes))
     amounts = " and ".join(_show_exact(exact[k]) for k in joints)
@@ -349,34 +355,37 @@ def _show_exact(value) -> str:
     return str(sympy.sympify(value)).replace("pi", "π").replace("*", "·")
 
 
-def _first_axis_difference(candidate: Chain, reference: Chain, values: dict, note: str) -> Comparison:
-    """The first joint whose axis (at the zero configuration) is not where the reference has it."""
-    zero = [0.0] * candidate.n
+def _first_axis_difference(candidate: Robot, reference: Robot, values: dict, note: str) -> Comparison:
+    """The first joint whose axis (at the zero configuration) is not where the reference has it;
+    joints and rows numbered as the candidate's table numbers them."""
+    zero, shown = [0.0] * candidate.n, candidate.frame_offset
     mine, theirs = _axes_at(candidate, values)(zero), _axes_at(reference, values)(zero)
     for number, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), 1):
         if _distance(u, u_ref) > 1e-7:
             reversed_axis = _distance(u, [-x for x in u_ref]) <= 1e-7
             what = ("is reversed: the joint moves the other way round" if reversed_axis else
                     f"points along {_show(u)} at the zero pose; the reference's points along {_show(u_ref)}")
-            return Comparison(False, "direction", number, f"joint {number}'s axis {what}; "
+            return Comparison(False, "direction", number + shown, f"joint {number + shown}'s axis {what}; "
                               + _where_to_look(candidate, number, "the twist α") + note)
         along = [a - b for a, b in zip(p, p_ref)]
         dot = sum(a * b for a, b in zip(along, u_ref))
         off = [a - dot * b for a, b in zip(along, u_ref)]
         if math.sqrt(sum(x * x for x in off)) > 1e-7:
-            return Comparison(False, "position", number, f"joint {number}'s axis points the right way but is "
+            return Comparison(False, "position", number + shown, f"joint {number + shown}'s axis points the right "
+                              "way but is "
                               f"shifted by {_show(off)} from the reference's; "
                               + _where_to_look(candidate, number, "the lengths a and d") + note)
     return Comparison(False, "different", None, "the joint axes agree at the zero pose, but base → tool differs "
                       "in more than one fixed frame" + note)
 
 
-def _where_to_look(chain: Chain, number: int, what: str) -> str:
-    """The row that places joint `number`'s axis: row number−1 in standard DH, its own row in modified."""
+def _where_to_look(chain: Robot, number: int, what: str) -> str:
+    """The row that places joint `number`'s axis (1..n): row number−1 in standard DH, its own row
+    in modified; named as the robot's table numbers it."""
     row = number - 1 if chain.convention == "standard" else number
     if row == 0:
         return "check the base steps"
-    return f"check {what} in row {row}" + (" and the rows before it" if row > 1 else "")
+    return f"check {what} in row {row + chain.frame_offset}" + (" and the rows before it" if row > 1 else "")
 
 
 def _distance(a, b) -> float:

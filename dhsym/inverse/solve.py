@@ -61,7 +61,8 @@ def solve(chain, free=()) -> Solution:
              constants=constants, witness=numbers)
         scan(transform_equations(robot, target, position=False, start=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
-        method = (f"kinematic decoupling: the axes of joints {_joints(structure.wrist)} meet at the wrist centre; "
+        method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.wrist)} meet at the wrist "
+                  "centre; "
                   f"the position of the wrist centre gives {_names(arm)}, its orientation {_names(wrist_joints)}")
     elif structure.first_wrist:
         wrist_joints = [chain.joint_variables[j - 1] for j in structure.first_wrist]
@@ -77,14 +78,14 @@ def solve(chain, free=()) -> Solution:
              arm, prismatic, derivation, constants=constants, witness=numbers)
         scan(transform_equations(robot, target, position=False, end=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
-        method = (f"kinematic decoupling: the axes of joints {_joints(structure.first_wrist)} meet at a point fixed "
-                  f"in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
+        method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.first_wrist)} meet at a "
+                  "point fixed in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
                   f"{_names(wrist_joints)}")
     elif structure.spherical:
         scan(transform_equations(robot, target, position=False), unknowns, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
         wrist_joints = unknowns
-        method = f"a spherical wrist: the axes of joints {_joints(structure.unknowns)} meet in a point; " \
+        method = f"a spherical wrist: the axes of joints {_joints(robot, structure.unknowns)} meet in a point; " \
                  "the orientation gives the Euler angles"
     else:
         scan(transform_equations(robot, target, position=True), unknowns, prismatic, derivation,
@@ -151,8 +152,10 @@ def free_variables(chain, free) -> tuple[sympy.Symbol, ...]:
     return tuple(dict.fromkeys(result))
 
 
-def _joints(numbers) -> str:
-    return ", ".join(map(str, numbers[:-1])) + " and " + str(numbers[-1])
+def _joints(robot, numbers) -> str:
+    """Joints 1..n as the robot numbers them (a wrist's 4..6)."""
+    shown = [str(number + robot.frame_offset) for number in numbers]
+    return ", ".join(shown[:-1]) + " and " + shown[-1]
 
 
 def _names(variables) -> str:
