@@ -18,13 +18,14 @@ from . import velocity
 from .checking import errata, verify
 from .checking.verify import check
 from .core.chain import Chain, DHRow
+from .core.robot import Robot
 from .core.transforms import Step
 from .errors import Location, UserError
 from .io.expr import parse_expression, real_symbol
 from .io.library import builtin_names, load
 from .latex import display
 
-__all__ = ["Chain", "DHRow", "Location", "Step", "UserError", "builtin_names", "check", "display", "errata",
+__all__ = ["Chain", "DHRow", "Location", "Robot", "Step", "UserError", "builtin_names", "check", "display", "errata",
            "load", "parse_expression", "plot", "real_symbol", "velocity", "verify"]
 
 

@@ -204,3 +204,14 @@ def load_wrist_text() -> str:
     from dhsym.io.library import ROBOTS_DIR
 
     return (ROBOTS_DIR / "spherical_wrist.yaml").read_text(encoding="utf-8")
+
+
+def test_a_transform_too_large_is_refused_with_the_printed_numbers():
+    from dhsym.core.chain import Chain, DHRow
+
+    symbols = [sympy.symbols(f"theta_{k} d_{k} a_{k} alpha_{k}", real=True) for k in range(4, 16)]
+    robot = Robot(Chain([DHRow.revolute(t, d, a, al) for t, d, a, al in symbols], "standard"), frame_offset=3)
+    with pytest.raises(UserError, match=r"^3T15 would have about [\d,]+ expression nodes"):
+        robot.fk()
+    with pytest.raises(UserError, match=r"^15T3 would have about"):
+        robot.transform(15, 3)

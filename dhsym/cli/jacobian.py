@@ -30,8 +30,9 @@ def add_parsers(commands) -> None:
                               description="Print the geometric Jacobian (rows vx vy vz ωx ωy ωz) of the origin of "
                               "the last frame, expressed in frame F, its factored determinant and the factors whose "
                               "vanishing makes it singular, each with its meaning.")
-    sub.add_argument("--frame", metavar="F", help="the frame J is expressed in (default: base, else 0)")
-    sub.add_argument("--point", metavar="P", help="the frame whose origin moves (default: tool, else n)")
+    sub.add_argument("--frame", metavar="F", help="the frame J is expressed in, numbered as fk numbers it "
+                     "(default: base, else the first)")
+    sub.add_argument("--point", metavar="P", help="the frame whose origin moves (default: tool, else the last)")
     sub.add_argument("--steps", action="store_true",
                      help="derive it by Craig's outward velocity propagation, link by link")
     sub.set_defaults(run=run)
