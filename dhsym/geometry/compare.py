@@ -56,17 +56,15 @@ class Comparison:
 
 
 def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -> Comparison:
-    """Compare `candidate` against `reference`, joint i with joint i (robots, or plain chains).
-    Joints and rows are named as the candidate's table numbers them (a wrist's 4..6)."""
+    """Compare `candidate` against `reference` (robots or chains), joint i with joint i; joints and
+    rows named as the candidate's table numbers them (a wrist's 4..6)."""
     candidate, reference = as_robot(candidate), as_robot(reference)  # their sample values, names, numbering
-    shown = candidate.frame_offset
     if candidate.n != reference.n:
         return Comparison(False, "joints", None, f"the tables have {candidate.n} and {reference.n} joints; "
                           "they cannot describe the same robot")
-    for number, (mine, theirs) in enumerate(zip(candidate.rows, reference.rows), 1):
+    for number, (mine, theirs) in enumerate(zip(candidate.rows, reference.rows), candidate.frame_offset + 1):
         if mine.joint != theirs.joint:
-            return Comparison(False, "joints", number + shown, f"joint {number + shown} is {_type(mine.joint)} in "
-                              "yours but "
+            return Comparison(False, "joints", number, f"joint {number} is {_type(mine.joint)} in yours but "
                               f"{_type(theirs.joint)} in the reference")
     values = _constants(candidate, reference, seed)
     mine, theirs = _numeric_fk(candidate, values), _numeric_fk(reference, values)
@@ -85,16 +83,15 @@ def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -
             return Comparison(False, kind, None, f"the joints agree; only the {kind} frame differs" + note)
     shifts = _zero_shifts(candidate, reference, values, mine, theirs, configurations)
     if shifts:
-        first = min(shifts)
-        return Comparison(False, "offset", first + 1 + shown, _offset_message(candidate, shifts) + note)
+        first = min(shifts) + 1 + candidate.frame_offset  # as the table numbers it
+        return Comparison(False, "offset", first, _offset_message(candidate, shifts) + note)
     return _first_axis_difference(candidate, reference, values, note)
 
 
 def _algebra_agrees(candidate: Chain, reference: Chain) -> bool | str:
     """Whether base → tool is identical by algebra (joint i's variable renamed to the reference's,
     constants by name, sample values in exactly); a reason instead when it is too large to expand."""
-    plain = [as_chain(c) for c in (candidate, reference)]  # a Robot's own chain, frames 0..n
-    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in plain)
+    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in map(as_chain, (candidate, reference)))
     if size > ALGEBRA_MAX_NODES:
         return (f"base → tool has {rough_count(size)} expression nodes, more than the {ALGEBRA_MAX_NODES:,} "
                 "that are expanded")
@@ -223,8 +220,7 @@ def _least_squares(b: list, c: list, t: list) -> tuple[float, float]:
 
 
 def _offset_message(candidate: Robot, shifts: dict) -> str:
-    """What to write instead; joints and rows numbered as the candidate's table numbers them."""
-    joints, shown = sorted(shifts), candidate.frame_offset
+    joints, shown = sorted(shifts), candidate.frame_offset  # joints and rows as the table numbers them
     exact = {k: _exact_shift(shifts[k], candidate.rows[k].joint) for k in joints}
     fixes = []
     for k in joints:
@@ -233,9 +229,8 @@ def _offset_message(candidate: Robot, shifts: dict) -> str:
         fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {k + 1 + shown} instead of "
                      f"{_show_exact(written)}")
     if len(joints) == 1:
-        return f"the same axes, but joint {joints[0] + 1 + shown}'s zero differs by {_show_exact(exact[joints[0]])}: " \
-            "write " \
-            + fixes[0]
+        return f"the same axes, but joint {joints[0] + 1 + shown}'s zero differs by " \
+            f"{_show_exact(exact[joints[0]])}: write " + fixes[0]
     numbers = " and ".join(str(k + 1 + shown) for k in joints)
     if len(joints) == 2 and joints[1] == joints[0] + 1 and all(abs(exact[k]) == sympy.pi for k in joints):
         # Rz(π) Tx(a) Rx(α) Rz(π) = Tx(−a) Rx(−α): two half-turn zeros are one flipped twist
@@ -356,23 +351,21 @@ def _show_exact(value) -> str:
 
 
 def _first_axis_difference(candidate: Robot, reference: Robot, values: dict, note: str) -> Comparison:
-    """The first joint whose axis (at the zero configuration) is not where the reference has it;
-    joints and rows numbered as the candidate's table numbers them."""
-    zero, shown = [0.0] * candidate.n, candidate.frame_offset
+    """The first joint whose axis (at the zero configuration) is not where the reference has it."""
+    zero = [0.0] * candidate.n
     mine, theirs = _axes_at(candidate, values)(zero), _axes_at(reference, values)(zero)
-    for number, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), 1):
+    for number, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), candidate.frame_offset + 1):
         if _distance(u, u_ref) > 1e-7:
             reversed_axis = _distance(u, [-x for x in u_ref]) <= 1e-7
             what = ("is reversed: the joint moves the other way round" if reversed_axis else
                     f"points along {_show(u)} at the zero pose; the reference's points along {_show(u_ref)}")
-            return Comparison(False, "direction", number + shown, f"joint {number + shown}'s axis {what}; "
+            return Comparison(False, "direction", number, f"joint {number}'s axis {what}; "
                               + _where_to_look(candidate, number, "the twist α") + note)
         along = [a - b for a, b in zip(p, p_ref)]
         dot = sum(a * b for a, b in zip(along, u_ref))
         off = [a - dot * b for a, b in zip(along, u_ref)]
         if math.sqrt(sum(x * x for x in off)) > 1e-7:
-            return Comparison(False, "position", number + shown, f"joint {number + shown}'s axis points the right "
-                              "way but is "
+            return Comparison(False, "position", number, f"joint {number}'s axis points the right way but is "
                               f"shifted by {_show(off)} from the reference's; "
                               + _where_to_look(candidate, number, "the lengths a and d") + note)
     return Comparison(False, "different", None, "the joint axes agree at the zero pose, but base → tool differs "
@@ -380,12 +373,11 @@ def _first_axis_difference(candidate: Robot, reference: Robot, values: dict, not
 
 
 def _where_to_look(chain: Robot, number: int, what: str) -> str:
-    """The row that places joint `number`'s axis (1..n): row number−1 in standard DH, its own row
-    in modified; named as the robot's table numbers it."""
-    row = number - 1 if chain.convention == "standard" else number
-    if row == 0:
+    """The row that places joint `number`'s axis: row number−1 in standard DH, its own row in modified."""
+    row = number - 1 if chain.convention == "standard" else number  # numbered as the table numbers them
+    if row == chain.frame_offset:
         return "check the base steps"
-    return f"check {what} in row {row + chain.frame_offset}" + (" and the rows before it" if row > 1 else "")
+    return f"check {what} in row {row}" + (" and the rows before it" if row > chain.frame_offset + 1 else "")
 
 
 def _distance(a, b) -> float:
