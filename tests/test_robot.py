@@ -215,3 +215,11 @@ def test_a_transform_too_large_is_refused_with_the_printed_numbers():
         robot.fk()
     with pytest.raises(UserError, match=r"^15T3 would have about"):
         robot.transform(15, 3)
+
+
+def test_velocity_functions_take_and_give_printed_numbers():
+    wrist = dhsym.load("spherical_wrist")
+    result = dhsym.velocity.determinant(wrist, frame=4)
+    assert [s.meaning for s in dhsym.velocity.singularities(wrist, result)] == ["axes 4 and 6 line up"]
+    assert [step.frame for step in dhsym.velocity.propagate(wrist)] == [3, 4, 5, 6]
+    assert dhsym.velocity.jacobian(wrist, 4, 6) == wrist.chain.jacobian(1, 3)

@@ -50,10 +50,11 @@ class Singularity:
     factor: sympy.Expr
     template: str
     joints: tuple = ()
+    first_joint: int = 1  # the number printed for row 1 (a wrist numbered 3..6: 4)
 
     @property
     def meaning(self) -> str:
-        return self.describe()
+        return self.describe(lambda row: str(row + self.first_joint - 1))
 
     def describe(self, label=str) -> str:
         """The meaning with each joint written by `label(row number)` (a wrist's rows 1..3
@@ -71,7 +72,7 @@ def singularities(chain, determinant, point=None) -> list[Singularity]:
     point = centre if centre is not None else point
     name = "wrist centre" if centre is not None else \
         POINT_NAMES.get(point, f"origin of frame {robot.frame_number(point)}")
-    return [Singularity(f, *meaning(chain, f, point, name, robot)) for f in determinant.factors]
+    return [Singularity(f, *meaning(chain, f, point, name, robot), robot.frame_offset + 1) for f in determinant.factors]
 
 
 POINT_NAMES = {"tool": "tool point", "base": "origin of the base frame"}
