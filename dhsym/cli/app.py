@@ -52,7 +52,7 @@ def build_parser() -> Parser:
 
 
 def main(argv=None, read=library.read) -> int:
-    """Run one command; `read` turns ROBOT into a RobotFile (tests pass their own)."""
+    """Run one command; `read` turns ROBOT into a Robot (tests pass their own)."""
     args = None
     try:
         args = build_parser().parse_args(argv)
