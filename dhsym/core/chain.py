@@ -79,7 +79,11 @@ def too_large_message(start: Frame, end: Frame, size: int) -> str:
 
 def frame_named(text, frames: list, number=lambda frame: frame) -> Frame:
     """The frame of `frames` whose printed `number` is `text` ("3", " 03", "+3", "Tool"), else a
-    UserError listing the frames by their printed numbers."""
+    UserError listing the frames by their printed numbers.
+
+    >>> frame_named(" 04", [0, 1, 2], lambda f: f + 3), frame_named("Tool", ["base", 0, 1, "tool"])
+    (1, 'tool')
+    """
     wanted = str(text).strip().lower()
     if wanted.isascii() and wanted.lstrip("+").isdigit() and len(wanted) < 6:
         wanted = str(int(wanted))
