@@ -25,7 +25,7 @@ from importlib import import_module
 _LAZY = {
     "load": ("dhsym.io.library", "load"),
     "builtin_names": ("dhsym.io.library", "builtin_names"),
-    # TODO(robot): "Robot": ("dhsym.core.robot", "Robot"), added by the lead when core/robot.py is merged.
+    "Robot": ("dhsym.core.robot", "Robot"),
     "Chain": ("dhsym.core.chain", "Chain"),
     "DHRow": ("dhsym.core.chain", "DHRow"),
     "Step": ("dhsym.core.transforms", "Step"),
@@ -57,9 +57,9 @@ def __dir__() -> list[str]:
     return list(__all__)
 
 
-def _chain_of(robot):
-    """The chain of a robot (what a robot file gives), or the chain itself."""
-    return getattr(robot, "chain", robot)
+def _robot_of(value):
+    """A robot (what `load` gives), the robot that `import_urdf` derived, or a plain chain."""
+    return getattr(value, "robot", value)
 
 
 def fk(robot, start=None, end=None, raw: bool = False):
@@ -72,9 +72,9 @@ def fk(robot, start=None, end=None, raw: bool = False):
     [a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2)],
     [a_1*sin(theta_1) + a_2*sin(theta_1 + theta_2)]])
     """
-    chain = _chain_of(robot)
-    return chain.transform(chain.first_frame if start is None else start,
-                           chain.last_frame if end is None else end, raw=raw)
+    robot = _robot_of(robot)
+    return robot.transform(robot.first_frame if start is None else start,
+                           robot.last_frame if end is None else end, raw=raw)
 
 
 def jacobian(robot, frame=None, point=None):
@@ -88,9 +88,7 @@ def jacobian(robot, frame=None, point=None):
     [-a_1*sin(theta_1) - a_2*sin(theta_1 + theta_2), -a_2*sin(theta_1 + theta_2)],
     [ a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2),  a_2*cos(theta_1 + theta_2)]])
     """
-    from .velocity.jacobian import jacobian as geometric_jacobian
-
-    return geometric_jacobian(_chain_of(robot), frame, point)
+    return _robot_of(robot).jacobian(frame, point)
 
 
 def convert(robot, convention: str):
@@ -103,7 +101,7 @@ def convert(robot, convention: str):
     """
     from .geometry.convert import to_convention
 
-    return to_convention(_chain_of(robot), convention)
+    return to_convention(_robot_of(robot), convention)
 
 
 def check(a, b):
@@ -121,12 +119,14 @@ def check(a, b):
     """
     from .core.chain import Chain
 
-    if isinstance(_chain_of(a), Chain):
+    from .core.robot import Robot
+
+    if isinstance(_robot_of(a), (Robot, Chain)):
         from .geometry.compare import compare
         from .io.library import load
 
         reference = load(os.fspath(b)) if isinstance(b, (str, os.PathLike)) else b
-        return compare(_chain_of(a), _chain_of(reference))
+        return compare(_robot_of(a), _robot_of(reference))
     from .checking.verify import check as equal
 
     return equal(a, b)
@@ -144,13 +144,14 @@ def screws(robot):
     """
     from .geometry.screws import screw_axes
 
-    return screw_axes(_chain_of(robot))
+    return screw_axes(_robot_of(robot))
 
 
 def import_urdf(path, base: str | None = None, tip: str | None = None, convention: str = "standard",
                 variables: str = "q"):
     """A DH robot derived from a URDF (or .xacro) file's base → tip path, as `dhsym import`:
-    `.chain`, `.notes` for its robot file, and `.warnings`; `variables="urdf"` names the joint
+    `.robot` (its notes name each variable's URDF joint, its warnings are the reader's) and
+    `.joint_names`; `variables="urdf"` names the joint
     variables after the URDF's joints.
 
     >>> import dhsym, pathlib, tempfile
@@ -179,4 +180,4 @@ def ik(robot, free=()):
     """
     from .inverse.api import inverse_kinematics
 
-    return inverse_kinematics(_chain_of(robot), free)
+    return inverse_kinematics(_robot_of(robot), free)

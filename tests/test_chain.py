@@ -113,7 +113,7 @@ def test_lecture_planar3r_in_standard_convention_gives_the_same_tool_pose():
 
 def test_a_chain_shows_itself_in_a_notebook():
     puma = load("puma560")
-    assert repr(puma) == "Chain('PUMA 560', modified DH, 6 joints: RRRRRR)"
+    assert repr(puma) == "Robot('PUMA 560', modified DH, 6 joints: RRRRRR, frames 0..6)"
     table = puma._repr_latex_()
     assert table.startswith("$$\n\\begin{array}{c|cccc}") and table.endswith("\\end{array}\n$$")
     assert "2 & -\\frac{\\pi}{2} & 0 & 0 & \\theta_{2}^{*}" in table

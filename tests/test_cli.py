@@ -195,7 +195,7 @@ def test_an_offset_keeps_its_angle_as_written(robot_file):
 
 def load_file(path):
     from dhsym.io.robotfile import load_robot_file
-    return load_robot_file(path).chain
+    return load_robot_file(path)
 
 
 def test_a_function_of_anything_but_a_symbol_is_bracketed(robot_file):

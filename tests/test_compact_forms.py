@@ -118,7 +118,7 @@ def test_visp_viper_text_and_json_are_no_longer_than_visp(name):
     """The JSON, read back by SymPy, has the text form's brackets: −c23(a + b), never c23(−a − b)."""
     from dhsym.io.robotfile import load_robot_text
     from dhsym.printing import render
-    chain = load_robot_text(VIPER).chain
+    chain = load_robot_text(VIPER)
     ours = chain.transform(0, 6) if name == "fMw" else chain.fk()
     printed = visp_viper()[name]
     assert check(ours, printed)

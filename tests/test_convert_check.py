@@ -23,8 +23,8 @@ def test_every_builtin_robot_converts_and_back_with_the_same_kinematics(name, tm
     back = tmp_path / "back.yaml"
     assert cli.main(["convert", name, "--to", other(chain.convention), "-o", str(converted)]) == 0
     assert cli.main(["convert", str(converted), "--to", chain.convention, "-o", str(back)]) == 0
-    assert load_robot_file(converted).chain.convention == other(chain.convention)
-    assert load_robot_file(back).chain.joint_variables == chain.joint_variables
+    assert load_robot_file(converted).convention == other(chain.convention)
+    assert load_robot_file(back).joint_variables == chain.joint_variables
     capsys.readouterr()
     for path in (converted, back):
         assert cli.main(["check", str(path), "--against", name]) == 0
@@ -39,7 +39,7 @@ def test_conversion_keeps_symbols_and_variables():
 
 def variant(old: str, new: str) -> object:
     assert old in INLINE6
-    return load_robot_text(INLINE6.replace(old, new), "homework.yaml").chain
+    return load_robot_text(INLINE6.replace(old, new), "homework.yaml")
 
 
 def test_a_wrong_twist_sign_is_named_with_its_row():
@@ -59,7 +59,7 @@ def test_the_lecture_s_two_wrist_tables_differ_by_two_half_turn_zeros():
     row_5 = "{joint: R, alpha: -pi/2, a: 0,   d: 0,   theta: theta_5}"
     example2_wrist = INLINE6.replace(ROW_4, ROW_4.replace("alpha: pi/2", "alpha: -pi/2")) \
         .replace(row_5, row_5.replace("alpha: -pi/2", "alpha: pi/2"))
-    verdict = compare(load_robot_text(example2_wrist, "example2_wrist.yaml").chain, load("inline6"))
+    verdict = compare(load_robot_text(example2_wrist, "example2_wrist.yaml"), load("inline6"))
     assert verdict.kind == "offset" and "the zeros of joints 4 and 6 differ by π and π" in verdict.message
 
 

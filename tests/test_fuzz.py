@@ -18,9 +18,10 @@ from hypothesis import strategies as st
 from dhsym import Chain, DHRow
 from dhsym.checking.verify import numeric_error
 from dhsym.core.budget import time_budget
+from dhsym.core.robot import Robot
 from dhsym.errors import UserError
 from dhsym.io.expr import Reading, parse_expression
-from dhsym.io.robotfile import ROW_KEYS, TOP_KEYS, RobotFile, load_robot_text
+from dhsym.io.robotfile import ROW_KEYS, TOP_KEYS, load_robot_text
 from dhsym.printing.notation import written_offsets
 from dhsym.printing.printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
@@ -169,7 +170,7 @@ def assert_robot_outcome(text: str) -> None:
         except UserError as error:
             assert error.where.file == "fuzz.yaml" and error.where.line >= 1 and error.where.column >= 1, error
             return
-        assert isinstance(robot, RobotFile) and 1 <= robot.chain.n
+        assert isinstance(robot, Robot) and 1 <= robot.chain.n
         matrix = robot.chain.fk()  # a file that loads must also compute
     assert matrix.shape == (4, 4)
     assert all(symbol.is_real for symbol in matrix.free_symbols)

@@ -29,7 +29,7 @@ def test_an_imported_panda_reads_back_with_the_urdf_kinematics(convention, tmp_p
     status, out, err = run(["import", DATA / "panda.urdf", "--convention", convention, "-o", out_file], capsys)
     assert (status, out) == (0, "")
     assert err.startswith("dhsym: warning: ") and "1.5707963267948966 → π/2" in err
-    chain = load_robot_file(out_file).chain
+    chain = load_robot_file(out_file)
     assert chain.convention == convention and chain.joint_variables == list(sympy.symbols("q_1:8", real=True))
     assert chain.source == "panda.urdf, links panda_link0 → panda_link8"
     q = [0.3, -0.7, 1.1, -2.0, 0.4, 1.9, -0.6]
@@ -87,7 +87,7 @@ def test_the_axes_form_gives_a_table_that_the_commands_use(tmp_path, capsys):
     path.write_text(AXES_ARM)
     status, out, _ = run(["table", path], capsys)
     assert status == 0 and "d3*" in out and "π" in out
-    chain = load_robot_file(path).chain
+    chain = load_robot_file(path)
     assert chain.sample and [row.joint for row in chain.rows] == list("RRPR")
     reference = load("scara_spong")  # the same arm, tabled by hand after Spong
     status, out, _ = run(["check", path, "--against", "scara_spong"], capsys)
@@ -165,13 +165,13 @@ def test_the_python_api_does_what_the_command_does(tmp_path, capsys):
     from dhsym.io.urdfimport import import_urdf
 
     imported = import_urdf(DATA / "ur5.urdf", tip="tool0", convention="modified", variables="urdf")
-    assert imported.joint_names[0] == "shoulder_pan_joint" and imported.chain.convention == "modified"
-    assert imported.chain.joint_variables[0] == sympy.Symbol("shoulder_pan_joint", real=True)
+    assert imported.joint_names[0] == "shoulder_pan_joint" and imported.robot.convention == "modified"
+    assert imported.robot.joint_variables[0] == sympy.Symbol("shoulder_pan_joint", real=True)
     status, out, _ = run(["import", DATA / "ur5.urdf", "--tip", "tool0", "--convention", "modified",
                           "--variables", "urdf"], capsys)
     written = tmp_path / "ur5.yaml"
     written.write_text(out)
-    assert status == 0 and load_robot_file(written).chain.rows == imported.chain.rows
+    assert status == 0 and load_robot_file(written).rows == imported.robot.rows
 
 
 def test_a_named_pipe_is_refused_at_once(tmp_path, capsys):
@@ -242,7 +242,7 @@ def test_an_expanded_xacro_arm_has_the_kinematics_of_its_urdf(capsys):
     imported = import_urdf(path)
     assert imported.joint_names == ["left_shoulder", "left_elbow", "left_wrist"]
     q = [0.4, -1.1, 0.7]
-    numeric = imported.chain.fk(raw=True).xreplace(dict(zip(imported.chain.joint_variables, q))).evalf()
+    numeric = imported.robot.fk(raw=True).xreplace(dict(zip(imported.robot.joint_variables, q))).evalf()
     expected = urdf_fk(expand_xacro(path).decode(), q, "left_base", "left_tip")
     assert np.allclose(np.array(numeric, dtype=float), expected, atol=1e-12)
 

@@ -9,6 +9,7 @@ from hypothesis import strategies as st
 from test_inverse_robots import check_round_trip
 
 from dhsym import Chain, DHRow, Step
+from dhsym.core.robot import Robot
 from dhsym.geometry.convert import to_convention
 from dhsym.inverse.solve import solve
 
@@ -57,7 +58,7 @@ def pieper_arms(draw):
     base = draw(st.sampled_from([[], [Step("Tz", sympy.Rational(1, 4))], [Step("Rz", HALF), Step("Tx", length())]]))
     tool = draw(st.sampled_from([[], [Step("Tz", length())],
                                  [Step("Rx", sympy.pi), Step("Tz", sympy.Rational(1, 10))]]))
-    chain = Chain(arm + wrist, "standard", base=base, tool=tool, name=f"random {family} arm", sample=sample)
+    chain = Robot(Chain(arm + wrist, "standard", base=base, tool=tool), name=f"random {family} arm", sample=sample)
     return to_convention(chain, draw(st.sampled_from(["standard", "modified"])))
 
 
@@ -78,7 +79,7 @@ def test_a_wrist_at_the_start_is_decoupled_too(convention, seed):
             DHRow.revolute(q[2], d=lengths[1], a=lengths[2], alpha=HALF), DHRow.revolute(q[3], a=lengths[3]),
             DHRow.revolute(q[4], a=lengths[4], alpha=HALF), DHRow.revolute(q[5], d=lengths[5])]
     sample = {symbol: sympy.Rational(k + 3, 10) for k, symbol in enumerate(lengths)}
-    chain = to_convention(Chain(rows, "standard", name="wrist first", sample=sample), convention)
+    chain = to_convention(Robot(Chain(rows, "standard"), name="wrist first", sample=sample), convention)
     solution = solve(chain)
     assert "joints 1, 2 and 3 meet at a point fixed in the base" in solution.method
     check_round_trip(chain, solution, random.Random(seed), trials=2)

@@ -11,6 +11,7 @@ import pytest
 import sympy
 
 import dhsym
+from dhsym.core.robot import Robot
 from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.solution import TARGET_NAMES
 from dhsym.inverse.solve import solve
@@ -95,7 +96,7 @@ def test_the_planar_elbow_uses_px_and_py_and_says_so():
 
 def test_a_pendulum_has_one_named_solution():
     theta = sympy.Symbol("theta_1", real=True)
-    solution = solve(dhsym.Chain([dhsym.DHRow.revolute(theta, a=1)], "standard", name="pendulum"))
+    solution = solve(Robot(dhsym.Chain([dhsym.DHRow.revolute(theta, a=1)], "standard"), name="pendulum"))
     assert [(b.name, b.assignments) for b in solution.branches] == [
         ("the only solution", ((theta, sympy.atan2(sympy.Symbol("py", real=True), sympy.Symbol("px", real=True))),))]
 
@@ -151,7 +152,7 @@ def test_a_general_6r_is_refused_by_its_axes():
     rows = [dhsym.DHRow.revolute(t[k], d=sympy.Symbol(f"d_{k + 1}", real=True), a=sympy.Symbol(f"a_{k + 1}", real=True),
                                  alpha=alpha[k]) for k in range(6)]
     with pytest.raises(dhsym.UserError, match="no three consecutive axes meet in a point .* or are parallel"):
-        solve(dhsym.Chain(rows, "standard", name="general 6R"))
+        solve(Robot(dhsym.Chain(rows, "standard"), name="general 6R"))
 
 
 def test_the_puma_solution_is_no_larger_than_craigs():

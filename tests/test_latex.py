@@ -52,9 +52,9 @@ IMPORTED = {f"imported-{path.stem}": path
 def _robot(name: str):
     """A built-in robot, a test robot by its key in TEST_ROBOTS, or an imported one from IMPORTED."""
     if name in TEST_ROBOTS:
-        return load_robot_text(TEST_ROBOTS[name], f"{name}.yaml").chain
+        return load_robot_text(TEST_ROBOTS[name], f"{name}.yaml")
     if name in IMPORTED:
-        return load_robot_text(IMPORTED[name].read_text(encoding="utf-8"), IMPORTED[name].name).chain
+        return load_robot_text(IMPORTED[name].read_text(encoding="utf-8"), IMPORTED[name].name)
     return load(name)
 
 
@@ -252,7 +252,7 @@ def test_a_fixed_transform_too_wide_for_the_line_is_a_display_broken_between_fac
     assert "Fixed base transform:\\par\n\\[\n\\begin{aligned}\n{}^{\\mathrm{base}}T_{0} &= T_{x}(" in article
     assert "\\,T_{y}(0.1433) \\\\\n&\\quad {}T_{z}(" in article
     short = load_robot_text("convention: standard\njoints: [{joint: R, alpha: 0, a: l_1, d: 0, theta: theta_1}]\n"
-                            "tool: [{Tz: d_6}]\n", "arm.yaml").chain  # one that fits stays a sentence
+                            "tool: [{Tz: d_6}]\n", "arm.yaml")  # one that fits stays a sentence
     assert "Fixed tool transform: ${}^{1}T_{\\mathrm{tool}} = T_{z}(d_{6})$." in latexdoc.document(short, "article")
     slides = _table_frames("imported-long_decimals")
     lead_in = next(frame for frame in slides if "Fixed base transform:" in frame)
@@ -360,12 +360,12 @@ def test_modified_table_order_and_base_tool_frames():
 
 
 def test_two_digit_joints_greek_names_and_angle_differences():
-    ten = latexdoc.document(load_robot_text(TEN_JOINTS, "ten.yaml").chain, "snippet")
+    ten = latexdoc.document(load_robot_text(TEN_JOINTS, "ten.yaml"), "snippet")
     assert "{}^{9}T_{10}" in ten and "c_{10}" in ten and "c_{1,2,3,4,5,6,7,8,9,10}" in ten
     assert "% Abbreviations (commas separate the joint numbers when one of them has two digits):" in ten
     assert "Ten-link planar arm \\& co: 100\\% planar\\_test, $\\theta$" in latexdoc.document(
-        load_robot_text(TEN_JOINTS, "ten.yaml").chain, "slides")
-    greek = latexdoc.document(load_robot_text(GREEK_PRISMATIC, "greek.yaml").chain, "snippet")
+        load_robot_text(TEN_JOINTS, "ten.yaml"), "slides")
+    greek = latexdoc.document(load_robot_text(GREEK_PRISMATIC, "greek.yaml"), "snippet")
     assert "\\phi_{1}^{*}" in greek and "\\lambda_{1}" in greek and "d_{3}^{*}" in greek
     assert "\\overline{\\psi 2}" in greek and "a bar over a joint number marks an angle that is subtracted" in greek
 

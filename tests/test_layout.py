@@ -15,11 +15,12 @@ PACKAGE = Path(__file__).parent.parent / "dhsym"
 # `geometry` (frames from joint axes) is math on core that the robot-file reader uses for `axes:`.
 LAYERS = ["errors", "core", "checking.verify", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot",
           "checking", "cli"]
-# Conveniences reach up, lazily inside a method: Jupyter shows a chain as its DH table,
-# `chain.jacobian()` and `chain.ik()` hand over to the layers built on core, and the object
-# `chain.ik()` returns shows itself as text and LaTeX.
+# Conveniences reach up, lazily inside a method: Jupyter shows a chain or a robot as its DH
+# table, `.jacobian()` and `.ik()` hand over to the layers built on core, and the object
+# `.ik()` returns shows itself as text and LaTeX.
 ALLOWED_UPWARD = {("core.chain", "printing.render"), ("core.chain", "velocity.jacobian"),
-                  ("core.chain", "inverse.api"), ("inverse.api", "latex.ik"), ("inverse.api", "printing.ik")}
+                  ("core.chain", "inverse.api"), ("core.robot", "printing.render"), ("core.robot", "velocity.jacobian"),
+                  ("core.robot", "inverse.api"), ("inverse.api", "latex.ik"), ("inverse.api", "printing.ik")}
 
 
 def _modules():

@@ -144,9 +144,9 @@ def test_first_frame_in_notebooks_and_pictures():
 
     from dhsym.plot import draw
 
-    wrist = load_robot_text(WRIST, "wrist.yaml").chain
-    assert wrist.frame_offset == 3 and wrist.transform(0, 3) == wrist.fk()  # Python counts from 0
-    assert display.transform(wrist, 0, 3).latex.startswith("\\begin{array}{l}\n{}^{3}T_{6} =")
+    wrist = load_robot_text(WRIST, "wrist.yaml")
+    assert wrist.frame_offset == 3 and wrist.transform(3, 6) == wrist.fk() == wrist.chain.transform(0, 3)
+    assert display.transform(wrist, 3, 6).latex.startswith("\\begin{array}{l}\n{}^{3}T_{6} =")
     labels = {text.get_text() for text in draw(wrist, {"d_6": 1}, ax=Figure()).texts}
     assert any("6" in label for label in labels) and not any("0" in label for label in labels)
 

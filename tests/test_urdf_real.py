@@ -112,7 +112,7 @@ def _assert_same_kinematics(chain, names, path, base, tip):
 @pytest.mark.parametrize("label, path, base, tip", list(_cases()))
 def test_the_python_api_gives_the_urdf_kinematics(label, path, base, tip, convention):
     imported = import_urdf(path, base, tip, convention)
-    assert imported.chain.convention == convention and imported.chain.n == len(imported.joint_names)
+    assert imported.robot.convention == convention and imported.robot.n == len(imported.joint_names)
     _assert_same_kinematics(imported.chain, imported.joint_names, path, base, tip)
 
 
@@ -127,7 +127,7 @@ def test_dhsym_import_writes_a_file_with_the_urdf_kinematics(label, path, base, 
     stdout, stderr = capsys.readouterr()
     assert (status, stdout) == (0, ""), stderr
     assert all(line.startswith("dhsym: warning: ") for line in stderr.splitlines())
-    chain = load_robot_file(out).chain
+    chain = load_robot_file(out)
     listed = re.match(r"Derived by dhsym import; joint variables: (.*?)(?:\. |$)", chain.notes).group(1)
     names = [part.split(" = ")[1] for part in listed.split(", ")]
     assert chain.convention == convention and len(names) == chain.n

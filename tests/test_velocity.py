@@ -9,6 +9,7 @@ import textbook
 
 import dhsym
 from dhsym.checking.verify import check, numeric_error
+from dhsym.core.robot import as_robot
 from dhsym.io.library import builtin_names, load
 from dhsym.io.robotfile import load_robot_text
 from dhsym.velocity import ROWS, determinant, jacobian, propagate, propagated_jacobian, singularities
@@ -17,7 +18,10 @@ from dhsym.velocity.jacobian import axis_frame
 
 def reference_jacobian(chain, frame, point):
     """From the plain product, by the definition: ∂p/∂q in the first frame (position of the raw
-    product) and the raw z axes, then turned into `frame` with the raw rotation."""
+    product) and the raw z axes, then turned into `frame` with the raw rotation. A Robot's frames
+    are its printed numbers; the reference works on its chain (frames 0..n)."""
+    robot = as_robot(chain)
+    chain, frame, point = robot.chain, robot.chain_frame(frame), robot.chain_frame(point)
     first = chain.first_frame
     position = chain.transform(first, point, raw=True)[:3, 3]
     order = chain.frames.index
@@ -165,7 +169,7 @@ def test_the_ur5_determinant_factors_without_a_wrist_centre():
 
 def test_a_general_six_link_determinant_is_refused_from_its_count_of_terms():
     rows = "".join(f"  - {{joint: R, alpha: alpha_{i}, a: a_{i}, d: d_{i}, theta: theta_{i}}}\n" for i in range(1, 7))
-    chain = load_robot_text(f"convention: standard\njoints:\n{rows}", "general6.yaml").chain
+    chain = load_robot_text(f"convention: standard\njoints:\n{rows}", "general6.yaml")
     result = determinant(chain)
     assert result.value is None and result.factors == []
     assert result.note == ("the axes of joints 4–6 do not meet in a point, and the full 6×6 determinant would expand "

@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from dhsym.cli import app as cli
 from dhsym.core.chain import Chain, DHRow
 from dhsym.core.numbers import decimal_text
+from dhsym.core.robot import Robot
 from dhsym.core.transforms import Step
 from dhsym.errors import UserError
 from dhsym.geometry.convert import to_convention
@@ -33,7 +34,7 @@ R = sympy.Rational
 
 def read_back(chain, notes=None):
     text = robot_yaml(chain, notes)
-    return text, load_robot_text(text, "written.yaml").chain
+    return text, load_robot_text(text, "written.yaml")
 
 
 def one_value_chain(value, field="a"):
@@ -118,8 +119,7 @@ def test_pi_in_a_length_is_a_decimal_since_a_robot_file_reads_pi_in_angles_only(
 
 
 def test_the_note_follows_the_notes_given_and_the_chain_s_own():
-    chain = one_value_chain(sympy.atan(R(4, 3)), "alpha")
-    chain.notes = "From the manual"
+    chain = Robot(one_value_chain(sympy.atan(R(4, 3)), "alpha"), notes="From the manual")
     _, again = read_back(chain, "Derived by hand")
     assert again.notes == ("Derived by hand. From the manual. Rounded to 15 significant digits: "
                            "alpha_1 0.927295218001612 (exactly atan(4/3)).")
@@ -148,8 +148,7 @@ def test_more_than_24_joints_is_refused_before_writing():
 
 
 def test_a_file_over_1_mib_is_refused_naming_the_limit():
-    chain = one_value_chain(1)
-    chain.notes = "x" * (1 << 20)
+    chain = Robot(one_value_chain(1), notes="x" * (1 << 20))
     with pytest.raises(UserError, match=r"^the robot file would be \d+ bytes; robot files are limited to 1 MiB"):
         robot_yaml(chain)
 
@@ -178,7 +177,7 @@ def test_an_off_grid_urdf_axis_imports_with_decimals_and_the_urdf_kinematics(axi
     written = out_file.read_text()
     table = written.split("notes:")[0]
     assert "atan" not in table and "sqrt" not in table and "/" not in table.replace("pi/", "")
-    chain = load_robot_file(out_file).chain
+    chain = load_robot_file(out_file)
     if axis == "0 0.6 0.8":
         assert "(exactly -atan(3/4))" in chain.notes or "(exactly atan(4/3))" in chain.notes
     rng = random.Random(5)
@@ -205,7 +204,7 @@ def test_an_axes_file_written_exactly_keeps_exact_lengths(tmp_path, capsys):
     path.write_text("convention: standard\naxes:\n  - {joint: R, point: [0, 0, 0], direction: [0, 0, 1]}\n"
                     "  - {joint: R, point: [l_1, 0, 0], direction: [0, 1, 1]}\n  - {joint: R, point: [l_1, 1, 0], "
                     "direction: [0, 1, 1]}\ntool: [{Tx: l_1}]\n")
-    chain = load_robot_file(path).chain
+    chain = load_robot_file(path)
     assert chain.rows[1].a == sympy.sqrt(2) / 2 and chain.rows[0].alpha == -sympy.pi / 4
 
 
@@ -227,11 +226,11 @@ notes: "Frames numbered 3..6 as in the lecture"
 
 @pytest.mark.parametrize("target", ["standard", "modified"])
 def test_read_convert_write_read_keeps_what_the_file_said(target, tmp_path):
-    original = load_robot_text(WRIST, "wrist.yaml").chain
+    original = load_robot_text(WRIST, "wrist.yaml")
     converted = to_convention(original, target)
     assert (converted.frame_offset, converted.file, converted.numbers) == (3, "wrist.yaml", original.numbers)
     text = robot_yaml(converted)
-    again = load_robot_text(text, "again.yaml").chain
+    again = load_robot_text(text, "again.yaml")
     for attribute in ("name", "source", "notes", "sample", "frame_offset", "numbers", "joint_variables"):
         assert getattr(again, attribute) == getattr(original, attribute), attribute
     assert "a: l_1/2" in text and ": 0.0825" in text and "first_frame: 3\n" in text
@@ -242,7 +241,7 @@ def test_read_convert_write_read_keeps_what_the_file_said(target, tmp_path):
 
 
 def test_first_frame_is_written_only_when_it_is_not_zero():
-    assert "first_frame: 3\n" in robot_yaml(load_robot_text(WRIST, "wrist.yaml").chain)
+    assert "first_frame: 3\n" in robot_yaml(load_robot_text(WRIST, "wrist.yaml"))
     assert "first_frame" not in robot_yaml(one_value_chain(1))
 
 
@@ -289,7 +288,7 @@ def poe_fk(axes, tool, values):
 @given(geometries())
 def test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics(geometry):
     axes, tool, convention, decimals, symbolic = geometry
-    chain = assign_frames(axes, tool, convention, decimals=decimals).chain(name="random")
+    chain = assign_frames(axes, tool, convention, decimals=decimals).robot(name="random")
     try:
         text = robot_yaml(chain)
     except UserError as error:  # only a value too long, or an angle that depends on symbols, and said so
@@ -297,7 +296,7 @@ def test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics(ge
             "so it has no exact decimal: give those lengths as numbers" in str(error), str(error)
         assert symbolic
         return
-    again = load_robot_text(text, "random.yaml").chain
+    again = load_robot_text(text, "random.yaml")
     assert "atan" not in text.split("notes:")[0]
     rng = random.Random(len(text))
     for _ in range(2):
@@ -320,7 +319,7 @@ def test_any_mix_of_value_kinds_reads_back(kinds, convention):
         variable = sympy.Symbol(f"q_{number}", real=True)
         rows.append(DHRow("R", variable + theta, d, a, alpha, variable))
     chain = Chain(rows, convention, [Step("Rz", values[0])], [Step("Tx", values[-1])])
-    again = load_robot_text(robot_yaml(chain), "mix.yaml").chain
+    again = load_robot_text(robot_yaml(chain), "mix.yaml")
     point = {l1: 0.3, l2: -0.7} | {v: 0.1 * i for i, v in enumerate(chain.joint_variables)}
     assert np.allclose(np.array(again.fk(raw=True).xreplace(point).evalf(), dtype=float),
                        np.array(chain.fk(raw=True).xreplace(point).evalf(), dtype=float), atol=1e-12)
@@ -353,7 +352,7 @@ def test_the_kuka_kr210_imports_with_its_atan_offset_noted(convention, tmp_path,
     written, err = capsys.readouterr()
     assert err == ""
     assert "theta: q_2 + 1.57071753409164" in written and "a: -1.24990000387987" in written
-    chain = load_robot_text(written, "kr210.yaml").chain
+    chain = load_robot_text(written, "kr210.yaml")
     assert "theta_2 offset 1.57071753409164 (exactly atan(1249900000/98483))" in chain.notes
     assert "a_2 -1.24990000387987 (exactly -sqrt(1562250019698901289)/1000000000)" in chain.notes
     rng = random.Random(7)
@@ -364,8 +363,8 @@ def test_the_kuka_kr210_imports_with_its_atan_offset_noted(convention, tmp_path,
 
 
 def test_a_name_with_characters_yaml_refuses_in_a_file_is_escaped_and_reads_back():
-    chain = one_value_chain(1)
-    chain.name, chain.notes = "arm\x85\u2028\x9f \"quoted\" → \U0001F916\tend", "line one\nline two"
+    chain = Robot(one_value_chain(1), name="arm\x85\u2028\x9f \"quoted\" → \U0001F916\tend",
+                  notes="line one\nline two")
     _, again = read_back(chain)
     assert (again.name, again.notes) == (chain.name, chain.notes)
 
@@ -374,7 +373,7 @@ def test_a_variable_named_like_a_constant_of_its_column_is_written_with_var():
     """A URDF joint named d_1 that turns: the reader would take d_1 in theta for a misplaced
     length, so the writer names the variable with var and the file reads back."""
     d_1 = sympy.Symbol("d_1", real=True)
-    chain = Chain([DHRow.revolute(d_1, d=sympy.Rational(1, 10))], "standard", name="d1arm")
+    chain = Robot(Chain([DHRow.revolute(d_1, d=sympy.Rational(1, 10))], "standard"), name="d1arm")
     text, again = read_back(chain)
     assert "var: d_1" in text
     assert again.rows[0].variable == d_1

@@ -75,7 +75,7 @@ def command_modules(argv=None) -> list[str]:
 
 
 def main(argv=None, read=library.read) -> int:
-    """Run one command; `read` turns ROBOT into a RobotFile (tests pass their own)."""
+    """Run one command; `read` turns ROBOT into a Robot (tests pass their own)."""
     args = None
     try:
         args = build_parser(argv).parse_args(argv)

@@ -40,5 +40,5 @@ def run(robot, args) -> str:
     warn(reference.warnings)
     refuse_long_entries(robot)
     refuse_long_entries(reference)
-    verdict = compare(robot.chain, reference.chain)
+    verdict = compare(robot, reference)
     return (Outcome if verdict.same else Different)(f"{args.robot}: {verdict.message}")

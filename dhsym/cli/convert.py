@@ -24,7 +24,7 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str | None:
-    text = robot_yaml(to_convention(robot.chain, args.to))
+    text = robot_yaml(to_convention(robot, args.to))  # keeps name, sample, first_frame...
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[robot.path])

@@ -35,7 +35,7 @@ def add_parsers(commands) -> None:
 def run(robot, args) -> str:
     from ..inverse.api import inverse_kinematics  # here: the other commands need no solver
 
-    result = inverse_kinematics(robot.chain, args.free)
+    result = inverse_kinematics(robot, args.free)
     if args.format == "json":
         return json.dumps(result.json(), indent=2, ensure_ascii=False)
     if args.format == "python":

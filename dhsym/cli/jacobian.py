@@ -30,34 +30,39 @@ def add_parsers(commands) -> None:
                               description="Print the geometric Jacobian (rows vx vy vz ωx ωy ωz) of the origin of "
                               "the last frame, expressed in frame F, its factored determinant and the factors whose "
                               "vanishing makes it singular, each with its meaning.")
-    sub.add_argument("--frame", metavar="F", help="the frame J is expressed in (default: base, else 0)")
-    sub.add_argument("--point", metavar="P", help="the frame whose origin moves (default: tool, else n)")
+    sub.add_argument("--frame", metavar="F", help="the frame J is expressed in, numbered as fk numbers it "
+                     "(default: base, else the first)")
+    sub.add_argument("--point", metavar="P", help="the frame whose origin moves (default: tool, else the last)")
     sub.add_argument("--steps", action="store_true",
                      help="derive it by Craig's outward velocity propagation, link by link")
     sub.set_defaults(run=run)
 
 
 def run(robot, args) -> str:
-    chain = robot.chain
-    frame, point = resolve_frames(chain, args.frame, args.point)
+    own_frame, own_point = resolve_frames(robot, args.frame, args.point)  # the chain's frames 0..n
     refuse_long_entries(robot)
-    refuse_jacobian_if_too_large(robot, frame, point, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
+    refuse_jacobian_if_too_large(robot, own_frame, own_point,
+                                 LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
     if args.steps:
         refuse_steps_if_too_large(robot)
+    frame, point = robot.frame_number(own_frame), robot.frame_number(own_point)  # as printed, from here on
     if args.format == "latex":
         from ..latex.velocity import snippet  # the LaTeX layout lives with the documents
 
-        return snippet(chain, frame, point, args.steps)
-    matrix = jacobian(chain, frame, point)
-    result = determinant(chain, frame, point)
-    found = singularities(chain, result, point)
+        return snippet(robot, frame, point, args.steps)
+    with robot.numbered():
+        matrix = jacobian(robot, frame, point)
+        result = determinant(robot, frame, point)
+    found = singularities(robot, result, point)
     if args.format == "json":
-        return json.dumps(show.json_jacobian(chain, frame, point, matrix, result), indent=2, ensure_ascii=False)
-    steps = propagate(chain) if args.steps else None
-    return _text(chain, frame, point, matrix, result, found, steps, args)
+        return json.dumps(show.json_jacobian(robot, frame, point, matrix, result), indent=2, ensure_ascii=False)
+    steps = propagate(robot) if args.steps else None
+    return _text(robot, frame, point, matrix, result, found, steps, args)
 
 
-def _text(chain, frame, point, matrix, result, found, steps, args) -> str:
+def _text(robot, frame, point, matrix, result, found, steps, args) -> str:
+    """`frame`, `point` and the steps' frames are numbered as the robot prints them."""
+    chain = robot
     style = "ascii" if args.ascii else "unicode"
     printer = show.RateTextPrinter(chain.joint_variables, rate_symbols(chain), ascii=args.ascii,
                                    settings=chain_settings(chain))

@@ -29,8 +29,9 @@ def add_parsers(commands) -> None:
     text_width_option(links)
     links.set_defaults(run=run_links)
     fk = commands.add_parser("fk", parents=parents, help="print the transform between two frames "
-                             "(default: whole chain)", description="Print {FROM}T_{TO}. Frames are 0..n, plus "
-                             "base and tool when the robot has them. FROM after TO gives the inverse transform.")
+                             "(default: whole chain)", description="Print {FROM}T_{TO}. Frames are 0..n (numbered "
+                             "from the robot file's first_frame when it has one), plus base and tool when the robot "
+                             "has them. FROM after TO gives the inverse transform.")
     frame_options(fk)
     fk.add_argument("--raw", action="store_true", help="the plain product, without simplification")
     text_width_option(fk)
@@ -56,49 +57,53 @@ def points(text: str) -> float:
 
 
 def run_table(robot, args) -> str:
-    chain = robot.chain
     if args.format == "json":
-        exact = render.exact_printer(chain)
-        rows = [{"joint": r.joint, **{key: exact.doprint(getattr(r, key)) for key in ("theta", "d", "a", "alpha")},
-                 "variable": r.variable.name} for r in chain.rows]
-        return json.dumps({"robot": chain.name, "convention": chain.convention, "rows": rows}, indent=2)
+        exact = render.exact_printer(robot)
+        rows = [{"joint": r.joint, "number": number,
+                 **{key: exact.doprint(getattr(r, key)) for key in ("theta", "d", "a", "alpha")},
+                 "variable": r.variable.name} for number, r in zip(robot.joints, robot.rows)]
+        return json.dumps({"robot": robot.name, "convention": robot.convention, "first_frame": robot.frame_offset,
+                           "rows": rows}, indent=2)
     if args.format == "latex":
-        return table_latex(chain)
-    note = render.wrap(render.convention_note(chain.convention, ascii=args.ascii) + "; * marks joint variables",
+        return table_latex(robot)
+    note = render.wrap(render.convention_note(robot.convention, ascii=args.ascii) + "; * marks joint variables",
                        args.width, "  ")
-    return _header(chain, "DH table", args.ascii) + "\n" + note + "\n\n" + \
-        render.text_table(chain, ascii=args.ascii)
+    return _header(robot, "DH table", args.ascii) + "\n" + note + "\n\n" + \
+        render.text_table(robot, ascii=args.ascii)
 
 
 def run_links(robot, args) -> str:
     chain = robot.chain
-    return _results(chain, [(i - 1, i, chain.link(i, raw=args.raw)) for i in range(1, chain.n + 1)], args)
+    return _results(robot, [(i - 1, i, chain.link(i, raw=args.raw)) for i in range(1, chain.n + 1)], args)
 
 
 def run_fk(robot, args) -> str:
     chain = robot.chain
-    start = chain.first_frame if args.start is None else chain.frame(args.start)
-    end = chain.last_frame if args.end is None else chain.frame(args.end)
+    start = chain.frames[0] if args.start is None else robot.chain_frame(args.start)
+    end = chain.frames[-1] if args.end is None else robot.chain_frame(args.end)
     refuse_if_too_large(robot, start, end, args.raw, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
-    return _results(chain, [(start, end, chain.transform(start, end, raw=args.raw))], args)
+    with robot.numbered():
+        matrix = chain.transform(start, end, raw=args.raw)
+    return _results(robot, [(start, end, matrix)], args)
 
 
-def _header(chain, what: str, ascii: bool) -> str:
-    title = f"{chain.name}: {what}  ({chain.convention} DH)"
+def _header(robot, what: str, ascii: bool) -> str:
+    title = f"{robot.name}: {what}  ({robot.convention} DH)"
     return title.replace("−", "-") if ascii else title
 
 
-def _results(chain, results, args) -> str:
+def _results(robot, results, args) -> str:
+    """(i, j, matrix) with i, j the chain's frames, titled with the robot's numbers."""
     if args.format == "json":
-        data = [render.json_result(chain, i, j, m) for i, j, m in results]
+        data = [render.json_result(robot, i, j, m) for i, j, m in results]
         return json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False)
     if args.format == "latex":
-        return results_latex(chain, results, args.text_width)
-    printer = render.text_printer(chain, ascii=args.ascii)
+        return results_latex(robot, results, args.text_width)
+    printer = render.text_printer(robot, ascii=args.ascii)
     style = "ascii" if args.ascii else "unicode"
     blocks = []
     for i, j, matrix in results:
-        title = _header(chain, render.transform_title(chain.frame_number(i), chain.frame_number(j), style),
+        title = _header(robot, render.transform_title(robot.frame_number(i), robot.frame_number(j), style),
                         args.ascii)
         blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, args.width))
     legend = render.text_legend(printer, args.width)

@@ -41,8 +41,8 @@ def add_parsers(commands) -> None:
 def run(robot, args) -> str | None:
     chain = robot.chain
     try:
-        start = chain.first_frame if args.start is None else chain.frame(args.start)
-        end = chain.last_frame if args.end is None else chain.frame(args.end)
+        start = chain.first_frame if args.start is None else robot.chain_frame(args.start)
+        end = chain.last_frame if args.end is None else robot.chain_frame(args.end)
     except UserError:
         pass  # document() names the frame that is wrong, and the option
     else:
@@ -54,7 +54,7 @@ def run(robot, args) -> str | None:
         refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame, LATEX_MAX_NODES, option="")
         if args.steps:
             refuse_steps_if_too_large(robot)
-    text = document(robot.chain, args.document, steps=args.steps, start=args.start, end=args.end,
+    text = document(robot, args.document, steps=args.steps, start=args.start, end=args.end,
                     jacobian=args.jacobian, ik=args.ik, free=args.free)
     if args.output is None:
         return text

@@ -35,8 +35,9 @@ ENTRY_MAX_TERMS = 1_000
 
 
 def refuse_if_too_large(robot, start, end, raw: bool = False, limit: int = MAX_NODES, others: bool = True) -> None:
-    """A UserError saying what to do instead when {start}T{end} would be larger than `limit`
-    nodes. `others`: also advise `dhsym links` and --raw (commands that print matrices)."""
+    """A UserError saying what to do instead when {start}T{end} (the chain's frames) would be
+    larger than `limit` nodes, naming frames with the robot's numbers. `others`: also advise
+    `dhsym links` and --raw (commands that print matrices)."""
     chain = robot.chain
     size = estimated_size(chain, start, end, raw)
     if size <= limit:
@@ -46,13 +47,13 @@ def refuse_if_too_large(robot, start, end, raw: bool = False, limit: int = MAX_N
     reach = first + 1
     while reach + 1 <= last and estimated_size(chain, frames[first], frames[reach + 1]) <= limit:
         reach += 1
-    shown = [chain.frame_number(frames[k]) for k in (first, reach)]
+    shown = [robot.frame_number(frames[k]) for k in (first, reach)]
     advice = f"ask for part of the chain with --from/--to (--from {shown[0]} --to {shown[1]} fits)"
     if others:
         advice += ", or print the link matrices with 'dhsym links'"
         if not raw and estimated_size(chain, start, end, raw=True) <= limit:
             advice += ", or the unsimplified product with --raw"
-    title = transform_title(chain.frame_number(start), chain.frame_number(end), "ascii")
+    title = transform_title(robot.frame_number(start), robot.frame_number(end), "ascii")
     what = "too large to print or read" if limit == MAX_NODES else "too large to lay out as LaTeX"
     raise UserError(f"{robot.path}: {title} would take {rough_count(size * CHARACTERS_PER_NODE)} "
                     f"characters, {what}; {advice}")
@@ -70,14 +71,14 @@ def refuse_jacobian_if_too_large(robot, frame, point, limit: int = MAX_NODES, op
     fitting = [f for f in chain.frames if jacobian_size(chain, f, point) <= limit]
     if fitting and option:
         nearest = min(fitting, key=lambda f: abs(chain.frames.index(f) - chain.frames.index(frame)))
-        advice = f"express it in a frame nearer the point with {option} ({option} {chain.frame_number(nearest)} fits)"
+        advice = f"express it in a frame nearer the point with {option} ({option} {robot.frame_number(nearest)} fits)"
     elif option:
         advice = "ask for the velocity of a frame nearer the base with --point"
     else:
         advice = "leave out --jacobian, or print it with 'dhsym jacobian', which takes --frame and --point"
     what = "too large to print or read" if limit == MAX_NODES else "too large to lay out as LaTeX"
-    raise UserError(f"{robot.path}: the Jacobian of frame {chain.frame_number(point)} in frame "
-                    f"{chain.frame_number(frame)} would take {rough_count(size * CHARACTERS_PER_NODE)} "
+    raise UserError(f"{robot.path}: the Jacobian of frame {robot.frame_number(point)} in frame "
+                    f"{robot.frame_number(frame)} would take {rough_count(size * CHARACTERS_PER_NODE)} "
                     f"characters, {what}; {advice}")
 
 
@@ -119,7 +120,7 @@ def zero_pose_size(chain) -> int:
 def refuse_long_entries(robot) -> None:
     """A UserError when a table entry would expand to too many terms for the commands that expand."""
     chain = robot.chain
-    fields = [(f"joint row {k} {key}", getattr(row, key)) for k, row in enumerate(chain.rows, 1)
+    fields = [(f"joint row {k} {key}", getattr(row, key)) for k, row in enumerate(chain.rows, 1)  # rows of the file
               for key in ("theta", "d", "a", "alpha")]
     fields += [(f"{side} step {k}", step.value) for side, steps in (("base", chain.base), ("tool", chain.tool))
                for k, step in enumerate(steps, 1)]

@@ -71,8 +71,8 @@ def columns(text: str) -> int:
 
 def frame_options(parser: argparse.ArgumentParser) -> None:
     """--from and --to: the two frames of a transform."""
-    parser.add_argument("--from", dest="start", metavar="F", help="start frame (default: base, else 0)")
-    parser.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else n)")
+    parser.add_argument("--from", dest="start", metavar="F", help="start frame (default: base, else the first)")
+    parser.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else the last)")
 
 
 def seconds(text: str) -> float:

@@ -40,8 +40,8 @@ def run(robot, args) -> str:
 
     from ..plot import draw, is_planar, picture_format, save
 
-    values = {**parse_assignments(robot.chain, args.constants, "--set"),
-              **parse_assignments(robot.chain, args.joints, "--q")}
+    values = {**parse_assignments(robot, args.constants, "--set"),
+              **parse_assignments(robot, args.joints, "--q")}
     stem = Path(args.robot).stem if args.robot != "-" else "robot"
     path = args.output or f"{stem}{'_ik' if args.ik is not None else ''}.png"
     picture_format(path)  # a wrong suffix is found before any drawing
@@ -50,9 +50,9 @@ def run(robot, args) -> str:
     if args.free:
         raise UserError("--free names the parameters of the inverse kinematics; add --ik")
     planar = False if args.three_d else None
-    figure = Figure(figsize=(6.4, 5.6) if (planar is None and is_planar(robot.chain, values)) else (7.2, 6.8))
+    figure = Figure(figsize=(6.4, 5.6) if (planar is None and is_planar(robot, values)) else (7.2, 6.8))
     FigureCanvasAgg(figure)
-    draw(robot.chain, values, ax=figure, planar=planar, show_frames=not args.no_frames)
+    draw(robot, values, ax=figure, planar=planar, show_frames=not args.no_frames)
     save(figure, path, inputs=[robot.path])
     return str(path)
 
@@ -66,8 +66,8 @@ def _branches(robot, args, values, path) -> str:
 
     figure = Figure()
     FigureCanvasAgg(figure)
-    constants = parse_assignments(robot.chain, args.constants, "--set")
-    draw_branches(robot.chain, values, parse_target(args.ik), constants, args.free, figure=figure,
+    constants = parse_assignments(robot, args.constants, "--set")
+    draw_branches(robot, values, parse_target(args.ik), constants, args.free, figure=figure,
                   show_frames=not args.no_frames)
     save(figure, path, inputs=[robot.path])
     return str(path)

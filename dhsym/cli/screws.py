@@ -23,14 +23,14 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str:
-    chain = robot.chain
+    chain = robot  # the printers and the screw axes read its rows, numbers and numbering
     refuse_long_entries(robot)
     refuse_screws_if_too_large(robot)
     screws = screw_axes(chain)
     variables = chain.joint_variables
     if args.format == "json":  # exact, with the decimals as the file wrote them, as every JSON output
         exact = render.exact_printer(chain).doprint
-        return json.dumps({"robot": chain.name, "frame": str(chain.first_frame),
+        return json.dumps({"robot": chain.name, "frame": str(chain.frames[0]),
                            "screws": {v.name: [exact(x) for x in screws.matrix[:, i]] for i, v in enumerate(variables)},
                            "home": [[exact(x) for x in screws.home.row(r)] for r in range(4)]}, indent=2,
                           ensure_ascii=False)
@@ -39,11 +39,12 @@ def run(robot, args) -> str:
         return (f"\\[\nS = {render.latex_matrix(screws.matrix, printer)}\n\\]\n\n"
                 f"\\[\nM = {render.latex_matrix(screws.home, printer)}\n\\]")
     printer = render.text_printer(chain, ascii=args.ascii)
-    title = f"{chain.name}: screw axes in frame {chain.first_frame} at q = 0  (from {chain.convention} DH)"
+    title = f"{chain.name}: screw axes in frame {chain.frames[0]} at q = 0  (from {chain.convention} DH)"
     lines = [title, "S_i = (ωx, ωy, ωz; vx, vy, vz)", ""]
     for i, variable in enumerate(variables):
         column = [printer.doprint(x) for x in screws.matrix[:, i]]
-        lines.append(f"S{i + 1} ({printer.doprint(variable)}) = ({', '.join(column[:3])}; {', '.join(column[3:])})")
+        joint = robot.joints[i]  # numbered as the table numbers its rows
+        lines.append(f"S{joint} ({printer.doprint(variable)}) = ({', '.join(column[:3])}; {', '.join(column[3:])})")
     lines += ["", "M =", render.text_matrix(screws.home, printer, args.width)]
     text = "\n".join(lines)
     return text.replace("ω", "w").replace("−", "-") if args.ascii else text

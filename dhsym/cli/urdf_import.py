@@ -42,12 +42,11 @@ def run(robot, args) -> str | None:
     if Path(args.file).suffix.lower() in (".yaml", ".yml"):
         loaded = load_robot_file(args.file)
         warn(loaded.warnings)
-        chain, notes = to_convention(loaded.chain, args.convention or loaded.chain.convention), None
+        robot = to_convention(loaded, args.convention or loaded.convention)
     else:
-        imported = import_urdf(args.file, args.base, args.tip, args.convention or "standard", args.variables)
-        warn(imported.warnings)
-        chain, notes = imported.chain, imported.notes
-    text = robot_yaml(chain, notes)
+        robot = import_urdf(args.file, args.base, args.tip, args.convention or "standard", args.variables).robot
+        warn(robot.warnings)
+    text = robot_yaml(robot)
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[args.file])

@@ -17,7 +17,6 @@ import sympy
 
 from ..errors import UserError
 from .estimate import contracted_size, span_size
-from .numbers import WrittenNumbers
 from .simplify import contract
 from .transforms import CONVENTIONS, Step, as_expr, inverse_transform, link_steps, product
 
@@ -69,25 +68,56 @@ class DHRow:
         return link_steps(convention, self.theta, self.d, self.a, self.alpha)
 
 
+class TransformTooLarge(UserError):
+    """A transform refused before it is built; `start`, `end` are the chain's frames (a Robot
+    renames them with its own numbers)."""
+
+    def __init__(self, start: Frame, end: Frame, size: int, message: str):
+        super().__init__(message)
+        self.start, self.end, self.size = start, end, size
+
+
+def too_large_message(start: Frame, end: Frame, size: int) -> str:
+    """What a too-large transform is told, with the frames as the user numbers them."""
+    return (f"{start}T{end} would have about {size:,} expression nodes, more than the {MAX_WORK_NODES:,} that "
+            "dhsym works out; ask for a shorter part of the chain")
+
+
+def frame_named(text, frames: list, number=lambda frame: frame) -> Frame:
+    """The frame of `frames` whose printed `number` is `text` ("3", " 03", "+3", "Tool"), else a
+    UserError listing the frames by their printed numbers.
+
+    >>> frame_named(" 04", [0, 1, 2], lambda f: f + 3), frame_named("Tool", ["base", 0, 1, "tool"])
+    (1, 'tool')
+    """
+    wanted = str(text).strip().lower()
+    if wanted.isascii() and wanted.lstrip("+").isdigit() and len(wanted) < 6:
+        wanted = str(int(wanted))
+    for frame in frames:
+        if wanted == str(number(frame)):
+            return frame
+    shown = str(text) if len(str(text)) <= 20 else str(text)[:20] + "..."
+    shown = shown if shown.lstrip("-").isascii() and shown.lstrip("-").isdigit() else repr(shown)
+    listed = [number(f) for f in frames]
+    listed = listed[:2] + ["..."] + listed[-2:] if len(listed) > 8 else listed
+    raise UserError(f"no frame {shown} in this robot; frames are {', '.join(map(str, listed))}")
+
+
 class Chain:
-    """A serial chain: DH rows in one convention, with optional fixed base and tool steps.
+    """A serial chain: DH rows in one convention, with optional fixed base and tool steps. Plain
+    math: what a robot file says about it (name, sample values, its frame numbering...) is kept
+    by the `dhsym.core.robot.Robot` that holds it.
 
     Frames are numbered 0..n; "base" (before the base steps) and "tool" (after the tool
-    steps) exist when the chain has such steps. `name`, `source` and `notes` say what robot
-    this is and where its table comes from, `file` the robot file it was read from; `sample`
-    gives numbers for its constants (pictures); `frame_offset` is the number frame 0 is shown
-    with (a robot file's `first_frame`); `numbers` says how its file wrote numbers (decimals or
-    fractions), for the printers.
+    steps) exist when the chain has such steps.
 
     >>> import sympy
-    >>> Chain([DHRow.revolute(sympy.Symbol("theta_1", real=True), a=1)], "standard", name="pendulum")
-    Chain('pendulum', standard DH, 1 joint: R)
+    >>> Chain([DHRow.revolute(sympy.Symbol("theta_1", real=True), a=1)], "standard")
+    Chain(standard DH, 1 joint: R)
     """
 
     def __init__(self, rows: Sequence[DHRow], convention: str, base: Sequence[Step] = (),
-                 tool: Sequence[Step] = (), simplifier: Simplifier = contract, *,
-                 name: str = "", source: str = "", notes: str = "", sample: dict | None = None,
-                 frame_offset: int = 0, file: str = "", numbers: WrittenNumbers | None = None):
+                 tool: Sequence[Step] = (), simplifier: Simplifier = contract):
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {convention!r}; use standard or modified")
         if not rows:
@@ -95,18 +125,11 @@ class Chain:
         self.rows, self.convention = tuple(rows), convention
         self.base, self.tool = tuple(base), tuple(tool)
         self.simplifier = simplifier
-        self.name, self.source, self.notes = name, source, notes
-        self.file = file  # the robot file it was read from, if any
-        self.sample = dict(sample or {})  # symbol -> exact number
-        self.numbers = numbers or WrittenNumbers()
-        # The number printed for frame 0: a wrist that a lecture numbers 3..6 has 3. Only what
-        # is shown (titles, --from/--to, pictures) is renumbered; transform() counts from 0.
-        self.frame_offset = frame_offset
         self._cache: dict = {}
 
     def __repr__(self) -> str:
         joints = "".join(row.joint for row in self.rows)
-        return f"Chain({self.name!r}, {self.convention} DH, {self.n} joint{'s' if self.n > 1 else ''}: {joints})"
+        return f"Chain({self.convention} DH, {self.n} joint{'s' if self.n > 1 else ''}: {joints})"
 
     def _repr_latex_(self) -> str:
         """Jupyter shows a chain as its DH table."""
@@ -141,34 +164,15 @@ class Chain:
     def last_frame(self) -> Frame:
         return self.frames[-1]
 
-    def frame_number(self, frame: Frame) -> Frame:
-        """The number a frame is shown with: frame 0 of a wrist numbered from 3 is 3.
-
-        >>> import sympy
-        >>> wrist = Chain([DHRow.revolute(sympy.Symbol("theta_4", real=True))], "standard", frame_offset=3)
-        >>> [wrist.frame_number(f) for f in wrist.frames], wrist.frame("4")
-        ([3, 4], 1)
-        """
-        return frame + self.frame_offset if isinstance(frame, int) else frame
-
     def frame(self, text: str) -> Frame:
-        """The frame a user names, by the number it is shown with: "3", "03" and "+3" are
-        frame 3; "base"/"tool" where present.
+        """The frame a user names: "3", "03" and "+3" are frame 3; "base"/"tool" where present.
+        (A `Robot` numbered from 3 names its frames with `chain_frame`.)
 
         >>> import sympy
         >>> Chain([DHRow.revolute(sympy.Symbol("q", real=True))], "standard").frame(" 01")
         1
         """
-        wanted = text.strip().lower()
-        if wanted.isascii() and wanted.lstrip("+").isdigit() and len(wanted) < 6:
-            wanted = str(int(wanted))
-        for frame in self.frames:
-            if wanted == str(self.frame_number(frame)):
-                return frame
-        shown = text if len(text) <= 20 else text[:20] + "..."
-        shown = shown if shown.lstrip("-").isascii() and shown.lstrip("-").isdigit() else repr(shown)
-        numbers = ", ".join(str(self.frame_number(f)) for f in self.frames)
-        raise UserError(f"no frame {shown} in this robot; frames are {numbers}")
+        return frame_named(text, self.frames)
 
     def link(self, i: int, raw: bool = False) -> sympy.Matrix:
         """The link matrix {i-1}T_i."""
@@ -225,9 +229,8 @@ class Chain:
         size = span_size(self, start, end, raw=True) if raw else contracted_size(steps)
         if size > MAX_WORK_NODES:
             frames = self.frames
-            shown = [self.frame_number(frames[self._bounds().index(p)]) for p in (start, end)]
-            raise UserError(f"{shown[0]}T{shown[1]} would have about {size:,} expression nodes, more than "
-                            f"the {MAX_WORK_NODES:,} that dhsym works out; ask for a shorter part of the chain")
+            first, last = (frames[self._bounds().index(p)] for p in (start, end))
+            raise TransformTooLarge(first, last, size, too_large_message(first, last, size))
         if raw:
             return self._raw_links(start, end)
         return self.simplifier(steps, frozenset(self.joint_variables))

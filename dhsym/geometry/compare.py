@@ -26,6 +26,7 @@ import sympy
 from ..checking.verify import algebraically_equal
 from ..core.chain import Chain
 from ..core.estimate import estimated_size
+from ..core.robot import Robot, as_chain, as_robot
 from ..core.size import expanded_terms, rough_count
 from ..core.transforms import product
 from ..errors import UserError
@@ -54,12 +55,14 @@ class Comparison:
         return self.message
 
 
-def compare(candidate: Chain, reference: Chain, seed: int = 0) -> Comparison:
-    """Compare `candidate` against `reference`, joint i with joint i."""
+def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -> Comparison:
+    """Compare `candidate` against `reference` (robots or chains), joint i with joint i; joints and
+    rows named as the candidate's table numbers them (a wrist's 4..6)."""
+    candidate, reference = as_robot(candidate), as_robot(reference)  # their sample values, names, numbering
     if candidate.n != reference.n:
         return Comparison(False, "joints", None, f"the tables have {candidate.n} and {reference.n} joints; "
                           "they cannot describe the same robot")
-    for number, (mine, theirs) in enumerate(zip(candidate.rows, reference.rows), 1):
+    for number, (mine, theirs) in enumerate(zip(candidate.rows, reference.rows), candidate.frame_offset + 1):
         if mine.joint != theirs.joint:
             return Comparison(False, "joints", number, f"joint {number} is {_type(mine.joint)} in yours but "
                               f"{_type(theirs.joint)} in the reference")
@@ -80,15 +83,15 @@ def compare(candidate: Chain, reference: Chain, seed: int = 0) -> Comparison:
             return Comparison(False, kind, None, f"the joints agree; only the {kind} frame differs" + note)
     shifts = _zero_shifts(candidate, reference, values, mine, theirs, configurations)
     if shifts:
-        first = min(shifts)
-        return Comparison(False, "offset", first + 1, _offset_message(candidate, shifts) + note)
+        first = min(shifts) + 1 + candidate.frame_offset  # as the table numbers it
+        return Comparison(False, "offset", first, _offset_message(candidate, shifts) + note)
     return _first_axis_difference(candidate, reference, values, note)
 
 
 def _algebra_agrees(candidate: Chain, reference: Chain) -> bool | str:
     """Whether base → tool is identical by algebra (joint i's variable renamed to the reference's,
     constants by name, sample values in exactly); a reason instead when it is too large to expand."""
-    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in (candidate, reference))
+    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in map(as_chain, (candidate, reference)))
     if size > ALGEBRA_MAX_NODES:
         return (f"base → tool has {rough_count(size)} expression nodes, more than the {ALGEBRA_MAX_NODES:,} "
                 "that are expanded")
@@ -216,21 +219,22 @@ def _least_squares(b: list, c: list, t: list) -> tuple[float, float]:
     return (bt * cc - ct * bc) / det, (bb * ct - bc * bt) / det
 
 
-def _offset_message(candidate: Chain, shifts: dict) -> str:
-    joints = sorted(shifts)
+def _offset_message(candidate: Robot, shifts: dict) -> str:
+    joints, shown = sorted(shifts), candidate.frame_offset  # joints and rows as the table numbers them
     exact = {k: _exact_shift(shifts[k], candidate.rows[k].joint) for k in joints}
     fixes = []
     for k in joints:
         row = candidate.rows[k]
         moving, written = ("θ", row.theta) if row.joint == "R" else ("d", row.d)
-        fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {k + 1} instead of {_show_exact(written)}")
+        fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {k + 1 + shown} instead of "
+                     f"{_show_exact(written)}")
     if len(joints) == 1:
-        return f"the same axes, but joint {joints[0] + 1}'s zero differs by {_show_exact(exact[joints[0]])}: write " \
-            + fixes[0]
-    numbers = " and ".join(str(k + 1) for k in joints)
+        return f"the same axes, but joint {joints[0] + 1 + shown}'s zero differs by " \
+            f"{_show_exact(exact[joints[0]])}: write " + fixes[0]
+    numbers = " and ".join(str(k + 1 + shown) for k in joints)
     if len(joints) == 2 and joints[1] == joints[0] + 1 and all(abs(exact[k]) == sympy.pi for k in joints):
         # Rz(π) Tx(a) Rx(α) Rz(π) = Tx(−a) Rx(−α): two half-turn zeros are one flipped twist
-        row = joints[0] + (1 if candidate.convention == "standard" else 2)
+        row = joints[0] + (1 if candidate.convention == "standard" else 2) + shown
         return (f"the same axes, but the zeros of joints {numbers} both differ by π: the sign of α (and of a) in "
                 f"row {row} is flipped; flip it back, or write " + " and ".join(fixes))
     amounts = " and ".join(_show_exact(exact[k]) for k in joints)
@@ -346,11 +350,11 @@ def _show_exact(value) -> str:
     return str(sympy.sympify(value)).replace("pi", "π").replace("*", "·")
 
 
-def _first_axis_difference(candidate: Chain, reference: Chain, values: dict, note: str) -> Comparison:
+def _first_axis_difference(candidate: Robot, reference: Robot, values: dict, note: str) -> Comparison:
     """The first joint whose axis (at the zero configuration) is not where the reference has it."""
     zero = [0.0] * candidate.n
     mine, theirs = _axes_at(candidate, values)(zero), _axes_at(reference, values)(zero)
-    for number, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), 1):
+    for number, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), candidate.frame_offset + 1):
         if _distance(u, u_ref) > 1e-7:
             reversed_axis = _distance(u, [-x for x in u_ref]) <= 1e-7
             what = ("is reversed: the joint moves the other way round" if reversed_axis else
@@ -368,12 +372,12 @@ def _first_axis_difference(candidate: Chain, reference: Chain, values: dict, not
                       "in more than one fixed frame" + note)
 
 
-def _where_to_look(chain: Chain, number: int, what: str) -> str:
+def _where_to_look(chain: Robot, number: int, what: str) -> str:
     """The row that places joint `number`'s axis: row number−1 in standard DH, its own row in modified."""
-    row = number - 1 if chain.convention == "standard" else number
-    if row == 0:
+    row = number - 1 if chain.convention == "standard" else number  # numbered as the table numbers them
+    if row == chain.frame_offset:
         return "check the base steps"
-    return f"check {what} in row {row}" + (" and the rows before it" if row > 1 else "")
+    return f"check {what} in row {row}" + (" and the rows before it" if row > chain.frame_offset + 1 else "")
 
 
 def _distance(a, b) -> float:

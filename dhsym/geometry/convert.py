@@ -10,22 +10,30 @@ Tx(an)Rx(αn) moved into the tool. The frames on the joint axes stay where they 
 >>> modified = to_convention(load("planar2r"), "modified")
 >>> [(r.alpha, r.a, r.d, r.theta) for r in modified.rows]
 [(0, 0, 0, theta_1), (0, a_1, 0, theta_2)]
->>> [str(s) for s in modified.tool]
-['Tx(a_2)']
+>>> [str(s) for s in modified.tool], modified.name
+(['Tx(a_2)'], 'Planar elbow manipulator (2R)')
 >>> [(r.theta, r.d, r.a, r.alpha) for r in to_convention(modified, "standard").rows]
 [(theta_1, 0, a_1, 0), (theta_2, 0, a_2, 0)]
+
+A `Robot` converts to a Robot that keeps everything its file said (name, source, notes, sample
+values, the number of its first frame — the frames on the joint axes are the same ones —, how
+it wrote its numbers, the file, the warnings); a plain `Chain` to a Chain.
 """
 from __future__ import annotations
 
 import sympy
 
 from ..core.chain import Chain, DHRow
+from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, Step
 from ..errors import UserError
 
 
-def to_convention(chain: Chain, convention: str) -> Chain:
+def to_convention(robot: Robot | Chain, convention: str) -> Robot | Chain:
     """The same robot in `convention` (a copy when it already is in it)."""
+    if isinstance(robot, Robot):
+        return robot.with_chain(to_convention(robot.chain, convention))
+    chain = robot
     if convention not in CONVENTIONS:
         raise UserError(f"unknown convention {convention!r}; use standard or modified")
     if convention == chain.convention:
@@ -74,9 +82,4 @@ def _nonzero(steps) -> list[Step]:
 
 
 def _copy(chain: Chain, convention: str, rows, base, tool) -> Chain:
-    """The converted chain keeps everything its file said: name, source, notes, sample values,
-    the number of its first frame (the frames on the joint axes are the same ones), how it
-    wrote its numbers, and the file."""
-    return Chain(rows, convention, base, tool, chain.simplifier, name=chain.name,
-                 source=chain.source, notes=chain.notes, sample=chain.sample, frame_offset=chain.frame_offset,
-                 file=chain.file, numbers=chain.numbers)
+    return Chain(rows, convention, base, tool, chain.simplifier)

@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 import sympy
 
 from ..core.chain import Chain, DHRow
+from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, Step
 from ..errors import UserError
 from .exact import cross, dot, is_zero_vector, tidy_vector, unit
@@ -79,12 +80,17 @@ class Assignment:
     tool: list
     roundings: list = field(default_factory=list)  # rounding.Rounding of each value rounded
 
-    def chain(self, **details) -> Chain:
-        """The chain; its notes end with a sentence on the values rounded, if any."""
+    def chain(self) -> Chain:
+        """The chain of the table found."""
         rows = [DHRow(joint, theta, d, a, alpha, variable)
                 for (joint, theta, d, a, alpha), variable in zip(self.rows, self.variables)]
+        return Chain(rows, self.convention, self.base, self.tool)
+
+    def robot(self, **details) -> Robot:
+        """The chain as a Robot with `details` (name, source, notes...); its notes end with a
+        sentence on the values rounded, if any."""
         details["notes"] = joined(details.get("notes", ""), rounding_note(self.roundings))
-        return Chain(rows, self.convention, self.base, self.tool, **details)
+        return Robot(self.chain(), **details)
 
 
 def default_variables(count: int) -> list[sympy.Symbol]:

@@ -22,6 +22,7 @@ dhsym.errors.UserError: --free theta_3: Planar ... has no joint variable theta_3
 """
 from __future__ import annotations
 
+from ..core.robot import as_robot
 from ..errors import UserError
 from .codegen import module_text
 from .evaluate import evaluate
@@ -32,6 +33,7 @@ POSE_DOF = 6  # a pose fixes six numbers: a closed form has finitely many branch
 
 def free_variables(chain, names, option: str = "--free") -> tuple:
     """The joint variables `names` (symbols or their names) in joint order, each checked."""
+    chain = as_robot(chain)  # its name, for the messages
     variables = {v.name: v for v in chain.joint_variables}
     chosen = []
     for name in names:
@@ -53,8 +55,10 @@ def free_variables(chain, names, option: str = "--free") -> tuple:
 
 
 def inverse_kinematics(chain, free=()) -> "InverseKinematics":
-    """The solution of `chain` with the joint variables `free` kept as parameters."""
-    return InverseKinematics(solve(chain, free=free_variables(chain, free)))
+    """The solution of `chain` (a Robot, or a plain Chain) with the joint variables `free` kept as
+    parameters; its messages and titles use the robot's name and frame numbers."""
+    robot = as_robot(chain)
+    return InverseKinematics(solve(robot, free=free_variables(robot, free)))
 
 
 class InverseKinematics:

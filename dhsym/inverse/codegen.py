@@ -9,9 +9,10 @@ values; a joint made a parameter with `--free` is a keyword argument without a d
 
 >>> import sympy
 >>> from dhsym.core.chain import Chain, DHRow
+>>> from dhsym.core.robot import Robot
 >>> from dhsym.inverse.solution import Branch, Solution
 >>> t, l = sympy.symbols("theta_1 l_1", real=True)
->>> arm = Chain([DHRow.revolute(t, a=l)], "standard", name="pendulum", sample={l: sympy.Rational(1, 2)})
+>>> arm = Robot(Chain([DHRow.revolute(t, a=l)], "standard"), name="pendulum", sample={l: sympy.Rational(1, 2)})
 >>> px, py = sympy.symbols("px py", real=True)
 >>> code = module_text(Solution(arm, "one angle", (t,), (), (Branch("only", ((t, sympy.atan2(py, px)),)),)))
 >>> namespace = {}

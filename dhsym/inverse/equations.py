@@ -19,6 +19,7 @@ from functools import cached_property
 
 import sympy
 
+from ..core.robot import as_chain, as_robot
 from ..core.simplify import collect_by_trig, contract
 
 ZERO = sympy.Matrix([0, 0, 0])
@@ -57,6 +58,7 @@ def squared_length(steps, variables, point=ZERO, point_length=0) -> sympy.Expr:
 def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None) -> tuple[sympy.Matrix, sympy.Expr]:
     """The point (known in frame `known_in`, the first by default) seen from `frame`, and its
     squared distance from that frame's origin."""
+    chain = as_chain(chain)
     known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
     inverse = chain.transform(frame, known_in)
@@ -70,6 +72,7 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
     """A point known in frame `known_in` (the first by default; the last for a wrist at the start)
     that sits at `local` in frame `holder`: its three coordinates and squared distance, seen from
     each frame between the two."""
+    robot, chain = as_robot(chain), as_chain(chain)  # frames are the chain's; the robot names them
     frames = chain.frames
     known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
@@ -82,7 +85,7 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
         there = chain_side[:3, :3] * local + chain_side[:3, 3]
         there = there.applyfunc(lambda e: collect_by_trig(sympy.expand(e), frozenset(variables)))
         there_length = squared_length(chain.steps(frame, holder), variables, local, local_length)
-        name = _frame_name(chain, frame)
+        name = _frame_name(robot, frame)
         for axis in range(3):
             equations.append(Equation(seen[axis], there[axis], "position",
                                       f"{'xyz'[axis]} of the point in frame {name}", f"point in {name}"))
@@ -94,6 +97,7 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
 def transform_equations(chain, target: sympy.Matrix, position: bool, start=None, end=None) -> list[Equation]:
     """(ⁱT_first) T (ʲT_last)⁻¹ = ⁱT_j for every pair of frames i ≤ j (between `start` and `end`):
     the rotation elements, and with `position` the position elements and the squared distance."""
+    robot, chain = as_robot(chain), as_chain(chain)  # frames are the chain's; the robot names them
     frames, first, last = chain.frames, chain.first_frame, chain.last_frame
     if end is not None:
         frames = frames[:frames.index(end) + 1]
@@ -108,7 +112,7 @@ def transform_equations(chain, target: sympy.Matrix, position: bool, start=None,
             after = chain.transform(last, j)
             seen = before * after
             chain_side = chain.transform(i, j)
-            where = f"{_frame_name(chain, i)}T{_frame_name(chain, j)}"
+            where = f"{_frame_name(robot, i)}T{_frame_name(robot, j)}"
             for r in range(3):
                 for c in range(4 if position else 3):
                     equations.append(Equation(tidy(seen[r, c]), chain_side[r, c], _kind(c, j == last),
@@ -134,5 +138,5 @@ def _kind(column: int, to_last: bool) -> str:
     return "orientation" if column < 3 else "position" if to_last else "mixed"
 
 
-def _frame_name(chain, frame) -> str:
-    return str(chain.frame_number(frame))
+def _frame_name(robot, frame) -> str:
+    return str(robot.frame_number(frame))

@@ -18,6 +18,7 @@ from itertools import product
 
 import sympy
 
+from ..core.robot import as_robot
 from ..errors import UserError
 from ..velocity.determinant import determinant
 from .branches import branch_name
@@ -31,15 +32,19 @@ from .wrist import centre, centre_at_start
 
 def solve(chain, free=()) -> Solution:
     """The closed-form solution of `chain` for the target that `dhsym fk` prints; `free` names
-    joint variables (symbols or their names) that are given parameters instead of unknowns."""
+    joint variables (symbols or their names) that are given parameters instead of unknowns.
+    `chain` is a Robot (or a plain Chain): the math runs on its chain (frames 0..n), the robot
+    names the frames and gives the sample values, and is the solution's `chain`."""
+    robot = as_robot(chain)
+    chain = robot.chain
     free = free_variables(chain, free)
-    structure = analyse(chain, free)
+    structure = analyse(robot, free)
     unknowns = [chain.joint_variables[j - 1] for j in structure.unknowns]
     prismatic = {v for v, row in zip(chain.joint_variables, chain.rows) if row.joint == "P"} & set(unknowns)
     target, fixed = _target(chain, len(unknowns))
     derivation = Derivation()
     constants = frozenset(chain.symbols - set(chain.joint_variables))
-    numbers = witness(chain)
+    numbers = witness(robot)
     definitions: list = []
     wrist_joints = []
     if structure.wrist and len(unknowns) > 3:
@@ -52,11 +57,12 @@ def solve(chain, free=()) -> Solution:
             numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
             point = sympy.Matrix(names)
         arm = [v for v in unknowns if v not in wrist_joints]
-        scan(point_equations(chain, point, sum(x ** 2 for x in point), local, holder), arm, prismatic, derivation,
+        scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder), arm, prismatic, derivation,
              constants=constants, witness=numbers)
-        scan(transform_equations(chain, target, position=False, start=holder), wrist_joints, prismatic, derivation,
+        scan(transform_equations(robot, target, position=False, start=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
-        method = (f"kinematic decoupling: the axes of joints {_joints(structure.wrist)} meet at the wrist centre; "
+        method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.wrist)} meet at the wrist "
+                  "centre; "
                   f"the position of the wrist centre gives {_names(arm)}, its orientation {_names(wrist_joints)}")
     elif structure.first_wrist:
         wrist_joints = [chain.joint_variables[j - 1] for j in structure.first_wrist]
@@ -68,21 +74,21 @@ def solve(chain, free=()) -> Solution:
         numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
         point = sympy.Matrix(names)
         arm = [v for v in unknowns if v not in wrist_joints]
-        scan(point_equations(chain, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
+        scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
              arm, prismatic, derivation, constants=constants, witness=numbers)
-        scan(transform_equations(chain, target, position=False, end=holder), wrist_joints, prismatic, derivation,
+        scan(transform_equations(robot, target, position=False, end=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
-        method = (f"kinematic decoupling: the axes of joints {_joints(structure.first_wrist)} meet at a point fixed "
-                  f"in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
+        method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.first_wrist)} meet at a "
+                  "point fixed in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
                   f"{_names(wrist_joints)}")
     elif structure.spherical:
-        scan(transform_equations(chain, target, position=False), unknowns, prismatic, derivation,
+        scan(transform_equations(robot, target, position=False), unknowns, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
         wrist_joints = unknowns
-        method = f"a spherical wrist: the axes of joints {_joints(structure.unknowns)} meet in a point; " \
+        method = f"a spherical wrist: the axes of joints {_joints(robot, structure.unknowns)} meet in a point; " \
                  "the orientation gives the Euler angles"
     else:
-        scan(transform_equations(chain, target, position=True), unknowns, prismatic, derivation,
+        scan(transform_equations(robot, target, position=True), unknowns, prismatic, derivation,
              constants=constants, witness=numbers)
         method = "the sub-problems of the equations (Hawkins's way for three parallel axes)" \
             if structure.parallel and len(unknowns) == 6 else "position problem by sub-problems"
@@ -98,9 +104,9 @@ def solve(chain, free=()) -> Solution:
                           "and the other elements of the target must be consistent with them"
                           + (f" (in every pose of this arm {fixed})" if fixed else ""))
     if structure.wrist and len(unknowns) == 6 and chain.n == 6:
-        tie_to_jacobian(chain, derivation)
+        tie_to_jacobian(robot, derivation)
     branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)
-    return Solution(chain, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
+    return Solution(robot, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
                     tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),
                     tuple(derivation.steps))
 
@@ -146,8 +152,10 @@ def free_variables(chain, free) -> tuple[sympy.Symbol, ...]:
     return tuple(dict.fromkeys(result))
 
 
-def _joints(numbers) -> str:
-    return ", ".join(map(str, numbers[:-1])) + " and " + str(numbers[-1])
+def _joints(robot, numbers) -> str:
+    """Joints 1..n as the robot numbers them (a wrist's 4..6)."""
+    shown = [str(number + robot.frame_offset) for number in numbers]
+    return ", ".join(shown[:-1]) + " and " + shown[-1]
 
 
 def _names(variables) -> str:

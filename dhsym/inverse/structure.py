@@ -23,6 +23,7 @@ import math
 import random
 from dataclasses import dataclass
 
+from ..core.robot import as_chain, as_robot
 from ..errors import UserError
 from ..velocity.geometry import axis_line, cross, dot, minus, poses, sample_values
 
@@ -45,7 +46,8 @@ class Structure:
 
 
 def analyse(chain, free=()) -> Structure:
-    """The structure of `chain` with the joint variables in `free` made parameters."""
+    """The structure of `chain` (a Robot or a Chain) with the joint variables in `free` made parameters."""
+    sample, chain = as_robot(chain).sample, as_chain(chain)
     unknowns = tuple(j for j, v in enumerate(chain.joint_variables, start=1) if v not in set(free))
     if len(unknowns) > 6:
         extra = len(unknowns) - 6
@@ -56,7 +58,7 @@ def analyse(chain, free=()) -> Structure:
         raise UserError("every joint variable is --free: nothing is left to solve for")
     rng = random.Random(11)
     lines = [{j: axis_line(chain, j, pose) for j in unknowns}
-             for pose in (poses(chain, sample_values(chain, rng)) for _ in range(TRIALS))]
+             for pose in (poses(chain, sample_values(chain, rng, sample)) for _ in range(TRIALS))]
     revolute = {j for j in unknowns if chain.rows[j - 1].joint == "R"}
     triples = [unknowns[k:k + 3] for k in range(len(unknowns) - 2)]
     meeting = [t for t in triples if set(t) <= revolute and all(_meet(config, t) for config in lines)]

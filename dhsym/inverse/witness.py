@@ -13,6 +13,7 @@ import random
 
 import sympy
 
+from ..core.robot import as_chain, as_robot
 from ..velocity.geometry import poses
 from .solution import target_symbols
 
@@ -20,13 +21,15 @@ SEED = 20240516
 
 
 def witness(chain, seed: int = SEED) -> dict:
-    """Symbol -> Float for every joint variable, constant and target element at a random pose."""
+    """Symbol -> Float for every joint variable, constant and target element at a random pose;
+    constants from the robot's sample values where it has them."""
+    sample, chain = as_robot(chain).sample, as_chain(chain)
     rng = random.Random(seed)
     values = {}
     for variable, row in zip(chain.joint_variables, chain.rows):
         values[variable] = rng.uniform(-math.pi, math.pi) if row.joint == "R" else rng.uniform(0.5, 1.5)
     for symbol in sorted(chain.symbols - set(chain.joint_variables), key=str):
-        values[symbol] = float(chain.sample[symbol]) if symbol in chain.sample else rng.uniform(0.5, 1.5)
+        values[symbol] = float(sample[symbol]) if symbol in sample else rng.uniform(0.5, 1.5)
     rotation, origin = poses(chain, values)[chain.last_frame]
     elements = [x for r in range(3) for x in (*rotation[r], origin[r])]
     values.update(zip(target_symbols(), elements))

@@ -15,12 +15,10 @@ and the notes say so (see dhsym.geometry.rounding).
 ...   - {joint: R, point: [l_1, 0, 0], direction: [0, 0, 1]}
 ... tool: [{Tx: l_1 + l_2}]
 ... ''', "arm.yaml")
->>> [(row.theta, row.d, row.a, row.alpha) for row in robot.chain.rows]
+>>> [(row.theta, row.d, row.a, row.alpha) for row in robot.rows]
 [(q_1, 0, l_1, 0), (q_2, 0, l_2, 0)]
 """
 from __future__ import annotations
-
-from pathlib import Path
 
 import sympy
 
@@ -30,6 +28,7 @@ from ..errors import UserError
 from ..geometry.exact import is_zero_vector, unit
 from ..geometry.frames import assign_frames
 from ..geometry.lines import JointAxis
+from ..geometry.rounding import rounding_note
 from .expr import Reading, parse_expression, real_symbol
 
 AXIS_KEYS = ("joint", "point", "direction", "var")
@@ -37,7 +36,8 @@ _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 
 
 def axes_chain(reader, top: dict, convention: str):
-    """The chain of an `axes:` robot file; `reader` is the robot-file reader (it places errors)."""
+    """The chain of an `axes:` robot file and a sentence on the values rounded (else ""); `reader`
+    is the robot-file reader (it places errors)."""
     for key in ("joints", "base"):
         if key in top:
             raise UserError(f"{key}: cannot be used with axes: (the axes are given in the base frame)",
@@ -45,14 +45,12 @@ def axes_chain(reader, top: dict, convention: str):
     if "tool" not in top:
         raise UserError("axes: needs tool: too, the tool frame at the zero configuration as steps from the base",
                         reader.where(top["axes"][0]))
-    from .robotfile import MAX_JOINTS  # here, not above: robotfile imports this module
-
     axes_node = top["axes"][1]
     nodes = reader.sequence(axes_node, "axes")
     if not nodes:
         raise UserError("axes is empty; a robot needs at least one joint", reader.where(axes_node))
-    if len(nodes) > MAX_JOINTS:
-        raise UserError(f"{len(nodes)} axes; dhsym handles at most {MAX_JOINTS}", reader.where(axes_node))
+    if len(nodes) > reader.max_joints:
+        raise UserError(f"{len(nodes)} axes; dhsym handles at most {reader.max_joints}", reader.where(axes_node))
     axes, variables, points = [], [], []
     for number, node in enumerate(nodes, 1):
         axis, variable, point_node = _axis(reader, node, number)
@@ -75,9 +73,7 @@ def axes_chain(reader, top: dict, convention: str):
         raise UserError(error.message, error.where or reader.where(axes_node)) from None
     places = [len(decimal_text(r.value).partition(".")[2]) for r in assignment.roundings if r.value.is_Rational]
     reader.reading.absorb(Reading(places=max(places, default=0)))  # the table shows the rounded values as decimals
-    return assignment.chain(name=reader.optional_text(top, "name", Path(reader.filename).stem),
-                            source=reader.optional_text(top, "source", ""),
-                            notes=reader.optional_text(top, "notes", ""))
+    return assignment.chain(), rounding_note(assignment.roundings)
 
 
 def _axis(reader, node, number: int):

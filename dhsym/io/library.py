@@ -10,9 +10,9 @@ from __future__ import annotations
 import difflib
 from pathlib import Path
 
-from ..core.chain import Chain
+from ..core.robot import Robot
 from ..errors import UserError
-from .robotfile import RobotFile, load_robot_file
+from .robotfile import load_robot_file
 
 ROBOTS_DIR = Path(__file__).parent.parent / "robots"
 
@@ -26,17 +26,20 @@ def builtin_names() -> list[str]:
     return sorted(p.stem for p in ROBOTS_DIR.glob("*.yaml"))
 
 
-def load(name_or_path: str) -> Chain:
-    """The chain of a built-in robot by name, or of a robot file by path.
+def load(name_or_path: str) -> Robot:
+    """A built-in robot by name, or a robot file by path, with the warnings of its reading
+    (`robot.warnings`).
 
     >>> load("planar2r")
-    Chain('Planar elbow manipulator (2R)', standard DH, 2 joints: RR)
+    Robot('Planar elbow manipulator (2R)', standard DH, 2 joints: RR, frames 0..2)
+    >>> load("spherical_wrist").frames
+    [3, 4, 5, 6]
     """
-    return read(name_or_path).chain
+    return read(name_or_path)
 
 
-def read(name_or_path: str) -> RobotFile:
-    """A built-in robot by name, or a robot file by path, with the warnings of its reading.
+def read(name_or_path: str) -> Robot:
+    """What `load` does (the command line's name for it).
 
     >>> read("puma")  # doctest: +ELLIPSIS
     Traceback (most recent call last):

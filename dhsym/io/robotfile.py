@@ -1,4 +1,4 @@
-"""Robot files: YAML in, a validated `RobotFile` out, with every mistake placed at FILE:LINE:COL.
+"""Robot files: YAML in, a validated `Robot` out, with every mistake placed at FILE:LINE:COL.
 
 The YAML comes from dhsym.yamlsafe as nodes that keep their line and column, and is read
 by hand: no Python object is ever built from a tag. Limits: 24 joints, 200 characters per
@@ -11,23 +11,25 @@ expression (see dhsym.expr) and those of dhsym.yamlsafe (1 MiB, nesting 10, 20,0
 ...   - {joint: R, alpha: 0, a: l_1, d: 0, theta: theta_1}
 ...   - {joint: R, alpha: 0, a: l_2, d: 0, theta: theta_2}
 ... ''', "arm.yaml")
->>> robot.chain.fk()[0, 3]
-l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2)
+>>> robot.fk()[0, 3], robot.name, robot.file
+(l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2), 'two-link arm', 'arm.yaml')
 >>> load_robot_text("convention: standard\\njoints: [{joint: R, alpah: 0}]", "arm.yaml")
 Traceback (most recent call last):
 dhsym.errors.UserError: arm.yaml:2:21: unknown key 'alpah' in joint row 1; did you mean 'alpha'?
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import sympy
 import yaml
 
 from ..core.chain import Chain, DHRow
+from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
+from ..geometry.rounding import joined
 from .expr import Reading, parse_expression
 from .suspicious import misplaced_variable, misspelt_pi, near_multiple_of_pi, printed_key, printed_text
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
@@ -40,22 +42,13 @@ _DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
 LENGTHS = ("a", "d", "Tx", "Ty", "Tz")  # fields that hold distances; the others hold angles
 
 
-@dataclass
-class RobotFile:
-    """A robot file read: its chain (with name, source, notes and sample values), where it
-    came from, and the warnings its reading raised."""
-
-    chain: Chain
-    path: str = "<robot>"
-    warnings: list = field(default_factory=list)  # strings "FILE:LINE:COL: message"
-
-
-def load_robot_file(path: str | Path) -> RobotFile:
+def load_robot_file(path: str | Path) -> Robot:
     """Read a robot file from disk, refusing huge or non-UTF-8 files."""
     return load_robot_text(read_text_file(path), str(path))
 
 
-def load_robot_text(text: str, filename: str = "<robot>") -> RobotFile:
+def load_robot_text(text: str, filename: str = "<robot>") -> Robot:
+    """The robot of a robot file's text; `filename` places errors and becomes `robot.file`."""
     return _Reader(filename).robot(compose(text, filename))
 
 
@@ -70,7 +63,9 @@ def _suggestion(key: str, allowed) -> str:
 
 
 class _Reader:
-    """Walks the composed YAML nodes and builds the RobotFile, checking as it goes."""
+    """Walks the composed YAML nodes and builds the Robot, checking as it goes."""
+
+    max_joints = MAX_JOINTS  # the axes: form (io/axesfile.py) reads its limit here
 
     def __init__(self, filename: str):
         self.filename = filename
@@ -169,7 +164,7 @@ class _Reader:
             raise UserError(f"{what} must be a list, not {_kind(node)}", self.where(node))
         return node.value
 
-    def robot(self, root: yaml.Node) -> RobotFile:
+    def robot(self, root: yaml.Node) -> Robot:
         if not isinstance(root, yaml.MappingNode):
             raise UserError(f"a robot file must be a mapping of keys (convention, joints, ...) to values, "
                             f"not {_kind(root)}", self.where(root))
@@ -183,20 +178,21 @@ class _Reader:
         if convention not in CONVENTIONS:
             raise UserError(f"unknown convention {self.text(convention_node, 'convention')!r}; use standard or "
                             f"modified", self.where(convention_node))
+        notes = self.optional_text(top, "notes", "")
         if "axes" in top:  # the geometric form (io/axesfile.py): joint axes instead of DH rows
             from .axesfile import axes_chain  # the geometry of frames, only for a file that needs it
 
-            chain = axes_chain(self, top, convention)
+            chain, rounded = axes_chain(self, top, convention)
+            notes = joined(notes, rounded)
         else:
             chain = self.dh_chain(top, convention)
-        chain.file = self.filename
         self.check_names()
-        chain.numbers = self.reading.numbers  # how the table's fields wrote numbers, for the printers
-        if "sample" in top:
-            chain.sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols})
-        if "first_frame" in top:
-            chain.frame_offset = self.first_frame(top["first_frame"][1])
-        return RobotFile(chain, path=self.filename, warnings=self.warnings)
+        sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols}) if "sample" in top else {}
+        first_frame = self.first_frame(top["first_frame"][1]) if "first_frame" in top else 0
+        return Robot(chain, name=self.optional_text(top, "name", Path(self.filename).stem),
+                     source=self.optional_text(top, "source", ""), notes=notes, sample=sample,
+                     numbers=self.reading.numbers,  # how the table's fields wrote numbers, for the printers
+                     frame_offset=first_frame, file=self.filename, warnings=self.warnings)
 
     def dh_chain(self, top: dict, convention: str) -> Chain:
         """The chain of a file that gives DH rows under `joints:`."""
@@ -212,8 +208,7 @@ class _Reader:
         variables = {row.variable for row in dh_rows}
         base = self.steps(top["base"][1], "base", variables) if "base" in top else []
         tool = self.steps(top["tool"][1], "tool", variables) if "tool" in top else []
-        return Chain(dh_rows, convention, base, tool, name=self.optional_text(top, "name", Path(self.filename).stem),
-                     source=self.optional_text(top, "source", ""), notes=self.optional_text(top, "notes", ""))
+        return Chain(dh_rows, convention, base, tool)
 
     def row(self, node: yaml.Node, number: int) -> "_Row":
         """One joint row, checked field by field."""

@@ -1,4 +1,5 @@
-"""Writing a chain as a robot file that dhsym reads back to the same chain.
+"""Writing a robot as a robot file that dhsym reads back to the same robot: the same rows, base,
+tool, name, source, notes, sample values and first frame, its numbers written as its file wrote them.
 
 Numbers are written as decimals where they end (17/40 → 0.425), else as fractions; π and
 square roots by name; a denominator the chain's file wrote as a fraction stays one (l_1/2).
@@ -31,6 +32,7 @@ import sympy
 
 from ..core.chain import Chain, DHRow
 from ..core.numbers import WrittenNumbers
+from ..core.robot import Robot, as_robot
 from ..core.transforms import Step
 from ..errors import UserError
 from ..geometry.rounding import Rounding, dh_label, fit, joined, rounding_note, written_text
@@ -73,8 +75,8 @@ def _escape(character: str) -> str:
 class _Values:
     """Each value's text, checked to read back; what had to be rounded, for the notes."""
 
-    def __init__(self, chain: Chain):
-        self.numbers = chain.numbers
+    def __init__(self, robot: Robot):
+        self.numbers = robot.numbers
         self.roundings: list[Rounding] = []
 
     def written(self, value, label: str, place: str, length: bool = False):
@@ -118,15 +120,18 @@ class _Values:
         return f"{shown} does not read back as the same value"
 
 
-def robot_yaml(chain, notes: str | None = None) -> str:
-    """The robot file of `chain`; it reads back to the same rows, base, tool, sample and first
-    frame. `notes` goes before the chain's own notes, then a sentence on any value rounded."""
+def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
+    """The robot file of `robot` (a Robot, or a plain Chain); it reads back to the same rows,
+    base, tool, name, source, sample and first frame. `notes` goes before the robot's own notes,
+    then a sentence on any value rounded."""
+    robot = as_robot(robot)
+    chain = robot.chain
     if chain.n > MAX_JOINTS:
         raise UserError(f"{chain.n} joints; a robot file holds at most {MAX_JOINTS}, so none was written")
-    values = _Values(chain)
-    lines = [f"name: {_string(chain.name)}", f"source: {_string(chain.source)}", f"convention: {chain.convention}"]
-    if chain.frame_offset:
-        lines.append(f"first_frame: {chain.frame_offset}")
+    values = _Values(robot)
+    lines = [f"name: {_string(robot.name)}", f"source: {_string(robot.source)}", f"convention: {chain.convention}"]
+    if robot.frame_offset:
+        lines.append(f"first_frame: {robot.frame_offset}")
     lines.append("joints:")
     rows = []
     for number, row in enumerate(chain.rows, 1):
@@ -135,7 +140,7 @@ def robot_yaml(chain, notes: str | None = None) -> str:
         for key in COLUMNS[chain.convention]:
             value = getattr(row, key)
             constant = value - row.variable if key == moving else value
-            label = dh_label(chain.convention, number, key, chain.frame_offset, moving=key == moving)
+            label = dh_label(chain.convention, number, key, robot.frame_offset, moving=key == moving)
             constant, _ = values.written(constant, label, f"joint row {number} {key}", key in ("a", "d"))
             written[key] = constant + row.variable if key == moving else constant
             text = _moving_text(row.variable, constant, values.numbers) if key == moving else None
@@ -155,11 +160,12 @@ def robot_yaml(chain, notes: str | None = None) -> str:
         if steps[key]:
             texts = (f"{{{s.kind}: {_yaml_value(expression_text(s.value, values.numbers))}}}" for s in steps[key])
             lines.append(f"{key}: [" + ", ".join(texts) + "]")
-    if chain.sample:
-        texts = (f"{s.name}: {_yaml_value(values.written(v, s.name, f'sample {s.name}')[1])}"
-                 for s, v in sorted(chain.sample.items(), key=lambda i: i[0].name))
-        lines.append("sample: {" + ", ".join(texts) + "}")
-    all_notes = joined(notes or "", chain.notes, rounding_note(values.roundings))
+    sample = {}
+    if robot.sample:
+        for s, v in sorted(robot.sample.items(), key=lambda i: i[0].name):
+            sample[s] = values.written(v, s.name, f"sample {s.name}")
+        lines.append("sample: {" + ", ".join(f"{s.name}: {_yaml_value(text)}" for s, (_, text) in sample.items()) + "}")
+    all_notes = joined(notes or "", robot.notes, rounding_note(values.roundings))
     if all_notes:
         lines.append(f"notes: {_string(all_notes)}")
     text = "\n".join(lines) + "\n"
@@ -167,23 +173,25 @@ def robot_yaml(chain, notes: str | None = None) -> str:
     if size > MAX_FILE_BYTES:
         raise UserError(f"the robot file would be {size} bytes; robot files are limited to {MAX_FILE_BYTES >> 20} "
                         "MiB, so none was written")
-    _check_reads_back(text, Chain(rows, chain.convention, steps["base"], steps["tool"],
-                                  frame_offset=chain.frame_offset, name=chain.name))
+    written = robot.replace(chain=Chain(rows, chain.convention, steps["base"], steps["tool"]), notes=all_notes,
+                            sample={s: value for s, (value, _) in sample.items()})
+    _check_reads_back(text, written)
     return text
 
 
-def _check_reads_back(text: str, chain: Chain) -> None:
-    """The written file must give the chain back exactly; anything else is a bug in this writer,
+def _check_reads_back(text: str, robot: Robot) -> None:
+    """The written file must give the robot back exactly; anything else is a bug in this writer,
     reported as an error (nothing is written) rather than a crash."""
     try:
-        again = load_robot_text(text, "<written>").chain
+        again = load_robot_text(text, "<written>")
     except UserError as error:
         raise UserError(f"the robot file dhsym would write does not read back ({error}); nothing was written") \
             from None
     same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.rows] == \
-        [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in chain.rows]
-    if not (same and list(again.base) == list(chain.base) and list(again.tool) == list(chain.tool)
-            and again.frame_offset == chain.frame_offset and again.name == chain.name):
+        [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in robot.rows]
+    same_details = [getattr(again, key) for key in ("name", "source", "notes", "sample", "frame_offset")] == \
+        [getattr(robot, key) for key in ("name", "source", "notes", "sample", "frame_offset")]
+    if not (same and same_details and list(again.base) == list(robot.base) and list(again.tool) == list(robot.tool)):
         raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")
 
 

@@ -2,9 +2,9 @@
 
 >>> from pathlib import Path
 >>> imported = import_urdf(Path(__file__).parents[2] / "tests" / "data" / "panda.urdf", convention="modified")
->>> imported.chain.n, imported.chain.convention, imported.chain.rows[0].d
+>>> imported.robot.n, imported.robot.convention, imported.robot.rows[0].d
 (7, 'modified', 333/1000)
->>> imported.notes[:61]
+>>> imported.robot.notes[:61]
 'Derived by dhsym import; joint variables: q_1 = panda_joint1,'
 
 Joint i is the i-th revolute, continuous or prismatic joint from base to tip; its variable
@@ -19,6 +19,7 @@ from pathlib import Path
 
 import sympy
 
+from ..core.robot import Robot
 from ..errors import UserError
 from ..geometry.frames import assign_frames
 from .expr import parse_expression
@@ -26,14 +27,21 @@ from .expr import parse_expression
 _NAME_START = re.compile(r"^[A-Za-z]")
 
 
-@dataclass
+@dataclass(frozen=True)
 class Imported:
-    """What an import gives: the chain, the notes for its robot file, and the warnings."""
+    """What an import gives: the robot (its notes name the URDF joint of each variable, its
+    warnings are the URDF reader's) and the URDF joint of each row."""
 
-    chain: object
-    notes: str
-    warnings: list = field(default_factory=list)
-    joint_names: list = field(default_factory=list)  # the URDF joint of each row
+    robot: Robot
+    joint_names: list = field(default_factory=list)
+
+    @property
+    def chain(self):
+        return self.robot.chain
+
+    @property
+    def warnings(self) -> tuple:
+        return self.robot.warnings
 
 
 def import_urdf(path: str | Path, base: str | None = None, tip: str | None = None, convention: str = "standard",
@@ -50,11 +58,12 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     if variables not in ("q", "urdf"):
         raise UserError(f"unknown variable style {variables!r}; use q or urdf")
     symbols = joint_symbols(urdf.joint_names, variables)
-    chain = assign_frames(urdf.axes, urdf.tool, convention, symbols).chain(
-        name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}")
     notes = "Derived by dhsym import; joint variables: " + ", ".join(
         f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
-    return Imported(chain, notes, urdf.warnings, urdf.joint_names)
+    robot = assign_frames(urdf.axes, urdf.tool, convention, symbols).robot(
+        name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}", notes=notes,
+        warnings=urdf.warnings)
+    return Imported(robot, list(urdf.joint_names))
 
 
 def joint_symbols(names: list[str], style: str) -> list[sympy.Symbol]:

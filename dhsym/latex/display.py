@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from ..core.robot import as_robot
 from ..printing.printers import LatexPrinter, chain_settings
 from ..printing.render import latex_matrix, latex_printer, latex_table_cells, transform_title
 from .layout import PAGES, Block, display, matrix_height, matrix_items, stacked
@@ -73,9 +74,9 @@ def matrix(chain, value, name: str = "", legend: bool = True, page: str = "noteb
 
 
 def transform(chain, i, j, raw: bool = False, page: str = "notebook") -> Latex:
-    """{i}T_{j} of a chain, simplified unless `raw`; frames numbered as the chain shows them."""
-    title = transform_title(chain.frame_number(i), chain.frame_number(j), "latex")
-    return matrix(chain, chain.transform(i, j, raw=raw), title, page=page)
+    """{i}T_{j} of a robot (or a chain), simplified unless `raw`; frames numbered as the robot prints them."""
+    title = transform_title(i, j, "latex")
+    return matrix(chain, as_robot(chain).transform(i, j, raw=raw), title, page=page)
 
 
 def expression(chain, value, name: str = "") -> Latex:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..core.robot import as_robot
 from ..errors import UserError
 from ..io.library import ROBOTS_DIR
 from ..printing.printers import LatexPrinter, chain_settings
@@ -34,11 +35,14 @@ def document(chain, kind: str = "slides", steps: bool = False, start=None, end=N
              ik: bool = False, free=()) -> str:
     """The LaTeX text of a document of `kind` for `chain`, about the transform from frame
     `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics,
-    `ik` the closed-form inverse kinematics (with the joint variables `free` as parameters)."""
+    `ik` the closed-form inverse kinematics (with the joint variables `free` as parameters).
+    Frames are numbered as the robot prints them."""
+    chain = as_robot(chain)
     start = _check_frame(chain, chain.first_frame if start is None else start, "--from")
     end = _check_frame(chain, chain.last_frame if end is None else end, "--to")
     if start == end:
-        raise UserError(f"--from and --to name the same frame ({start}); choose two different frames")
+        raise UserError(f"--from and --to name the same frame ({chain.frame_number(start)}); choose two different "
+                        "frames")
     page = PAGES[kind]
     content = sections(chain, start, end, steps, page, LatexPrinter(chain_settings(chain)))
     if jacobian:
@@ -48,11 +52,10 @@ def document(chain, kind: str = "slides", steps: bool = False, start=None, end=N
     return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
 
 
-def _check_frame(chain, frame, option: str):
-    if frame in chain.frames:
-        return frame
+def _check_frame(robot, frame, option: str):
+    """The chain's own frame (0..n) for a frame as printed."""
     try:
-        return chain.frame(str(frame))
+        return robot.chain_frame(frame)
     except UserError as error:
         raise UserError(f"{option}: {error.message}") from None
 

@@ -18,6 +18,7 @@ c_{1} &= \cos{\theta_{1}} & s_{1} &= \sin{\theta_{1}}
 """
 from __future__ import annotations
 
+from ..core.robot import as_robot
 from ..printing.printers import LatexPrinter, chain_settings
 from ..printing.render import latex_printer, latex_table_cells, transform_title
 from .layout import PAGES, Page, flat, matrix_items
@@ -34,7 +35,7 @@ def results_latex(chain, results, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) 
     parts = []
     for i, j, matrix in results:
         cells = [[printer.doprint(matrix[r, c]) for c in range(4)] for r in range(4)]
-        title = transform_title(chain.frame_number(i), chain.frame_number(j), "latex")
+        title = transform_title(as_robot(chain).frame_number(i), as_robot(chain).frame_number(j), "latex")
         parts.append("\n".join(block.latex for block in flat(matrix_items(title, cells, page))))
     legend = flat(legend_items(printer, page))
     return "\n\n".join(parts + (["\n".join(block.latex for block in legend)] if legend else []))

@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from itertools import pairwise
 
+from ..core.robot import as_robot
 from ..printing.printers import LatexPrinter, chain_settings
 from ..printing.render import latex_table_cells, transform_title
 from .layout import (
@@ -51,15 +52,17 @@ class Section:
 
 
 def sections(chain, start, end, steps: bool, page: Page, printer: LatexPrinter) -> list[Section]:
-    """Everything but the title, in order: table, notation, links, steps, result."""
-    path = _frame_path(chain.frames, start, end)
+    """Everything but the title, in order: table, notation, links, steps, result; `start`, `end`
+    are the chain's own frames (0..n), titled with the robot's numbers."""
+    robot = as_robot(chain)
+    path = _frame_path(robot.chain.frames, start, end)
 
     def cells(i, j):
-        matrix = chain.transform(i, j)
+        matrix = robot.chain.transform(i, j)
         return [[printer.doprint(matrix[r, c]) for c in range(4)] for r in range(4)]
 
     def title(i, j):
-        return transform_title(chain.frame_number(i), chain.frame_number(j), "latex")
+        return transform_title(robot.frame_number(i), robot.frame_number(j), "latex")
 
     links = []
     for i, j in pairwise(path):
@@ -96,7 +99,7 @@ def _table_section(chain, page: Page) -> Section:
     for which, steps, i, j in (("base", chain.base, "base", 0), ("tool", chain.tool, chain.n, "tool")):
         if steps:
             factors = [f"{s.kind[0]}_{{{s.kind[1]}}}({printer.doprint(s.value)})" for s in steps]
-            shown = transform_title(chain.frame_number(i), chain.frame_number(j), "latex")
+            shown = transform_title(as_robot(chain).frame_number(i), as_robot(chain).frame_number(j), "latex")
             product = "\\,".join(factors)
             lead = f"Fixed {which} transform: "
             if len(lead) * TEXT_CHARACTER + math_width(f"{shown} = {product}.") <= page.width:

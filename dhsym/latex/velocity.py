@@ -13,6 +13,7 @@ an element wider than the line broken before a + or −. Nothing is shrunk.
 """
 from __future__ import annotations
 
+from ..core.robot import as_robot
 from ..printing.jacobian import RateLatexPrinter, element_name, jacobian_title, joint_label, point_words
 from ..printing.printers import LatexPrinter, chain_settings
 from ..velocity import determinant, jacobian, propagate, rate_symbols, singularities
@@ -43,7 +44,8 @@ DOT_EXTRA = 2.5  # pt: a row with a dotted rate is taller than the layout's meas
 def velocity_sections(chain, page: Page, frame=None, point=None, steps: bool = False) -> list[Section]:
     """The Jacobian in `frame` (default: the first), the propagation if `steps`, the
     determinant and the singularities, with a legend of the abbreviations they use."""
-    frame, point = resolve_frames(chain, frame, point)
+    robot = as_robot(chain)
+    frame, point = (robot.frame_number(f) for f in resolve_frames(robot, frame, point))  # checked, as printed
     printer = RateLatexPrinter(chain.joint_variables, rate_symbols(chain), chain_settings(chain))
     matrix = jacobian(chain, frame, point)
     result = determinant(chain, frame, point)

@@ -50,8 +50,9 @@ def draw(chain, values=None, ax=None, planar=None, show_frames=True, triad_scale
     >>> draw(load("planar3r"), {"theta_2": "30deg"}, ax=Figure()).name
     'rectilinear'
     """
-    if title is None and chain.name:
-        title = chain.name + "\n" + _joint_line(chain, values)
+    name = getattr(chain, "name", "")  # a Robot's; a plain Chain has none
+    if title is None and name:
+        title = name + "\n" + _joint_line(chain, values)
     return draw_closed([(chain, values, LINK_COLOUR, None)], ax=ax, planar=planar, show_frames=show_frames,
                        triad_scale=triad_scale, title=title, frame_offset=frame_offset)
 
@@ -84,7 +85,7 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
         triads = _Triads(triad_scale or TRIAD_FRACTION * size, size)
         for picture, prefix, (chain, *_) in zip(skeletons, _prefixes([label for *_, label in items]), items,
                                                 strict=True):
-            offset = chain.frame_offset if frame_offset is None else frame_offset
+            offset = getattr(chain, "frame_offset", 0) if frame_offset is None else frame_offset
             for frame, pose in picture.poses:
                 triads.add(prefix + _frame_name(frame, offset), pose)
         arrows = triads.draw(ax, flat)

@@ -15,6 +15,7 @@ import numpy as np
 import sympy
 
 from ..core.chain import Chain
+from ..core.robot import as_chain
 from ..errors import UserError
 from ..io.expr import parse_expression
 
@@ -39,6 +40,7 @@ def resolve_values(chain, values=None) -> dict:
     >>> sorted((s.name, v) for s, v in resolve_values(load("planar2r"), {"theta_1": "90deg"}).items())
     [('a_1', 0.5), ('a_2', 0.4), ('theta_1', 1.5707963267948966), ('theta_2', 0.0)]
     """
+    sample = {str(symbol): value for symbol, value in getattr(chain, "sample", {}).items()}  # a Robot's
     chain = _checked(chain)
     symbols = {s.name: s for s in chain.symbols}
     given = {}
@@ -47,7 +49,6 @@ def resolve_values(chain, values=None) -> dict:
         if name not in symbols:
             raise UserError(f"{name} is not a symbol of this robot; its symbols are {', '.join(sorted(symbols))}")
         given[name] = as_number(value, name)
-    sample = {str(symbol): value for symbol, value in chain.sample.items()}
     variables = {v.name for v in chain.joint_variables}
     resolved, missing = {}, []
     for name, symbol in symbols.items():
@@ -66,6 +67,8 @@ def resolve_values(chain, values=None) -> dict:
 
 
 def _checked(chain) -> Chain:
+    """The plain chain of a Robot, or a Chain as it is."""
+    chain = as_chain(chain)
     if not isinstance(chain, Chain):
         raise TypeError(f"expected a Chain, not {type(chain).__name__}")
     return chain

@@ -21,6 +21,7 @@ import re
 
 import sympy
 
+from ..core.robot import as_robot
 from ..errors import UserError
 from ..inverse.solution import TARGET_NAMES
 from ..io.expr import parse_expression, real_symbol
@@ -183,7 +184,8 @@ def latex_printer(chain) -> IKLatexPrinter:
 
 def target_title(chain, style: str = "unicode") -> str:
     """⁰T₆: the transform `dhsym fk` prints by default, from base (else 0) to tool (else n)."""
-    return render.transform_title(chain.frame_number(chain.first_frame), chain.frame_number(chain.last_frame), style)
+    robot = as_robot(chain)
+    return render.transform_title(robot.first_frame, robot.last_frame, style)  # as printed
 
 
 def variable_list(symbols, printer) -> str:

@@ -49,6 +49,7 @@ from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
 from ..core.numbers import WrittenNumbers
+from ..core.robot import as_robot
 from .notation import Notation, display_name, superscript, written_offsets
 
 _BRACKETS = {"text": [("(", ")"), ("[", "]"), ("{", "}")],
@@ -57,9 +58,11 @@ TEXTBOOK_SETTINGS = {"joint_variables": (), "marked": (), "offsets": None, "numb
 
 
 def chain_settings(chain) -> dict:
-    """The printer settings a chain implies: its joint variables, offsets and written numbers."""
-    return {"joint_variables": chain.joint_variables, "offsets": written_offsets(chain.rows),
-            "numbers": getattr(chain, "numbers", None), "first_joint": getattr(chain, "frame_offset", 0) + 1}
+    """The printer settings a robot (or a plain chain) implies: its joint variables, offsets,
+    written numbers and the number of its first joint."""
+    robot = as_robot(chain)
+    return {"joint_variables": robot.joint_variables, "offsets": written_offsets(robot.rows),
+            "numbers": robot.numbers, "first_joint": robot.frame_offset + 1}
 
 
 def _settings(joint_variables, settings, keywords) -> dict:

@@ -20,6 +20,7 @@ import unicodedata
 
 import sympy
 
+from ..core.robot import as_robot
 from .notation import subscript, superscript
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
@@ -245,12 +246,13 @@ def table_columns(convention: str) -> list[tuple[str, str, str]]:
 
 
 def text_table(chain, ascii: bool = False) -> str:
-    """The DH table in the convention's column order; * marks each joint variable."""
+    """The DH table in the convention's column order, rows numbered as the robot's joints (4..6
+    for a wrist whose frames are 3..6); * marks each joint variable."""
     printer = text_printer(chain, ascii=ascii, marked=chain.joint_variables)
     columns = table_columns(chain.convention)
     headers = ["i"] + [_ascii_header(header) if ascii else header for field, header, _ in columns]
     body = [[str(n)] + [printer.doprint(getattr(row, field)) for field, _, _ in columns]
-            for n, row in enumerate(chain.rows, 1)]
+            for n, row in zip(as_robot(chain).joints, chain.rows)]
     widths = [max(len(r[k]) for r in [headers] + body) for k in range(len(headers))]
     separator = " | " if ascii else " │ "
     lines = [separator.join(cell.ljust(w) for cell, w in zip(line, widths)).rstrip() for line in [headers] + body]
@@ -277,10 +279,12 @@ def latex_table(chain) -> str:
 
 
 def latex_table_cells(chain, printer: LatexPrinter) -> tuple[list[str], list[list[str]]]:
-    """The header and the rows of the DH table as LaTeX cells, written by `printer`."""
+    """The header and the rows of the DH table as LaTeX cells, written by `printer`; rows numbered
+    as the robot's joints."""
     columns = table_columns(chain.convention)
     header = ["i"] + [latex for _, _, latex in columns]
-    rows = [[str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns] for n, row in enumerate(chain.rows, 1)]
+    rows = [[str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns]
+            for n, row in zip(as_robot(chain).joints, chain.rows)]
     return header, rows
 
 
@@ -291,15 +295,17 @@ def latex_array(header: list[str], rows: list[list[str]]) -> str:
 
 
 def json_result(chain, i, j, matrix: sympy.Matrix) -> dict:
-    """A result any SymPy user can read back: full cos/sin, the robot file's symbol names."""
+    """A result any SymPy user can read back: full cos/sin, the robot file's symbol names; `i`,
+    `j` are the chain's frames, written with the robot's numbers."""
     printer, exact = text_printer(chain, ascii=True), exact_printer(chain)
     for element in matrix:
         printer.doprint(element)  # collects the abbreviations the text form uses
+    robot = as_robot(chain)
     return {
-        "robot": chain.name,
+        "robot": robot.name,
         "convention": chain.convention,
-        "from": chain.frame_number(i),
-        "to": chain.frame_number(j),
+        "from": robot.frame_number(i),
+        "to": robot.frame_number(j),
         "joint_variables": [s.name for s in chain.joint_variables],
         "matrix": [[exact.doprint(matrix[r, c]) for c in range(4)] for r in range(4)],
         "abbreviations": dict(legend_entries(printer, "sympy")),

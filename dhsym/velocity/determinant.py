@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from ..core.robot import as_robot
 from ..core.simplify import collect_by_trig
 from ..core.size import expanded_terms, length, rough_count
 from .geometry import wrist_centre
@@ -64,20 +65,22 @@ def determinant(chain, frame=None, point=None) -> Determinant:
     saying why none is computed: J is not square, or its determinant would expand to more than
     FACTOR_MAX_TERMS terms (counted before any expansion, so the answer is the same everywhere)."""
     frame, point = resolve_frames(chain, frame, point)  # checked even where J in `frame` is not needed
+    robot = as_robot(chain)
     try:
-        return _determinant(chain, frame, point)
+        return _determinant(robot.chain, frame, point, robot)
     except TooManyTerms as error:
         return Determinant(None, "", [], f"the determinant would expand to {rough_count(error.terms)} terms, "
                            f"more than the {FACTOR_MAX_TERMS:,} that dhsym factors: not computed.")
 
 
-def _determinant(chain, frame, point) -> Determinant:
+def _determinant(chain, frame, point, robot) -> Determinant:
+    """`chain` the robot's own (frames 0..n); `robot` for its numbers as written and its numbering."""
     n = chain.n
     if n == 6:  # the same in every frame: worked out where it is short, not from J in `frame`
-        centre = wrist_centre(chain)
+        centre = wrist_centre(chain, sample=robot.sample)
         if centre is not None:
-            return _wrist_partitioned(chain, centre)
-        return _full(chain)
+            return _wrist_partitioned(chain, centre, robot)
+        return _full(chain, robot)
     if n > 6:
         return Determinant(None, "", [], f"J is 6×{n}: the arm is redundant, and no determinant is computed. "
                            f"It is singular where all {sympy.binomial(n, 6)} of its 6×6 minors vanish (rank < 6); "
@@ -85,14 +88,14 @@ def _determinant(chain, frame, point) -> Determinant:
     matrix = jacobian(chain, frame, point)
     moving = [r for r in range(6) if any(x != 0 for x in matrix.row(r))]
     blocks = [moving] if len(moving) == n else [[r for r in moving if r < 3], [r for r in moving if r >= 3]]
-    results = [_block(chain, frame, point, matrix, moving, rows) for rows in blocks if len(rows) == n]
+    results = [_block(chain, frame, point, matrix, moving, rows, robot) for rows in blocks if len(rows) == n]
     if not results:
         return Determinant(None, "", [], f"J is 6×{n} and its {len(moving)} rows that move are not {n}, nor are "
                            "its moving linear or angular rows: no square block, no determinant computed.")
     return next((r for r in results if r.value != 0), results[0])
 
 
-def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
+def _block(chain, frame, point, matrix, moving, rows, robot) -> Determinant:
     """The determinant of the block `rows` of J, from the frame where it is shortest. Every frame
     that keeps `moving` the rows that move (a planar arm: z normal to the plane) turns the block
     by a rotation within those rows, so the determinant is the same up to its sign."""
@@ -107,7 +110,7 @@ def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
             det = candidate.extract(rows, list(range(n))).det(method="berkowitz")
             asked = det if asked is None else asked  # the block in the frame asked for comes first
             try:
-                results.append(_result(chain, det, block, note))
+                results.append(_result(robot, det, block, note))
             except TooManyTerms as error:  # too long in this frame; another may be short
                 refused.append(error)
     if not results:
@@ -115,7 +118,7 @@ def _block(chain, frame, point, matrix, moving, rows) -> Determinant:
     shortest = min(results, key=lambda result: length(result.value))
     if _same_sign(shortest.value, asked):
         return shortest
-    return _result(chain, -shortest.value, block, note)
+    return _result(robot, -shortest.value, block, note)
 
 
 def _same_sign(a, b) -> bool:
@@ -133,7 +136,7 @@ def _same_sign(a, b) -> bool:
     return True  # zero everywhere we looked: the sign cannot matter
 
 
-def _full(chain) -> Determinant:
+def _full(chain, robot) -> Determinant:
     """det J of a 6-joint arm without a wrist centre. det J is the same in every frame (a rotation of
     both halves has determinant 1), and in a frame near the middle of the arm the entries are
     short: the UR5's factors in under a second from frame 4, where frame 0 takes minutes. The frame
@@ -141,23 +144,24 @@ def _full(chain) -> Determinant:
     the machine."""
     frame = min(MIDDLE_FRAMES, key=lambda f: jacobian_size(chain, f, chain.last_frame))
     try:
-        return _result(chain, jacobian(chain, frame).det(method="berkowitz"), "J", "")
+        return _result(robot, jacobian(chain, frame).det(method="berkowitz"), "J", "")
     except TooManyTerms as error:
         return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
                            f"determinant would expand to {rough_count(error.terms)} terms even in frame "
-                           f"{frame}, where J is shortest; that is more than the {FACTOR_MAX_TERMS:,} that dhsym "
-                           "factors: not computed.")
+                           f"{robot.frame_number(frame)}, where J is shortest; that is more than the "
+                           f"{FACTOR_MAX_TERMS:,} that dhsym factors: not computed.")
 
 
-def _wrist_partitioned(chain, centre) -> Determinant:
+def _wrist_partitioned(chain, centre, robot) -> Determinant:
     """det A · det C, each in the frame where it is short: A (linear rows, joints 1–3) in the
     axis frame of joint 3 (Craig's ³J₆), C (angular rows, joints 4–6) in that of joint 5."""
     body, arm_frame, wrist_frame = chain.last_frame, axis_frame(chain, 3), axis_frame(chain, 5)
     arm = [linear_part(chain, j, arm_frame, centre, body) for j in (1, 2, 3)]
     wrist = [angular_part(chain, j, wrist_frame, centre, body) for j in (4, 5, 6)]
     arm_det = factored(sympy.Matrix(arm).T.det(method="berkowitz"))
-    result = _result(chain, arm_det * factored(sympy.Matrix(wrist).T.det(method="berkowitz")), "J", "")
-    note = (f"The last three axes meet at the origin of frame {centre} (the wrist centre), so det J = (det A)(det C): "
+    result = _result(robot, arm_det * factored(sympy.Matrix(wrist).T.det(method="berkowitz")), "J", "")
+    note = (f"The last three axes meet at the origin of frame {robot.frame_number(centre)} (the wrist centre), "
+            "so det J = (det A)(det C): "
             "A the linear velocities of the wrist centre from joints 1–3, C the wrist axes 4–6.")
     return Determinant(result.value, "J", result.factors, note)
 

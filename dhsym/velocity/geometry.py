@@ -17,14 +17,16 @@ from .jacobian import cross  # one cross product, for symbols and for numbers
 TOLERANCE = 1e-9
 
 
-def sample_values(chain, rng: random.Random) -> dict:
-    """Joint variables uniform in (−π, π); constants from the robot's sample, else in (0.5, 1.5)."""
+def sample_values(chain, rng: random.Random, sample=None) -> dict:
+    """Joint variables uniform in (−π, π); constants from `sample` (default: the robot's, when
+    `chain` is a Robot), else in (0.5, 1.5)."""
+    sample = getattr(chain, "sample", {}) if sample is None else sample
     values = {}
-    for symbol in chain.symbols:
+    for symbol in sorted(chain.symbols, key=str):
         if symbol in chain.joint_variables:
             values[symbol] = rng.uniform(-math.pi, math.pi)
-        elif symbol in chain.sample:
-            values[symbol] = float(chain.sample[symbol])
+        elif symbol in sample:
+            values[symbol] = float(sample[symbol])
         else:
             values[symbol] = rng.uniform(0.5, 1.5)
     return values
@@ -80,14 +82,16 @@ def distance_to_axis(point, line) -> float:
     return math.sqrt(sum(x * x for x in cross(line[1], minus(point, line[0]))))
 
 
-def wrist_centre(chain, trials: int = 3):
+def wrist_centre(chain, trials: int = 3, sample=None):
     """The last frame whose origin lies on the axes of the last three joints (all revolute) in
     every configuration tried, or None: the point where a spherical wrist's axes meet."""
+    sample = getattr(chain, "sample", {}) if sample is None else sample
+    chain = getattr(chain, "chain", chain)  # a Robot's own chain: frames 0..n
     n = chain.n
     if n < 6 or any(row.joint != "R" for row in chain.rows[-3:]):
         return None
     rng = random.Random(7)
-    configurations = [poses(chain, sample_values(chain, rng)) for _ in range(trials)]
+    configurations = [poses(chain, sample_values(chain, rng, sample)) for _ in range(trials)]
     first = chain.frames.index(n - 3 if chain.convention == "standard" else n - 2)
     for frame in reversed(chain.frames[first:]):
         if all(distance_to_axis(pose[frame][1], axis_line(chain, j, pose)) < TOLERANCE

@@ -34,6 +34,7 @@ from __future__ import annotations
 import sympy
 
 from ..core.estimate import estimated_size
+from ..core.robot import as_chain, as_robot
 from ..core.simplify import block_matrix, collect_by_trig, merge_steps, split_into_blocks
 from ..core.size import length
 from ..errors import UserError
@@ -46,18 +47,22 @@ def jacobian(chain, frame=None, point=None, body=None) -> sympy.Matrix:
     """ᵏJ: the 6×n geometric Jacobian of frame `point` (default: the last frame), its origin's
     velocity and its angular velocity, expressed in `frame` (default: the first frame, base
     else 0). With `body`, the velocity is that of the point of frame `body` that is at the
-    origin of `point` at this instant (a change of reference point: det J does not change)."""
+    origin of `point` at this instant (a change of reference point: det J does not change).
+    Frames are numbered as `chain` numbers them: a Robot's printed numbers (3..6 for a wrist)."""
     frame, point = resolve_frames(chain, frame, point)
     body = point if body is None else resolve_frames(chain, body, None)[0]
+    chain = as_chain(chain)
     columns = [column(chain, joint, frame, point, body) for joint in range(1, chain.n + 1)]
     return sympy.Matrix([[col[r] for col in columns] for r in range(6)])
 
 
 def resolve_frames(chain, frame, point) -> tuple:
-    """The frames a user names (numbers, "3", "base", "tool"), checked against the chain."""
-    frame = chain.first_frame if frame is None else frame
-    point = chain.last_frame if point is None else point
-    return tuple(f if f in chain.frames else chain.frame(str(f)) for f in (frame, point))
+    """The chain's own frames (0..n, "base", "tool") for the frames a user names (numbers as the
+    robot prints them, "3", "base", "tool"); None is the first frame and the last."""
+    robot = as_robot(chain)
+    frame = robot.chain.frames[0] if frame is None else robot.chain_frame(frame)
+    point = robot.chain.frames[-1] if point is None else robot.chain_frame(point)
+    return frame, point
 
 
 def jacobian_size(chain, frame, point) -> int:

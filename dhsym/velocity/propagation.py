@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import sympy
 from sympy.simplify.fu import TR10i
 
+from ..core.robot import as_robot
 from ..core.simplify import collect_by_trig
 from ..core.size import length
 from .jacobian import ZERO, cross, derivative, gain, rotate
@@ -50,12 +51,15 @@ def rate_symbols(chain) -> list[sympy.Symbol]:
 
 
 def propagate(chain) -> list[Step]:
-    """ω and v of every frame, from the first (at rest) to the last."""
+    """ω and v of every frame, from the first (at rest) to the last; each step's `frame` numbered
+    as `chain` numbers its frames (a Robot: as printed)."""
+    robot = as_robot(chain)
+    chain = robot.chain
     rates = rate_symbols(chain)
     variables = frozenset(chain.joint_variables) | frozenset(rates)
     frames = chain.frames
     omega, velocity = ZERO, ZERO
-    out = [Step(frames[0], None, omega, velocity)]
+    out = [Step(robot.frame_number(frames[0]), None, omega, velocity)]
     for before, frame in zip(frames, frames[1:]):
         joint = frame if isinstance(frame, int) and frame >= 1 else None
         rate = rates[joint - 1] * gain(chain, joint) if joint else 0
@@ -72,7 +76,7 @@ def propagate(chain) -> list[Step]:
             if joint:
                 omega, velocity = (omega, _add(velocity, z)) if prismatic else (_add(omega, z), velocity)
         omega, velocity = _tidy(omega, rates, variables), _tidy(velocity, rates, variables)
-        out.append(Step(frame, joint, omega, velocity))
+        out.append(Step(robot.frame_number(frame), joint, omega, velocity))
     return out
 
 

@@ -35,7 +35,9 @@ from dataclasses import dataclass
 
 import sympy
 
+from ..core.robot import as_robot
 from .geometry import TOLERANCE, axis_line, cross, distance_to_axis, dot, minus, poses, sample_values, wrist_centre
+from .jacobian import resolve_frames
 
 SCAN_STEPS = 720
 
@@ -48,10 +50,11 @@ class Singularity:
     factor: sympy.Expr
     template: str
     joints: tuple = ()
+    first_joint: int = 1  # the number printed for row 1 (a wrist numbered 3..6: 4)
 
     @property
     def meaning(self) -> str:
-        return self.describe()
+        return self.describe(lambda row: str(row + self.first_joint - 1))
 
     def describe(self, label=str) -> str:
         """The meaning with each joint written by `label(row number)` (a wrist's rows 1..3
@@ -60,28 +63,35 @@ class Singularity:
 
 
 def singularities(chain, determinant, point=None) -> list[Singularity]:
-    """One Singularity per factor of `determinant` (a velocity.determinant.Determinant)."""
-    centre = wrist_centre(chain) if chain.n >= 6 else None
-    point = centre if centre is not None else (chain.last_frame if point is None else point)
-    name = "wrist centre" if centre is not None else POINT_NAMES.get(point, f"origin of frame {point}")
-    return [Singularity(f, *meaning(chain, f, point, name)) for f in determinant.factors]
+    """One Singularity per factor of `determinant` (a velocity.determinant.Determinant); `point`
+    numbered as `chain` numbers its frames (a Robot: as printed)."""
+    robot = as_robot(chain)
+    point = resolve_frames(robot, None, point)[1]
+    chain = robot.chain
+    centre = wrist_centre(chain, sample=robot.sample) if chain.n >= 6 else None
+    point = centre if centre is not None else point
+    name = "wrist centre" if centre is not None else \
+        POINT_NAMES.get(point, f"origin of frame {robot.frame_number(point)}")
+    return [Singularity(f, *meaning(chain, f, point, name, robot), robot.frame_offset + 1) for f in determinant.factors]
 
 
 POINT_NAMES = {"tool": "tool point", "base": "origin of the base frame"}
 
 
-def meaning(chain, factor, point, name: str) -> tuple[str, tuple]:
-    """The first geometric description that holds wherever `factor` vanishes: (template, joints)."""
+def meaning(chain, factor, point, name: str, robot=None) -> tuple[str, tuple]:
+    """The first geometric description that holds wherever `factor` vanishes: (template, joints).
+    `robot` (default: the chain as it is) gives the sample values and the frames' numbers."""
+    robot = as_robot(chain) if robot is None else robot
     variables = [v for v in chain.joint_variables if v in factor.free_symbols]
     joint = chain.joint_variables.index(variables[-1]) + 1
     if factor == variables[-1] and chain.rows[joint - 1].joint == "P":
         return "joint {0} retracted to zero extension", (joint,)
-    roots = _roots(chain, factor, variables)
+    roots = _roots(chain, factor, variables, sample=robot.sample)
     if not roots:
         return "no real configuration found where this factor vanishes (for random dimensions)", ()
     n = chain.n
     revolute = [j for j in range(1, n + 1) if chain.rows[j - 1].joint == "R"]
-    generic = poses(chain, sample_values(chain, random.Random(11)))
+    generic = poses(chain, sample_values(chain, random.Random(11), robot.sample))
     def holds(test, *args) -> bool:  # test(*args, pose) where the factor vanishes, and not everywhere
         return all(test(*args, pose) for pose in roots) and not test(*args, generic)
 
@@ -104,7 +114,8 @@ def meaning(chain, factor, point, name: str) -> tuple[str, tuple]:
                     return stretched + "axis {2} lies in the plane of axes {0} and {1}", (j - 1, j, k)
     # the point first, then the other origins from the tip down: the UR5's shoulder singularity is
     # where axes 5 and 6 meet (the origin of frame 5), not its flange, crossing a plane
-    origins = [(point, name)] + [(f, f"origin of frame {f}") for f in reversed(chain.frames) if f != point]
+    origins = [(point, name)] + [(f, f"origin of frame {robot.frame_number(f)}") for f in reversed(chain.frames)
+                                 if f != point]
     for where, called in origins:
         for a in revolute:
             for b in range(a + 1, n + 1):
@@ -114,14 +125,14 @@ def meaning(chain, factor, point, name: str) -> tuple[str, tuple]:
     return "the joint velocities are dependent here (no simpler description found)", ()
 
 
-def _roots(chain, factor, variables, configurations: int = 3) -> list:
+def _roots(chain, factor, variables, configurations: int = 3, sample=None) -> list:
     """Poses of the chain at up to `configurations` zeros of `factor`: the other joints at random
     values, one of its `variables` scanned for a change of sign, the last first (θ5 of s5), then
     the others (a2 c2 + a3 c23 + d5 s234 has a zero in θ2 whatever θ3 and θ4, not always in θ4)."""
     rng = random.Random(5)
     found = []
     for _ in range(configurations * 3):
-        values = sample_values(chain, rng)
+        values = sample_values(chain, rng, sample)
         for variable in reversed(variables):
             root = _root_in(chain, factor, variable, values)
             if root is not None:
