@@ -118,7 +118,6 @@ def check(a, b):
     equal: by algebra, and numerically (max error ...)
     """
     from .core.chain import Chain
-
     from .core.robot import Robot
 
     if isinstance(_robot_of(a), (Robot, Chain)):

@@ -46,7 +46,16 @@ class Robot:
     constants, for pictures and numeric checks), `numbers` (how the file wrote its numbers, so
     that printers write them back the same way), `frame_offset` (the number printed for the
     chain's frame 0: a robot file's `first_frame`), `file` (the file it was read from) and
-    `warnings` (what its reading noticed: "FILE:LINE:COL: message")."""
+    `warnings` (what its reading noticed: "FILE:LINE:COL: message"). Frames are numbered as
+    printed.
+
+    >>> import sympy
+    >>> from dhsym.core.chain import DHRow
+    >>> wrist = Robot(Chain([DHRow.revolute(sympy.Symbol("theta_4", real=True))], "standard"),
+    ...               name="one wrist joint", frame_offset=3)
+    >>> wrist.frames, wrist.link(4) == wrist.chain.link(1)
+    ([3, 4], True)
+    """
 
     chain: Chain
     name: str = ""

@@ -29,7 +29,6 @@ from ..core.chain import Chain, DHRow
 from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
-from ..geometry.rounding import joined
 from .expr import Reading, parse_expression
 from .suspicious import misplaced_variable, misspelt_pi, near_multiple_of_pi, printed_key, printed_text
 from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
@@ -180,6 +179,7 @@ class _Reader:
                             f"modified", self.where(convention_node))
         notes = self.optional_text(top, "notes", "")
         if "axes" in top:  # the geometric form (io/axesfile.py): joint axes instead of DH rows
+            from ..geometry.rounding import joined
             from .axesfile import axes_chain  # the geometry of frames, only for a file that needs it
 
             chain, rounded = axes_chain(self, top, convention)
