@@ -31,6 +31,7 @@ from ..geometry.exact import is_zero_vector, unit
 from ..geometry.frames import assign_frames
 from ..geometry.lines import JointAxis
 from .expr import Reading, parse_expression, real_symbol
+from .yamlsafe import MAX_JOINTS
 
 AXIS_KEYS = ("joint", "point", "direction", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
@@ -45,8 +46,6 @@ def axes_chain(reader, top: dict, convention: str):
     if "tool" not in top:
         raise UserError("axes: needs tool: too, the tool frame at the zero configuration as steps from the base",
                         reader.where(top["axes"][0]))
-    from .robotfile import MAX_JOINTS  # here, not above: robotfile imports this module
-
     axes_node = top["axes"][1]
     nodes = reader.sequence(axes_node, "axes")
     if not nodes:

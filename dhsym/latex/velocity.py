@@ -17,7 +17,6 @@ from ..printing.jacobian import RateLatexPrinter, element_name, jacobian_title, 
 from ..printing.printers import LatexPrinter, chain_settings
 from ..velocity import determinant, jacobian, propagate, rate_symbols, singularities
 from ..velocity.jacobian import resolve_frames
-from .document import tex_text
 from .layout import (
     PAGES,
     Block,
@@ -33,6 +32,7 @@ from .layout import (
     paragraph,
 )
 from .legend import legend_items
+from .prose import tex_text
 from .sections import Section
 from .width import math_width
 
