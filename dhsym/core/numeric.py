@@ -1,0 +1,122 @@
+"""Forward kinematics in floats: the pose of every frame of a chain at numbers for its symbols.
+
+dhsym's one numeric evaluator. Pictures (plot), the table checker (geometry.compare), the
+Jacobian's numeric checks (velocity.geometry: wrist centre, singular poses) and through them the
+inverse kinematics' structure tests all walk the chain's own elementary steps (the ones the algebra
+multiplies), so a number is the formula evaluated. The constants go in exactly (rationals, π/2) and
+are fixed once; each call then costs a few multiplications per step. Plain floats, no numpy: the
+layers below the pictures never load it, and a chain has too few steps for arrays to pay off.
+
+>>> import sympy, dhsym
+>>> arm = NumericChain(dhsym.load("planar2r"), {"a_1": sympy.Rational(1, 2), "a_2": 0.4})
+>>> [(frame, [round(x, 3) for x in origin(pose)]) for frame, pose in arm.poses([0, sympy.pi / 2])]
+[(0, [0.0, 0.0, 0.0]), (1, [0.5, 0.0, 0.0]), (2, [0.5, 0.4, 0.0])]
+>>> [round(x, 3) for x in arm.axes([0, sympy.pi / 2])[1][0]]   # joint 2 turns about z_1
+[0.5, 0.0, 0.0]
+"""
+from __future__ import annotations
+
+import math
+from itertools import pairwise
+from typing import Callable, Mapping, Sequence
+
+import sympy
+
+from .transforms import joint_axis_frame, turned_plane
+
+Pose = list  # 4×4 floats, row by row: the rotation's columns are the frame's x, y, z axes, column 3 its origin
+
+
+class NumericChain:
+    """`chain` with numbers for its constants (keys are symbols or their names, values exact or
+    floats; joint variables among them are ignored), ready to be evaluated at joint values q."""
+
+    def __init__(self, chain, constants: Mapping):
+        named = {getattr(key, "name", str(key)): value for key, value in constants.items()}
+        self.variables = tuple(chain.joint_variables)
+        fixed_symbols = chain.symbols - set(self.variables)
+        missing = sorted(s.name for s in fixed_symbols if s.name not in named)
+        if missing:
+            raise ValueError(f"no number for {', '.join(missing)}")
+        fixed = {s: sympy.sympify(named[s.name]) for s in fixed_symbols}
+        self.convention = chain.convention
+        self.frames = tuple(chain.frames)
+        self._first_joint_frame = 1 if chain.base else 0  # the position of frame 0 among `frames`
+        self._segments = [[(step.is_rotation, step.axis, _amount(step.value.xreplace(fixed), self.variables))
+                           for step in chain.steps(before, after)] for before, after in pairwise(self.frames)]
+
+    def walk(self, q: Sequence) -> list[tuple[object, list[Pose]]]:
+        """(frame, the poses after each step that leads to it) for every frame, in the first frame;
+        the last pose of each is the frame's own, the first frame's is the identity."""
+        q = self._floats(q)
+        pose = [[float(r == c) for c in range(4)] for r in range(4)]
+        out = [(self.frames[0], [_copy(pose)])]
+        for frame, steps in zip(self.frames[1:], self._segments):
+            after = []
+            for turns, axis, amount in steps:
+                _apply(pose, turns, axis, amount(q))
+                after.append(_copy(pose))
+            out.append((frame, after or [_copy(pose)]))
+        return out
+
+    def poses(self, q: Sequence) -> list[tuple[object, Pose]]:
+        """(frame, pose) of every frame (base, 0..n, tool as present), in the first frame."""
+        return [(frame, after[-1]) for frame, after in self.walk(q)]
+
+    def end(self, q: Sequence) -> Pose:
+        """The pose of the last frame in the first: base (else 0) → tool (else n)."""
+        return self.walk(q)[-1][1][-1]
+
+    def axes(self, q: Sequence) -> list[tuple[list, list]]:
+        """(a point, the unit direction) of each joint's axis in the first frame: the origin and z of
+        the frame that `joint_axis_frame` names (the direction is z itself, whatever way the joint
+        variable enters its row)."""
+        poses = [pose for _, pose in self.poses(q)]
+        out = []
+        for joint in range(1, len(self.variables) + 1):
+            pose = poses[self._first_joint_frame + joint_axis_frame(self.convention, joint)]
+            out.append((origin(pose), [pose[r][2] for r in range(3)]))
+        return out
+
+    def _floats(self, q: Sequence) -> list[float]:
+        if len(q) != len(self.variables):
+            raise ValueError(f"{len(q)} joint values for {len(self.variables)} joints")
+        return [float(x) for x in q]
+
+
+def origin(pose: Pose) -> list[float]:
+    """The position column of a pose."""
+    return [pose[r][3] for r in range(3)]
+
+
+def _amount(value: sympy.Expr, variables: tuple) -> Callable[[list], float]:
+    """q ↦ the step's angle or length. Steps are constants or affine in one joint variable
+    (θ2 − π/2, −d3) as a rule: those cost a multiplication; anything else is compiled."""
+    moving = [k for k, v in enumerate(variables) if value.has(v)]
+    if not moving:
+        constant = float(value)
+        return lambda q: constant
+    if len(moving) == 1:
+        k = moving[0]
+        slope = sympy.diff(value, variables[k])
+        if not slope.free_symbols:
+            slope, intercept = float(slope), float(value.xreplace({variables[k]: 0}))
+            return lambda q: intercept + slope * q[k]
+    function = sympy.lambdify(variables, value, modules="math")
+    return lambda q: float(function(*q))
+
+
+def _apply(pose: Pose, turns: bool, axis: int, amount: float) -> None:
+    """pose ← pose · (the step): a rotation mixes two columns, a translation moves the origin."""
+    if turns:
+        i, j = turned_plane(axis)
+        c, s = math.cos(amount), math.sin(amount)
+        for row in pose[:3]:
+            row[i], row[j] = c * row[i] + s * row[j], c * row[j] - s * row[i]
+    else:
+        for row in pose[:3]:
+            row[3] += amount * row[axis]
+
+
+def _copy(pose: Pose) -> Pose:
+    return [row[:] for row in pose]
