@@ -92,15 +92,16 @@ def origin(pose: Pose) -> list[float]:
 def _amount(value: sympy.Expr, variables: tuple) -> Callable[[list], float]:
     """q ↦ the step's angle or length. Steps are constants or affine in one joint variable
     (θ2 − π/2, −d3) as a rule: those cost a multiplication; anything else is compiled."""
-    moving = [k for k, v in enumerate(variables) if value.has(v)]
+    moving = [k for k, v in enumerate(variables) if v in value.free_symbols]
     if not moving:
         constant = float(value)
         return lambda q: constant
     if len(moving) == 1:
         k = moving[0]
-        slope = sympy.diff(value, variables[k])
-        if not slope.free_symbols:
-            slope, intercept = float(slope), float(value.xreplace({variables[k]: 0}))
+        intercept, term = value.as_independent(variables[k], as_Add=True)
+        slope, rest = term.as_coeff_Mul()
+        if rest == variables[k]:
+            slope, intercept = float(slope), float(intercept)
             return lambda q: intercept + slope * q[k]
     function = sympy.lambdify(variables, value, modules="math")
     return lambda q: float(function(*q))
