@@ -11,10 +11,8 @@ import pytest
 
 PACKAGE = Path(__file__).parent.parent / "dhsym"
 # Each layer may import the layers before it (and itself), never one after it.
-# `checking.verify` (equality by algebra and numbers) is plain math, so it sits right under core;
 # `geometry` (frames from joint axes) is math on core that the robot-file reader uses for `axes:`.
-LAYERS = ["errors", "core", "checking.verify", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot",
-          "checking", "cli"]
+LAYERS = ["errors", "core", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot", "checking", "cli"]
 # Conveniences reach up, lazily inside a method: Jupyter shows a chain as its DH table,
 # `chain.jacobian()` and `chain.ik()` hand over to the layers built on core, and the object
 # `chain.ik()` returns shows itself as text and LaTeX.

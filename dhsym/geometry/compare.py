@@ -23,12 +23,12 @@ from dataclasses import dataclass
 
 import sympy
 
-from ..checking.verify import algebraically_equal
 from ..core.chain import Chain
 from ..core.estimate import estimated_size
 from ..core.numeric import NumericChain
 from ..core.size import expanded_terms, rough_count
 from ..core.transforms import joint_axis_frame
+from ..core.verify import algebraically_equal
 from ..errors import UserError
 from .screws import rate
 
