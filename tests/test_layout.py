@@ -78,8 +78,9 @@ def _import_graph() -> dict[str, set[str]]:
     """Which dhsym modules each dhsym module imports: relative and absolute imports, at the top or inside a
     function (one there is a cycle that only a lucky order of first calls keeps from failing).
 
-    `from .pkg import sub` counts as importing `pkg` (its __init__ runs) and, when `sub` is a module, `sub`;
-    a module's own packages are left out (Python runs them first whatever the module imports)."""
+    `from .pkg import sub` counts as importing `pkg` (its __init__ runs) and, when `sub` is a module, `sub`.
+    Python runs a module's own packages before the module, so importing one of them counts only for a name
+    that is not a submodule (`from . import NAME` needs the package's __init__ to have got that far)."""
     modules = _module_names()
     graph = {}
     for name, path in modules.items():
@@ -91,9 +92,11 @@ def _import_graph() -> dict[str, set[str]]:
             elif isinstance(node, ast.ImportFrom):
                 base = package.split(".")[:len(package.split(".")) - node.level + 1] if node.level else []
                 target = ".".join(base + ([node.module] if node.module else []))
-                targets.add(target)
-                targets.update(f"{target}.{alias.name}" for alias in node.names)
-        graph[name] = {t for t in targets if t in modules and t != name and not name.startswith(t + ".")}
+                submodules = {f"{target}.{alias.name}" for alias in node.names} & modules.keys()
+                targets |= submodules
+                if not name.startswith(target + ".") or len(submodules) < len(node.names):
+                    targets.add(target)
+        graph[name] = {t for t in targets if t in modules and t != name}
     return graph
 
 
