@@ -15,7 +15,7 @@ import numpy as np
 import sympy
 
 from ..core.chain import Chain
-from ..core.numeric import NumericChain
+from ..core.numeric import NumericChain, origin
 from ..errors import UserError
 from ..io.expr import parse_expression
 
@@ -104,16 +104,17 @@ def skeleton(chain, values) -> Skeleton:
     numbers = resolve_values(chain, values)
     q = [numbers[v] for v in chain.joint_variables]
     numeric = NumericChain(chain, numbers)
-    walk = [(frame, [np.array(pose) for pose in after]) for frame, after in numeric.walk(q)]
-    poses = [(frame, after[-1]) for frame, after in walk]
-    rows = walk[1:] if chain.base else walk  # (frame 0, its pose), then one entry per row
-    ground = [walk[0][1][-1][:3, 3], walk[1][1][-1][:3, 3]] if chain.base else []
-    links = [rows[0][1][-1][:3, 3]]
-    for _, after in rows[1:chain.n + 1]:
+    walk = numeric.walk(q)  # (frame, the poses after each step that leads to it)
+    poses = [(frame, np.array(after[-1])) for frame, after in walk]
+    points = [np.array(origin(after[-1])) for _, after in walk]  # each frame's origin
+    zero = 1 if chain.base else 0  # where frame 0 is in `walk`
+    ground = points[:2] if chain.base else []
+    links = [points[zero]]
+    for _, after in walk[zero + 1:zero + 1 + chain.n]:
         # the corner after Tz(d) (standard) or Tx(a) (modified): a row with both d and a bends there
-        links.extend([after[1][:3, 3], after[-1][:3, 3]])
+        links += [np.array(origin(after[1])), np.array(origin(after[-1]))]
     if chain.tool:
-        links.append(poses[-1][1][:3, 3])
+        links.append(points[-1])
     joints = [(row.joint, np.array(point)) for row, (point, _) in zip(chain.rows, numeric.axes(q))]
     return Skeleton(poses, ground, _without_repeats(links), joints)
 
