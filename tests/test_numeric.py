@@ -128,8 +128,25 @@ def test_a_numeric_chain_needs_every_constant_and_one_value_per_joint():
         NumericChain(chain, chain.sample).end([0])
 
 
+@given(chains(max_links=4), st.data())
+def test_many_configurations_at_once_are_each_one_evaluated(chain, data):
+    import numpy as np
+
+    values = {s: float(v) for s, v in _values(chain, data).items()}
+    numeric = NumericChain(chain, values)
+    rng = np.random.default_rng(data.draw(st.integers(0, 100), label="seed"))
+    columns = [rng.uniform(-np.pi, np.pi, 5) for _ in chain.joint_variables]
+    together = np.array(numeric.end(columns))
+    for k in range(5):
+        assert np.abs(together[:, :, k] - np.array(numeric.end([c[k] for c in columns]))).max() < 1e-12
+
+
 def test_a_step_that_is_not_affine_in_its_variable_is_evaluated_too():
     t = sympy.Symbol("t", real=True)
     chain = dhsym.Chain([dhsym.DHRow.revolute(t ** 2 / 2, a=1, variable=t)], "standard")
     pose = NumericChain(chain, {}).end([sympy.Rational(3, 2)])
     assert abs(pose[0][3] - math.cos(9 / 8)) < 1e-15 and abs(pose[1][3] - math.sin(9 / 8)) < 1e-15
+    import numpy as np
+
+    many = NumericChain(chain, {}).end([np.array([1.5, 0.0])])
+    assert np.allclose(many[0][3], [math.cos(9 / 8), 1.0], atol=1e-15)

@@ -5,7 +5,8 @@ Jacobian's numeric checks (velocity.geometry: wrist centre, singular poses) and 
 inverse kinematics' structure tests all walk the chain's own elementary steps (the ones the algebra
 multiplies), so a number is the formula evaluated. The constants go in exactly (rationals, π/2) and
 are fixed once; each call then costs a few multiplications per step. Plain floats, no numpy: the
-layers below the pictures never load it, and a chain has too few steps for arrays to pay off.
+layers below the pictures never load it. Many configurations at once: give each joint's values as a
+numpy array (all of one length m), and every entry of the poses is an array of m values.
 
 >>> import sympy, dhsym
 >>> arm = NumericChain(dhsym.load("planar2r"), {"a_1": sympy.Rational(1, 2), "a_2": 0.4})
@@ -13,6 +14,9 @@ layers below the pictures never load it, and a chain has too few steps for array
 [(0, [0.0, 0.0, 0.0]), (1, [0.5, 0.0, 0.0]), (2, [0.5, 0.4, 0.0])]
 >>> [round(x, 3) for x in arm.axes([0, sympy.pi / 2])[1][0]]   # joint 2 turns about z_1
 [0.5, 0.0, 0.0]
+>>> import numpy as np
+>>> np.array(arm.end([np.array([0, np.pi / 2]), np.array([np.pi / 2, 0])]))[:2, 3].round(3).tolist()
+[[0.5, 0.0], [0.4, 0.9]]
 """
 from __future__ import annotations
 
@@ -49,7 +53,8 @@ class NumericChain:
         """(frame, the poses after each step that leads to it) for every frame, in the first frame;
         the last pose of each is the frame's own, the first frame's is the identity."""
         q = self._floats(q)
-        pose = [[float(r == c) for c in range(4)] for r in range(4)]
+        zero = sum(x * 0.0 for x in q)  # 0.0, or an array of zeros when q holds arrays
+        pose = [[zero + (r == c) for c in range(4)] for r in range(4)]
         out = [(self.frames[0], [_copy(pose)])]
         for frame, steps in zip(self.frames[1:], self._segments):
             after = []
@@ -78,10 +83,10 @@ class NumericChain:
             out.append((origin(pose), [pose[r][2] for r in range(3)]))
         return out
 
-    def _floats(self, q: Sequence) -> list[float]:
+    def _floats(self, q: Sequence) -> list:
         if len(q) != len(self.variables):
             raise ValueError(f"{len(q)} joint values for {len(self.variables)} joints")
-        return [float(x) for x in q]
+        return [x.astype(float) if hasattr(x, "astype") else float(x) for x in q]
 
 
 def origin(pose: Pose) -> list[float]:
@@ -104,19 +109,31 @@ def _amount(value: sympy.Expr, variables: tuple) -> Callable[[list], float]:
             slope, intercept = float(slope), float(intercept)
             return lambda q: intercept + slope * q[k]
     function = sympy.lambdify(variables, value, modules="math")
-    return lambda q: float(function(*q))
+    return lambda q: float(function(*q)) if isinstance(q[0], float) else _vectorized(function)(*q)
 
 
 def _apply(pose: Pose, turns: bool, axis: int, amount: float) -> None:
     """pose ← pose · (the step): a rotation mixes two columns, a translation moves the origin."""
     if turns:
         i, j = turned_plane(axis)
-        c, s = math.cos(amount), math.sin(amount)
+        c, s = (math.cos(amount), math.sin(amount)) if isinstance(amount, float) else _array_cos_sin(amount)
         for row in pose[:3]:
             row[i], row[j] = c * row[i] + s * row[j], c * row[j] - s * row[i]
     else:
         for row in pose[:3]:
-            row[3] += amount * row[axis]
+            row[3] = row[3] + amount * row[axis]  # a new value: copies made earlier share the old one
+
+
+def _array_cos_sin(angles) -> tuple:
+    import numpy  # loaded already: the caller passed numpy arrays
+
+    return numpy.cos(angles), numpy.sin(angles)
+
+
+def _vectorized(function):
+    import numpy  # loaded already: the caller passed numpy arrays
+
+    return numpy.vectorize(function, otypes=[float])
 
 
 def _copy(pose: Pose) -> Pose:
