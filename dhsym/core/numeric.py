@@ -26,7 +26,7 @@ from typing import Callable, Mapping, Sequence
 
 import sympy
 
-from .transforms import joint_axis_frame, turned_plane
+from .transforms import as_expr, joint_axis_frame, turned_plane
 
 Pose = list  # 4×4 floats, row by row: the rotation's columns are the frame's x, y, z axes, column 3 its origin
 
@@ -42,7 +42,7 @@ class NumericChain:
         missing = sorted(s.name for s in fixed_symbols if s.name not in named)
         if missing:
             raise ValueError(f"no number for {', '.join(missing)}")
-        fixed = {s: sympy.sympify(named[s.name]) for s in fixed_symbols}
+        fixed = {s: as_expr(named[s.name]) for s in fixed_symbols}  # numbers only: text is refused
         self.convention = chain.convention
         self.frames = tuple(chain.frames)
         self._first_joint_frame = 1 if chain.base else 0  # the position of frame 0 among `frames`
