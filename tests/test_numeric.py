@@ -91,10 +91,11 @@ def test_the_joint_axis_rule_of_each_convention():
 def test_the_jacobian_takes_its_axes_from_the_same_rule():
     for name in ("puma560", "planar3r", "stanford"):
         chain = dhsym.load(name)
-        numeric = NumericChain(chain, chain.sample)
+        constants = sorted(chain.symbols - set(chain.joint_variables), key=str)
+        lengths = {s: sympy.Rational(k + 2, 3) for k, s in enumerate(constants)}
+        numeric = NumericChain(chain, lengths)
         zero = [0] * chain.n
-        angular = dhsym.velocity.jacobian(chain)[3:, :].xreplace({v: 0 for v in chain.joint_variables})
-        angular = angular.xreplace({s: v for s, v in chain.sample.items()})
+        angular = dhsym.velocity.jacobian(chain)[3:, :].xreplace({v: 0 for v in chain.joint_variables} | lengths)
         for joint, (_, direction) in enumerate(numeric.axes(zero), 1):
             if chain.rows[joint - 1].joint == "R":
                 assert max(abs(float(w) - z) for w, z in zip(angular[:, joint - 1], direction)) < 1e-12
@@ -125,7 +126,7 @@ def test_a_numeric_chain_needs_every_constant_and_one_value_per_joint():
     with pytest.raises(ValueError, match="no number for a_2"):
         NumericChain(chain, {"a_1": 1})
     with pytest.raises(ValueError, match="1 joint values for 2 joints"):
-        NumericChain(chain, chain.sample).end([0])
+        NumericChain(chain, {"a_1": 1, "a_2": 1}).end([0])
 
 
 @given(chains(max_links=4), st.data())
