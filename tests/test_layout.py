@@ -1,5 +1,6 @@
-"""The package's shape: layers import one way, no module takes another's private names, modules
-stay small, commands import only what they need, and a plain `pip install .` works."""
+"""The package's shape: layers import one way, no import cycle (not even through an import inside a
+function), every module imports on its own, no module takes another's private names, modules stay
+small, commands import only what they need, and a plain `pip install .` works."""
 import ast
 import os
 import subprocess
@@ -76,7 +77,7 @@ def _module_names() -> dict[str, Path]:
 
 def _import_graph() -> dict[str, set[str]]:
     """Which dhsym modules each dhsym module imports: relative and absolute imports, at the top or inside a
-    function (one there is a cycle that only a lucky order of first calls keeps from failing).
+    function (a cycle through an import inside a function holds only while the first calls come in a lucky order).
 
     `from .pkg import sub` counts as importing `pkg` (its __init__ runs) and, when `sub` is a module, `sub`.
     Python runs a module's own packages before the module, so importing one of them counts only for a name
