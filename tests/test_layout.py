@@ -1,5 +1,6 @@
-"""The package's shape: layers import one way, no module takes another's private names, modules
-stay small, commands import only what they need, and a plain `pip install .` works."""
+"""The package's shape: layers import one way, no import cycle (not even through an import inside a
+function), every module imports on its own, no module takes another's private names, modules stay
+small, commands import only what they need, and a plain `pip install .` works."""
 import ast
 import os
 import subprocess
@@ -11,10 +12,8 @@ import pytest
 
 PACKAGE = Path(__file__).parent.parent / "dhsym"
 # Each layer may import the layers before it (and itself), never one after it.
-# `checking.verify` (equality by algebra and numbers) is plain math, so it sits right under core;
 # `geometry` (frames from joint axes) is math on core that the robot-file reader uses for `axes:`.
-LAYERS = ["errors", "core", "checking.verify", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot",
-          "checking", "cli"]
+LAYERS = ["errors", "core", "geometry", "io", "velocity", "inverse", "printing", "latex", "plot", "checking", "cli"]
 # Conveniences reach up, lazily inside a method: Jupyter shows a chain or a robot as its DH
 # table, `.jacobian()` and `.ik()` hand over to the layers built on core, and the object
 # `.ik()` returns shows itself as text and LaTeX.
@@ -64,6 +63,108 @@ def test_no_module_imports_a_private_name_of_another():
     private = [f"{name} imports {target}.{n}" for name, path in _modules() for target, names, _ in _imports(name, path)
                for n in names if n.startswith("_")]
     assert private == []
+
+
+
+def _module_names() -> dict[str, Path]:
+    """Each module's full dotted name (`dhsym.latex.velocity`, `dhsym` for the package) and its file."""
+    return {".".join(("dhsym", name) if name else ("dhsym",)): path for name, path in _modules()}
+
+
+def _import_graph() -> dict[str, set[str]]:
+    """Which dhsym modules each dhsym module imports: relative and absolute imports, at the top or inside a
+    function (a cycle through an import inside a function holds only while the first calls come in a lucky order).
+
+    `from .pkg import sub` counts as importing `pkg` (its __init__ runs) and, when `sub` is a module, `sub`.
+    Python runs a module's own packages before the module, so importing one of them counts only for a name
+    that is not a submodule (`from . import NAME` needs the package's __init__ to have got that far)."""
+    modules = _module_names()
+    graph = {}
+    for name, path in modules.items():
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        targets = set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                targets.update(alias.name for alias in node.names)
+            elif isinstance(node, ast.ImportFrom):
+                base = package.split(".")[:len(package.split(".")) - node.level + 1] if node.level else []
+                target = ".".join(base + ([node.module] if node.module else []))
+                submodules = {f"{target}.{alias.name}" for alias in node.names} & modules.keys()
+                targets |= submodules
+                if not name.startswith(target + ".") or len(submodules) < len(node.names):
+                    targets.add(target)
+        graph[name] = {t for t in targets if t in modules and t != name}
+    return graph
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """One cycle (a path that comes back to its start) through each strongly connected group of modules."""
+    order, low, stack, groups = {}, {}, [], []
+
+    def visit(node):  # Tarjan's algorithm; the graph has about 150 nodes, far below the recursion limit
+        order[node] = low[node] = len(order)
+        stack.append(node)
+        for nxt in sorted(graph[node]):
+            if nxt not in order:
+                visit(nxt)
+                low[node] = min(low[node], low[nxt])
+            elif nxt in stack:
+                low[node] = min(low[node], order[nxt])
+        if low[node] == order[node]:
+            group = stack[stack.index(node):]
+            del stack[stack.index(node):]
+            if len(group) > 1:
+                groups.append(set(group))
+
+    for node in sorted(graph):
+        if node not in order:
+            visit(node)
+    return [_shortest_loop(graph, min(group), group) for group in groups]
+
+
+def _shortest_loop(graph: dict[str, set[str]], start: str, group: set[str]) -> list[str]:
+    """The shortest path from `start` back to itself inside `group` (breadth first), e.g. [a, b, a]."""
+    came_from, frontier = {}, [start]
+    while start not in came_from:
+        next_frontier = []
+        for node in frontier:
+            for nxt in sorted(graph[node] & group):
+                if nxt not in came_from:
+                    came_from[nxt] = node
+                    next_frontier.append(nxt)
+        frontier = next_frontier
+    loop = [start, came_from[start]]
+    while loop[-1] != start:
+        loop.append(came_from[loop[-1]])
+    return loop[::-1]
+
+
+def test_cycles_are_found():
+    graph = {"a": {"b"}, "b": {"c"}, "c": {"a", "d"}, "d": set()}
+    assert _cycles(graph) == [["a", "b", "c", "a"]]
+    assert _cycles({"a": {"b"}, "b": set()}) == []
+
+
+def test_no_import_cycle():
+    graph = _import_graph()
+    assert graph["dhsym.latex.velocity"] >= {"dhsym.latex.layout", "dhsym.velocity.jacobian"}  # the graph is read
+    assert [" -> ".join(cycle) for cycle in _cycles(graph)] == []
+
+
+def test_every_module_imports_on_its_own():
+    """Each module imported first in a fresh dhsym (SymPy, numpy and the rest stay loaded, so this is quick)."""
+    names = sorted(name for name in _module_names() if not name.endswith("__main__"))  # __main__ runs the CLI
+    probe = ("import importlib, sys, traceback\n"
+             f"for name in {names!r}:\n"
+             "    for loaded in [m for m in sys.modules if m == 'dhsym' or m.startswith('dhsym.')]:\n"
+             "        del sys.modules[loaded]\n"
+             "    try:\n"
+             "        importlib.import_module(name)\n"
+             "    except Exception as error:\n"
+             "        print(name, '->', traceback.format_exception_only(error)[-1].strip())\n")
+    result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr[-2000:]
+    assert result.stdout.splitlines() == []
 
 
 def test_modules_stay_small():

@@ -51,6 +51,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from ..core.verify import Verdict, check
 from ..io.expr import parse_expression
 from ..printing.printers import LatexPrinter, TextPrinter
 
@@ -60,7 +61,6 @@ from .kinds import corrected as corrected  # noqa: F401
 from .kinds import printed_differences as printed_differences  # noqa: F401
 from .kinds import tally as tally_causes
 from .regroup import difference, printed_terms, regroup
-from .verify import Verdict, check
 
 
 @dataclass

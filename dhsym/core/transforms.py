@@ -77,12 +77,21 @@ def rotation(axis: int, angle: sympy.Expr) -> sympy.Matrix:
     [0,  0, 1]])
     """
     c, s = sympy.cos(angle), sympy.sin(angle)
-    i, j = [k for k in range(3) if k != axis]
-    if axis == 1:  # about y the cyclic order is z, x
-        i, j = j, i
+    i, j = turned_plane(axis)
     m = sympy.eye(4)
     m[i, i], m[i, j], m[j, i], m[j, j] = c, -s, s, c
     return m
+
+
+def turned_plane(axis: int) -> tuple[int, int]:
+    """The axes (i, j) that a rotation about x (0), y (1) or z (2) turns, in right-handed order:
+    e_i turns towards e_j, so the matrix has cos at (i, i) and (j, j), −sin at (i, j), sin at (j, i).
+    Every rotation of dhsym, exact or in floats, is written with it.
+
+    >>> [turned_plane(axis) for axis in range(3)]
+    [(1, 2), (2, 0), (0, 1)]
+    """
+    return ((1, 2), (2, 0), (0, 1))[axis]
 
 
 def translation(axis: int, distance: sympy.Expr) -> sympy.Matrix:
@@ -99,6 +108,19 @@ def link_steps(convention: str, theta, d, a, alpha) -> list[Step]:
     if convention == "modified":
         return [Step("Rx", alpha), Step("Tx", a), Step("Rz", theta), Step("Tz", d)]
     raise UserError(f"unknown convention {convention!r}; use standard or modified")
+
+
+def joint_axis_frame(convention: str, joint: int) -> int:
+    """The frame whose z axis joint `joint` (1..n) turns about or slides along, counted from 0 for
+    the frame before joint 1: z_{i−1} in the standard convention (Spong), z_i in the modified one
+    (Craig). Every place that needs a joint's axis asks here.
+
+    >>> joint_axis_frame("standard", 1), joint_axis_frame("modified", 1)
+    (0, 1)
+    """
+    if convention not in CONVENTIONS:
+        raise UserError(f"unknown convention {convention!r}; use standard or modified")
+    return joint - 1 if convention == "standard" else joint
 
 
 def product(steps) -> sympy.Matrix:

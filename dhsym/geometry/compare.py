@@ -23,12 +23,13 @@ from dataclasses import dataclass
 
 import sympy
 
-from ..checking.verify import algebraically_equal
 from ..core.chain import Chain
 from ..core.estimate import estimated_size
+from ..core.numeric import NumericChain
 from ..core.robot import Robot, as_chain, as_robot
 from ..core.size import expanded_terms, rough_count
-from ..core.transforms import product
+from ..core.transforms import joint_axis_frame
+from ..core.verify import algebraically_equal
 from ..errors import UserError
 from .screws import rate
 
@@ -128,39 +129,17 @@ def _constants(candidate: Chain, reference: Chain, seed: int) -> dict:
 
 
 def _numeric_fk(chain: Chain, constants: dict):
-    """q ↦ base → tool as a flat list of 12 floats, the constants filled in; multiplied link by
-    link in floats, so that its cost grows with the number of joints and not with the expressions."""
-    base, links, tool = _numeric_links(chain, constants)
+    """q ↦ base → tool as a flat list of 12 floats, the constants filled in (core.numeric, step by
+    step in floats, so that its cost grows with the number of joints and not with the expressions)."""
+    numeric = NumericChain(as_chain(chain), constants)
 
     def fk(q):
-        pose = base
-        for link, value in zip(links, q):
-            pose = _times(pose, link(value))
-        flat = [x for row in _times(pose, tool)[:3] for x in row]
+        flat = [x for row in numeric.end(q)[:3] for x in row]
         if not all(math.isfinite(x) for x in flat):
             raise UserError(f"{chain.name or 'the robot'}: base → tool overflows the floating-point numbers at a "
                             "random configuration (lengths too large), so it cannot be compared by numbers")
         return flat
     return fk
-
-
-def _numeric_links(chain: Chain, constants: dict):
-    """The base and tool as 4×4 float matrices, and each link as q_i ↦ its 4×4 float matrix."""
-    fixed = {s: constants[s.name] for s in chain.symbols if s.name in constants}
-    links = [sympy.lambdify([row.variable], product(row.steps(chain.convention)).xreplace(fixed).tolist(),
-                            modules="math") for row in chain.rows]
-    return _float_product(chain.base, fixed), links, _float_product(chain.tool, fixed)
-
-
-def _float_product(steps, fixed: dict) -> list:
-    result = [[float(i == j) for j in range(4)] for i in range(4)]
-    for step in steps:
-        result = _times(result, [[float(x) for x in row] for row in product([step]).xreplace(fixed).tolist()])
-    return result
-
-
-def _times(a: list, b: list) -> list:
-    return [[sum(a[r][m] * b[m][c] for m in range(4)) for c in range(4)] for r in range(4)]
 
 
 def _close(a, b) -> bool:
@@ -314,27 +293,15 @@ def _same(axis, other) -> bool:
 
 
 def _axes_at(chain: Chain, values: dict):
-    """q ↦ every joint axis (point, direction) in the base frame at configuration q."""
-    base, links, _ = _numeric_links(chain, values)
+    """q ↦ every joint axis (point, direction) in the base frame at configuration q, each direction
+    along the joint's positive motion (d = −d3 moves along −z)."""
+    numeric = NumericChain(as_chain(chain), values)
     fixed = {s: values[s.name] for s in chain.symbols if s.name in values}
     signs = [float(rate(row).xreplace(fixed)) for row in chain.rows]
 
     def axes(q):
-        pose, found = base, []
-        for link, value, sign in zip(links, q, signs):
-            if chain.convention == "standard":
-                found.append(_axis(pose, sign))
-                pose = _times(pose, link(value))
-            else:
-                pose = _times(pose, link(value))
-                found.append(_axis(pose, sign))
-        return found
+        return [(point, [sign * x for x in direction]) for (point, direction), sign in zip(numeric.axes(q), signs)]
     return axes
-
-
-def _axis(pose: list, sign: float) -> tuple:
-    """The z axis of a pose: its origin and its direction times `sign`."""
-    return [pose[r][3] for r in range(3)], [sign * pose[r][2] for r in range(3)]
 
 
 def _exact_shift(delta: float, joint: str) -> sympy.Expr:
@@ -374,7 +341,7 @@ def _first_axis_difference(candidate: Robot, reference: Robot, values: dict, not
 
 def _where_to_look(chain: Robot, number: int, what: str) -> str:
     """The row that places joint `number`'s axis: row number−1 in standard DH, its own row in modified."""
-    row = number - 1 if chain.convention == "standard" else number  # numbered as the table numbers them
+    row = joint_axis_frame(chain.convention, number)  # numbered as the table numbers them
     if row == chain.frame_offset:
         return "check the base steps"
     return f"check {what} in row {row}" + (" and the rows before it" if row > chain.frame_offset + 1 else "")

@@ -18,6 +18,8 @@ from fractions import Fraction
 
 import sympy
 
+from ..core import vectors
+
 ANGLE_TOLERANCE = 1e-5  # radians: 1.5708 is 3.7e-6 from π/2
 DIRECTION_TOLERANCE = 1e-5  # per component of a unit vector
 LENGTH_NOISE = 1e-9  # metres: a written -1.2e-17 is rounding noise, not a length
@@ -93,11 +95,13 @@ def unit(v: sympy.Matrix) -> sympy.Matrix:
 
 
 def cross(u: sympy.Matrix, v: sympy.Matrix) -> sympy.Matrix:
-    return tidy_vector(u.cross(v))
+    """u × v (core.vectors), tidied: the exact column the frame rules compare and print."""
+    return tidy_vector(sympy.Matrix(vectors.cross(u, v)))
 
 
 def dot(u: sympy.Matrix, v: sympy.Matrix):
-    return tidy(u.dot(v))
+    """u · v (core.vectors), tidied."""
+    return tidy(vectors.dot(u, v))
 
 
 def snap_angle(text: str) -> tuple[sympy.Expr, bool]:

@@ -17,7 +17,8 @@ from dataclasses import dataclass
 
 import sympy
 
-from ..core.transforms import product
+from ..core.transforms import Step, joint_axis_frame, product
+from ..core.vectors import cross
 from ..errors import UserError
 from .lines import JointAxis
 
@@ -35,18 +36,12 @@ def zero_poses(chain) -> list[sympy.Matrix]:
     """The pose of each joint's frame at the zero configuration (the frame whose z is the
     joint axis: i−1 in standard DH, i in modified), then the last frame's pose (tool, else n)."""
     zero = {v: 0 for v in chain.joint_variables}
-    pose = product(chain.base)
-    joint_frames = []
+    frames = [product(chain.base)]  # frame 0, then 1..n
     for row in chain.rows:
-        steps = [step.__class__(step.kind, step.value.xreplace(zero)) for step in row.steps(chain.convention)]
-        if chain.convention == "standard":
-            joint_frames.append(pose)
-            pose = pose * product(steps)
-        else:
-            pose = pose * product(steps)
-            joint_frames.append(pose)
-    pose = pose * product(chain.tool)
-    return [_tidy(p) for p in joint_frames + [pose]]
+        steps = [Step(step.kind, step.value.xreplace(zero)) for step in row.steps(chain.convention)]
+        frames.append(frames[-1] * product(steps))
+    joint_frames = [frames[joint_axis_frame(chain.convention, joint)] for joint in range(1, chain.n + 1)]
+    return [_tidy(p) for p in joint_frames + [frames[-1] * product(chain.tool)]]
 
 
 def rate(row) -> sympy.Expr:
@@ -75,7 +70,7 @@ def screw_axes(chain) -> Screws:
     for row, pose in zip(chain.rows, poses):
         direction, point = rate(row) * pose[:3, 2], pose[:3, 3]
         if row.joint == "R":
-            columns.append(list(direction) + list(-direction.cross(point)))
+            columns.append(list(direction) + [-x for x in cross(direction, point)])
         else:
             columns.append([0, 0, 0] + list(direction))
     matrix = sympy.Matrix(columns).T.applyfunc(lambda e: sympy.simplify(sympy.expand(e)))

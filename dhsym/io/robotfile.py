@@ -31,9 +31,8 @@ from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
 from .expr import Reading, parse_expression
 from .suspicious import misplaced_variable, misspelt_pi, near_multiple_of_pi, printed_key, printed_text
-from .yamlsafe import YAML_TAG, compose, mark_location, read_text_file
+from .yamlsafe import MAX_JOINTS, YAML_TAG, compose, mark_location, read_text_file
 
-MAX_JOINTS = 24
 TOP_KEYS = ("name", "source", "convention", "joints", "axes", "base", "tool", "sample", "notes", "first_frame")
 ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}

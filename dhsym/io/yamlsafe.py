@@ -24,6 +24,7 @@ from .yamlhints import explain
 
 MAX_FILE_BYTES = 1 << 20
 MAX_YAML_DEPTH = 10  # a robot file needs 3 (file, joints list, row)
+MAX_JOINTS = 24  # of one robot file, DH rows or axes
 MAX_YAML_NODES = 20_000  # a 24-joint robot with notes needs a few hundred
 YAML_TAG = "tag:yaml.org,2002:"  # prefix of the core schema tags: null, bool, int, ...
 

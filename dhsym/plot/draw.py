@@ -1,7 +1,8 @@
 """Pictures of DH chains: links, joints and the x/y/z triad of every frame, drawn with matplotlib.
 
 Planar arms are drawn in their plane, spatial arms in 3D with equal axis scaling. The numeric
-poses come from dhsym.plot.poses; the package dhsym.plot gathers what a notebook needs.
+poses come from dhsym.plot.poses (core.numeric's forward kinematics); the package dhsym.plot
+gathers what a notebook needs.
 
 >>> from dhsym.io.library import load
 >>> ax = draw(load("planar2r"), {"theta_1": "30deg"})
@@ -18,6 +19,7 @@ from pathlib import Path
 import numpy as np
 import sympy
 
+from ..core.vectors import cross
 from ..errors import UserError
 from ..io.output import write_atomic
 from .labels import Label, place_labels
@@ -307,7 +309,7 @@ def _best_azimuth(segments) -> float:
     def seen_length(azimuth: float) -> float:
         elevation, azimuth = np.radians(VIEW["elev"]), np.radians(azimuth)
         view = np.array([np.cos(elevation) * np.cos(azimuth), np.cos(elevation) * np.sin(azimuth), np.sin(elevation)])
-        return sum(np.linalg.norm(np.cross(b - a, view)) for a, b in segments)
+        return sum(np.linalg.norm(cross(b - a, view)) for a, b in segments)
 
     candidates = range(-120, -29, 15)  # from the front right: x toward the viewer, y to the right, z up
     best = max(seen_length(a) for a in candidates)

@@ -15,6 +15,7 @@ import numpy as np
 import sympy
 
 from ..core.chain import Chain
+from ..core.numeric import NumericChain, origin
 from ..core.robot import as_chain
 from ..errors import UserError
 from ..io.expr import parse_expression
@@ -91,18 +92,6 @@ def as_number(value, name: str) -> float:
     return number
 
 
-def _step_matrix(kind: str, value: float) -> np.ndarray:
-    matrix = np.eye(4)
-    axis = "xyz".index(kind[1])
-    if kind[0] == "T":
-        matrix[axis, 3] = value
-        return matrix
-    i, j = ((1, 2), (2, 0), (0, 1))[axis]  # the plane turned by a rotation about x, y, z
-    c, s = np.cos(value), np.sin(value)
-    matrix[i, i], matrix[i, j], matrix[j, i], matrix[j, j] = c, -s, s, c
-    return matrix
-
-
 @dataclass
 class Skeleton:
     """What a picture needs: frame poses, the link polyline and where the joints are."""
@@ -114,39 +103,23 @@ class Skeleton:
 
 
 def skeleton(chain, values) -> Skeleton:
-    """The numeric picture of `chain` at `values` (see resolve_values)."""
+    """The numeric picture of `chain` at `values` (see resolve_values), from core.numeric."""
     numbers = resolve_values(chain, values)
-    pose = np.eye(4)
-
-    def move(steps) -> list:
-        nonlocal pose
-        points = []
-        for step in steps:
-            pose = pose @ _step_matrix(step.kind, float(sympy.sympify(step.value).xreplace(numbers)))
-            points.append(pose[:3, 3].copy())
-        return points
-
-    poses, ground, links, joints = [], [pose[:3, 3].copy()], [], []
-    if chain.base:
-        poses.append(("base", pose.copy()))
-        move(chain.base)
-        ground.append(pose[:3, 3].copy())
-    poses.append((0, pose.copy()))
-    links.append(pose[:3, 3].copy())
-    for number, row in enumerate(chain.rows, 1):
-        if chain.convention == "standard":  # joint i turns about z_{i-1}
-            joints.append((row.joint, pose[:3, 3].copy()))
+    q = [numbers[v] for v in chain.joint_variables]
+    numeric = NumericChain(as_chain(chain), numbers)
+    walk = numeric.walk(q)  # (frame, the poses after each step that leads to it)
+    poses = [(frame, np.array(after[-1])) for frame, after in walk]
+    points = [np.array(origin(after[-1])) for _, after in walk]  # each frame's origin
+    zero = 1 if chain.base else 0  # where frame 0 is in `walk`
+    ground = points[:2] if chain.base else []
+    links = [points[zero]]
+    for _, after in walk[zero + 1:zero + 1 + chain.n]:
         # the corner after Tz(d) (standard) or Tx(a) (modified): a row with both d and a bends there
-        corner = move(row.steps(chain.convention))[1]
-        links.extend([corner, pose[:3, 3].copy()])
-        if chain.convention == "modified":  # joint i turns about z_i
-            joints.append((row.joint, pose[:3, 3].copy()))
-        poses.append((number, pose.copy()))
+        links += [np.array(origin(after[1])), np.array(origin(after[-1]))]
     if chain.tool:
-        move(chain.tool)
-        links.append(pose[:3, 3].copy())
-        poses.append(("tool", pose.copy()))
-    return Skeleton(poses, ground if chain.base else [], _without_repeats(links), joints)
+        links.append(points[-1])
+    joints = [(row.joint, np.array(point)) for row, (point, _) in zip(chain.rows, numeric.axes(q))]
+    return Skeleton(poses, ground, _without_repeats(links), joints)
 
 
 def _without_repeats(points: list) -> list:

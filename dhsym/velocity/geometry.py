@@ -1,7 +1,8 @@
 """Numbers for the geometric questions the symbolic results raise: where the joint axes are in a
 given configuration, whether three axes meet (a wrist centre), where a factor vanishes.
 
-Plain floats, no numpy: the velocity layer sits below the plotting layer.
+The poses come from core.numeric, the one numeric evaluator (plain floats, no numpy: the velocity
+layer sits below the plotting layer); the vectors from core.vectors.
 
 >>> import dhsym
 >>> wrist_centre(dhsym.load("puma560")), wrist_centre(dhsym.load("stanford")), wrist_centre(dhsym.load("ur5"))
@@ -12,7 +13,13 @@ from __future__ import annotations
 import math
 import random
 
-from .jacobian import cross  # one cross product, for symbols and for numbers
+from ..core.numeric import NumericChain
+from ..core.vectors import cross, dot
+from .jacobian import axis_frame
+
+# cross and dot live in core.vectors; they are named here too for the modules that take them from here
+__all__ = ["TOLERANCE", "axis_line", "cross", "distance_to_axis", "dot", "minus", "poses", "sample_values",
+           "wrist_centre"]
 
 TOLERANCE = 1e-9
 
@@ -34,43 +41,15 @@ def sample_values(chain, rng: random.Random, sample=None) -> dict:
 
 def poses(chain, values: dict) -> dict:
     """Frame -> (rotation rows, origin) in the first frame, for numbers `values` of every symbol."""
-    rotation, origin = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], [0.0, 0.0, 0.0]
-    frames = chain.frames
-    out = {frames[0]: (rotation, origin)}
-    for before, frame in zip(frames, frames[1:]):
-        for step in chain.steps(before, frame):
-            amount = float(step.value.xreplace(values))
-            if step.is_rotation:
-                rotation = _times(rotation, _elementary(step.axis, amount))
-            else:
-                origin = [origin[r] + rotation[r][step.axis] * amount for r in range(3)]
-        out[frame] = (rotation, origin)
-    return out
-
-
-def _elementary(axis: int, angle: float) -> list:
-    c, s = math.cos(angle), math.sin(angle)
-    i, j = [k for k in range(3) if k != axis]
-    if axis == 1:
-        i, j = j, i
-    m = [[1.0 if r == k else 0.0 for k in range(3)] for r in range(3)]
-    m[i][i], m[i][j], m[j][i], m[j][j] = c, -s, s, c
-    return m
-
-
-def _times(a, b) -> list:
-    return [[sum(a[r][k] * b[k][c] for k in range(3)) for c in range(3)] for r in range(3)]
+    numeric = NumericChain(chain, values)
+    return {frame: ([row[:3] for row in pose[:3]], [row[3] for row in pose[:3]])
+            for frame, pose in numeric.poses([values[v] for v in chain.joint_variables])}
 
 
 def axis_line(chain, joint: int, frame_poses: dict) -> tuple:
     """(a point on the axis of `joint`, its unit direction), from `poses`."""
-    frame = joint - 1 if chain.convention == "standard" else joint
-    rotation, origin = frame_poses[frame]
+    rotation, origin = frame_poses[axis_frame(chain, joint)]
     return origin, [rotation[r][2] for r in range(3)]
-
-
-def dot(u, v) -> float:
-    return sum(a * b for a, b in zip(u, v))
 
 
 def minus(u, v) -> list:
@@ -92,7 +71,7 @@ def wrist_centre(chain, trials: int = 3, sample=None):
         return None
     rng = random.Random(7)
     configurations = [poses(chain, sample_values(chain, rng, sample)) for _ in range(trials)]
-    first = chain.frames.index(n - 3 if chain.convention == "standard" else n - 2)
+    first = chain.frames.index(axis_frame(chain, n - 2))
     for frame in reversed(chain.frames[first:]):
         if all(distance_to_axis(pose[frame][1], axis_line(chain, j, pose)) < TOLERANCE
                for pose in configurations for j in (n - 2, n - 1, n)):

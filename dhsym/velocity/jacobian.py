@@ -37,6 +37,8 @@ from ..core.estimate import estimated_size
 from ..core.robot import as_chain, as_robot
 from ..core.simplify import block_matrix, collect_by_trig, merge_steps, split_into_blocks
 from ..core.size import length
+from ..core.transforms import joint_axis_frame
+from ..core.vectors import cross
 from ..errors import UserError
 
 ROWS = ("vx", "vy", "vz", "ωx", "ωy", "ωz")
@@ -81,7 +83,7 @@ def axis_frame(chain, joint: int):
     """
     if not 1 <= joint <= chain.n:
         raise UserError(f"no joint {joint}; joints are 1..{chain.n}")
-    return joint - 1 if chain.convention == "standard" else joint
+    return joint_axis_frame(chain.convention, joint)
 
 
 def moves(chain, joint: int, point) -> bool:
@@ -197,11 +199,6 @@ def derivative(expr, variable):
     if expr.is_Pow and expr.exp.is_Integer:
         return expr.exp * expr.base ** (expr.exp - 1) * derivative(expr.base, variable)
     return sympy.diff(expr, variable)
-
-
-def cross(u, v) -> tuple:
-    """u × v, written without expanding either factor."""
-    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
 
 
 def rotate(chain, target, source, vector) -> tuple:

@@ -31,7 +31,8 @@ from sympy.simplify.fu import TR10i
 from ..core.robot import as_robot
 from ..core.simplify import collect_by_trig
 from ..core.size import length
-from .jacobian import ZERO, cross, derivative, gain, rotate
+from ..core.vectors import cross
+from .jacobian import ZERO, axis_frame, derivative, gain, rotate
 
 
 @dataclass(frozen=True)
@@ -65,7 +66,7 @@ def propagate(chain) -> list[Step]:
         rate = rates[joint - 1] * gain(chain, joint) if joint else 0
         prismatic = bool(joint) and chain.rows[joint - 1].joint == "P"
         z = (0, 0, rate)
-        if joint and chain.convention == "standard":  # the axis of joint i is z_{i-1}
+        if joint and axis_frame(chain, joint) == before:  # the axis is z of the frame before (standard DH)
             omega = rotate(chain, frame, before, omega if prismatic else _add(omega, z))
             back = chain.transform(frame, before)[:3, 3]  # ⁱp_{i−1}: the link, short in frame i
             velocity = _add(rotate(chain, frame, before, _add(velocity, z) if prismatic else velocity),

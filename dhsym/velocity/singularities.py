@@ -36,7 +36,8 @@ from dataclasses import dataclass
 import sympy
 
 from ..core.robot import as_robot
-from .geometry import TOLERANCE, axis_line, cross, distance_to_axis, dot, minus, poses, sample_values, wrist_centre
+from ..core.vectors import cross, dot
+from .geometry import TOLERANCE, axis_line, distance_to_axis, minus, poses, sample_values, wrist_centre
 from .jacobian import resolve_frames
 
 SCAN_STEPS = 720
