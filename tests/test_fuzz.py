@@ -318,7 +318,7 @@ def test_offsets_print_as_written_and_mean_the_same(offsets, function, signs):
     becomes sin(x + π/4)); the printers give it back as written, and the text means the same value."""
     reading = Reading()
     written = [parse_expression(o, reading=reading) for o in offsets]
-    chain = Chain([DHRow.revolute(q + o, variable=q) for q, o in zip(JOINTS, written)], "standard",
+    chain = Robot(Chain([DHRow.revolute(q + o, variable=q) for q, o in zip(JOINTS, written)], "standard"),
                   numbers=reading.numbers)
     settings_ = chain_settings(chain)
     value = function(sympy.Add(*(sign * (q + o) for sign, q, o in zip(signs, JOINTS, written))))
