@@ -26,6 +26,7 @@ from ..errors import UserError
 from .codegen import module_text
 from .evaluate import evaluate
 from .solve import solve
+from .written import as_written, with_written_symbols
 
 POSE_DOF = 6  # a pose fixes six numbers: a closed form has finitely many branches for at most six unknowns
 
@@ -53,8 +54,13 @@ def free_variables(chain, names, option: str = "--free") -> tuple:
 
 
 def inverse_kinematics(chain, free=()) -> "InverseKinematics":
-    """The solution of `chain` with the joint variables `free` kept as parameters."""
-    return InverseKinematics(solve(chain, free=free_variables(chain, free)))
+    """The solution of `chain` with the joint variables `free` kept as parameters, its decimals
+    as the robot file wrote them (solved as symbols, see dhsym.inverse.written)."""
+    variables = free_variables(chain, free)
+    numbers = chain.numbers  # how the file wrote its numbers: the one place this reads it
+    solving, written = with_written_symbols(chain, numbers)
+    solution = solve(solving, free=variables)
+    return InverseKinematics(as_written(solution, chain, numbers) if written else solution)
 
 
 class InverseKinematics:

@@ -20,9 +20,11 @@ from __future__ import annotations
 import re
 
 import sympy
+from sympy.printing.precedence import PRECEDENCE, precedence
 
 from ..errors import UserError
 from ..inverse.solution import TARGET_NAMES
+from ..inverse.written import Written
 from ..io.expr import parse_expression, real_symbol
 from . import render
 from .notation import GREEK_NAMES, display_name
@@ -38,10 +40,23 @@ class _InverseNotation:
 
     def _setup(self):
         super()._setup()
-        joint_key = self.notation.term_key
-        # an instance attribute: the printers ask the notation for the order of terms
+        joint_key, factor_key = self.notation.term_key, self.notation.factor_key
+        # instance attributes: the printers ask the notation for the order of terms and factors
         self.notation.term_key = lambda term: (not _has_target(term), term.could_extract_minus_sign(),
                                                joint_key(term))
+        self.notation.factor_key = lambda factor: (not _is_written(factor), factor_key(factor))
+
+    def _print_Written(self, expr):
+        """A number as the robot file wrote it (see dhsym.inverse.written): 0.0823."""
+        return expr.name
+
+    def _join(self, pieces):
+        """Factors side by side; two numbers that could not be made one (0.089159² · 0.0823) get a dot."""
+        out = pieces[0]
+        for piece in pieces[1:]:
+            numbers = out[-1:].isdigit() and piece[:1].isdigit()
+            out = out + self._times + piece if numbers else super()._join([out, piece])
+        return out
 
     def _print_Symbol(self, expr):
         if expr.name in _TARGET:
@@ -52,12 +67,18 @@ class _InverseNotation:
         return ", ".join(self._print(argument) for argument in expr.args)
 
 
+def _is_written(factor) -> bool:
+    return isinstance(factor.base if factor.is_Pow else factor, Written)
+
+
 def _has_target(term) -> bool:
     return any(symbol.name in _TARGET for symbol in term.free_symbols)
 
 
 class IKTextPrinter(_InverseNotation, TextPrinter):
     """Text: atan2(py, px), acos(D), √(1 − D²)."""
+
+    _times = " · "
 
     def _print_atan2(self, expr):
         return f"atan2({self._arguments(expr)})"
@@ -76,6 +97,8 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
 class IKLatexPrinter(_InverseNotation, LatexPrinter):
     r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
 
+    _times = " \\cdot "
+
     def _print_atan2(self, expr):
         return f"\\mathrm{{atan2}}({self._arguments(expr)})"
 
@@ -89,6 +112,26 @@ class IKLatexPrinter(_InverseNotation, LatexPrinter):
         if top.startswith("(") and _one_group(top):  # \frac{a + b}{c}, not \frac{(a + b)}{c}
             top = top[1:-1]
         return super()._fraction(top, bottom, grouped)
+
+
+class IKExactPrinter(ExactPrinter):
+    """The JSON form: a written number first in its product, as the file's numbers are written
+    (`0.0823*r13`, not `r13*0.0823`); sympy.sympify reads it back."""
+
+    def _print_Written(self, expr):
+        return expr.name
+
+    def _print_Mul(self, expr):
+        coefficient, rest = expr.as_coeff_Mul()
+        factors = sympy.Mul.make_args(rest)
+        lead = next((f for f in factors if isinstance(f, Written)), None)
+        if lead is None or coefficient not in (1, -1) or len(factors) < 2:
+            return super()._print_Mul(expr)
+        others = sympy.Mul(*(f for f in factors if f is not lead))
+        text = self._print(others)
+        if precedence(others) < PRECEDENCE["Mul"] or text.startswith("1/") or text.startswith("-"):
+            text = f"({text})"
+        return ("-" if coefficient < 0 else "") + f"{lead.name}*{text}"
 
 
 def _one_group(text: str) -> bool:
@@ -300,7 +343,7 @@ def json_solution(solution) -> dict:
     """The JSON contract: full forms with the robot file's names and decimals as written;
     `sympy.sympify` reads every expression back."""
     chain = solution.chain
-    exact = ExactPrinter(chain_settings(chain))
+    exact = IKExactPrinter(chain_settings(chain))
     pairs = lambda items: [[name.name, exact.doprint(value)] for name, value in items]  # noqa: E731
     return {
         "robot": chain.name,
