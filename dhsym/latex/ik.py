@@ -23,7 +23,6 @@ import re
 import sympy
 
 from ..printing.ik import (
-    IDENTIFIER,
     RELATIONS,
     latex_name,
     latex_printer,
@@ -141,10 +140,9 @@ def latex_sentence(text: str, names, printer) -> str:
             out.append(f"${printer.doprint(part[1])}{RELATIONS['latex'][part[2]]}{printer.doprint(part[3])}$")
             continue
         position = 0
-        for match in IDENTIFIER.finditer(part[1]):
-            if match.group(0) in part[2]:
-                out += [prose(part[1][position:match.start()]), f"${printer.doprint(part[2][match.group(0)])}$"]
-                position = match.end()
+        for start, end, expression in part[2]:
+            out += [prose(part[1][position:start]), f"${printer.doprint(expression)}$"]
+            position = end
         out.append(prose(part[1][position:]))
     return "".join(out)
 

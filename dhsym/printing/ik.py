@@ -146,7 +146,8 @@ def _one_group(text: str) -> bool:
 
 
 _RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
-IDENTIFIER = re.compile(r"(?<![\w.])[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(])")
+_TERM = r"(?:(?:sin|cos)\([^()]*\)|[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(]))"
+_MATH_RUN = re.compile(rf"(?<![\w.]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5)
 RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
              "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
 
@@ -154,11 +155,16 @@ RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", "
 def sentence_parts(text: str, names) -> list:
     """A solver's sentence ("1 - D**2 >= 0 (else …)", "a_3 = 0 and d_4 = 0: theta_3 is not
     determined") as parts to print: ("relation", lhs, operator, rhs) for each relation it starts
-    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, symbols)
-    for the rest, with the `names` it mentions. A sentence that starts with no relation stays words.
+    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, math) for
+    the rest, where `math` lists (start, end, expression) for the names, sums of names and sines
+    and cosines of them that the words mention (theta_2 + theta_3, sin(theta_5)), each printed
+    as math. A sentence that starts with no relation stays words.
 
     >>> sentence_parts("1 - D**2 >= 0 (else no branch)", ["D"])[0]
     ('relation', 1 - D**2, '>=', 0)
+    >>> sentence_parts("only theta_4 + theta_6 is determined; the factor sin(theta_5)", ["theta_4", "theta_5",
+    ...                "theta_6"])[0][2]
+    [(5, 22, theta_4 + theta_6), (49, 61, sin(theta_5))]
     """
     cuts = [len(text)] + [m.start() for m in re.finditer(r": | \(", text)]
     for cut in sorted(set(cuts)):
@@ -170,7 +176,7 @@ def sentence_parts(text: str, names) -> list:
 
 
 def _relations(math: str) -> list:
-    """[("relation", lhs, operator, rhs), ("words", " and ", {}), …] for `math`, or [] if it is not
+    """[("relation", lhs, operator, rhs), ("words", " and ", []), …] for `math`, or [] if it is not
     a conjunction of relations the safe parser reads."""
     parts = []
     for clause in math.split(" and "):
@@ -182,15 +188,26 @@ def _relations(math: str) -> list:
         if sides is None:
             return []
         if parts:
-            parts.append(("words", " and ", {}))
+            parts.append(("words", " and ", []))
         parts.append(("relation", sides[0], match.group(2), sides[1]))
     return parts
 
 
-def _mentioned(text: str, names) -> dict:
-    """{name: its symbol} for the chain's and the solution's names that `text` mentions."""
-    wanted = set(names)
-    return {m.group(0): real_symbol(m.group(0)) for m in IDENTIFIER.finditer(text) if m.group(0) in wanted}
+def _mentioned(text: str, names) -> list:
+    """(start, end, expression) for each run of math in `text` that names only the chain's and the
+    solution's names: a name, a sum of them, sin or cos of them."""
+    wanted, found = set(names), []
+    for match in _MATH_RUN.finditer(text):
+        used = {m.group(0) for m in re.finditer(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?", match.group(0))}
+        if not used - {"sin", "cos"} or not used - {"sin", "cos"} <= wanted:
+            continue
+        try:
+            expression = parse_expression(match.group(0))
+        except UserError:
+            continue
+        found.append((match.start(), match.end(), expression.xreplace({s: real_symbol(s.name)
+                                                                         for s in expression.free_symbols})))
+    return found
 
 
 def solution_names(solution) -> list[str]:
@@ -200,20 +217,23 @@ def solution_names(solution) -> list[str]:
 
 
 def text_sentence(text: str, names, printer) -> str:
-    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5² = 0: θ4 is not determined'."""
+    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5 = 0: only θ4 + θ6 is determined'."""
     out = []
     for part in sentence_parts(text, names):
         if part[0] == "relation":
             out.append(printer.doprint(part[1]) + RELATIONS["text"][part[2]] + printer.doprint(part[3]))
         else:
-            out.append(_names_printed(part[1], part[2], printer))
+            out.append(_math_printed(part[1], part[2], printer))
     return "".join(out)
 
 
-def _names_printed(text: str, mentioned: dict, printer) -> str:
-    """`text` with each name in `mentioned` as the printer writes it: theta_1 -> θ1."""
-    return IDENTIFIER.sub(lambda m: printer.doprint(mentioned[m.group(0)]) if m.group(0) in mentioned
-                          else m.group(0), text)
+def _math_printed(text: str, math, printer) -> str:
+    """`text` with each run of math in `math` as the printer writes it: sin(theta_5) -> s5."""
+    out, position = [], 0
+    for start, end, expression in math:
+        out += [text[position:start], printer.doprint(expression)]
+        position = end
+    return "".join(out) + text[position:]
 
 
 def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
