@@ -25,6 +25,7 @@ from __future__ import annotations
 from ..errors import UserError
 from .codegen import module_text
 from .evaluate import evaluate
+from .naming import checked_names
 from .solve import solve
 from .written import as_written, with_written_symbols
 
@@ -60,7 +61,8 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     numbers = chain.numbers  # how the file wrote its numbers: the one place this reads it
     solving, written = with_written_symbols(chain, numbers)
     solution = solve(solving, free=variables)
-    return InverseKinematics(as_written(solution, chain, numbers) if written else solution)
+    solution = as_written(solution, chain, numbers) if written else solution
+    return InverseKinematics(checked_names(solution, evaluate))
 
 
 class InverseKinematics:

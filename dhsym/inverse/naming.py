@@ -1,0 +1,141 @@
+"""Branch names that say what is true of the arm. The solver names a branch by the sign of each
+square root it chose (dhsym.inverse.branches): + is "shoulder right", "elbow down". For a planar
+arm that is the book's own definition (Spong's elbow down and up, by the sign of the root). For a
+spatial arm whose shoulder is joints 1 and 2 (axes crossing at right angles) and whose elbow is
+joint 3 (parallel to joint 2), the words are checked against the geometry a textbook draws, with
+z0 pointing up, at three poses:
+
+- shoulder right / left: seen from above, the plane in which the arm swings (normal to axis 2,
+  through the wrist centre) lies to the right / left of the line from axis 1 to the wrist centre,
+  as a person's right or left arm does (the PUMA's two shoulder configurations; for an arm with no
+  wrist centre whose axis 4 is parallel to axis 2, as the UR5's, the point where axis 5 meets
+  axis 4 stands for it);
+- elbow up / down: the elbow (on axis 3) above / below the line from the shoulder (on axis 2) to
+  the wrist centre, in that plane.
+
+Where the words hold they are given by that geometry; where they cannot be checked (the arm is not
+of that shape, or the arm plane passes through axis 1) the name says the root instead: "shoulder
++√", "elbow −√".
+
+>>> import dhsym
+>>> [branch.name for branch in dhsym.load("puma560").ik().branches][:2]
+['shoulder left, elbow up, wrist not flipped', 'shoulder left, elbow up, wrist flipped']
+"""
+from __future__ import annotations
+
+import math
+import random
+import re
+from dataclasses import replace
+
+from ..velocity.geometry import axis_line, distance_to_axis, dot, minus, poses, sample_values, wrist_centre
+from ..velocity.jacobian import cross
+from .branches import WORDS
+from .solution import Branch
+
+POSES = 3  # the words must hold at every one of these poses
+TOLERANCE = 1e-7
+_ROLE = re.compile(r"\b(shoulder|elbow)( \([^)]*\))? (right|left|up|down)\b")
+DEFINITIONS = ("shoulder right/left: seen from above (z0 up), the arm's plane lies right/left of the line from axis 1 "
+               "to the {wrist}; elbow up/down: the elbow above/below the line from the shoulder to the {wrist}")
+
+
+def checked_names(solution, evaluate):
+    """`solution` with its shoulder and elbow words checked (see the module docstring); `evaluate`
+    gives every branch's joint values at a pose (dhsym.inverse.evaluate)."""
+    if not any(_ROLE.search(branch.name) for branch in solution.branches):
+        return solution
+    chain = solution.chain
+    if _planar(chain):
+        return solution  # the book's names: the sign of the root
+    labels = _geometry(solution, evaluate) if not solution.free else None
+    names = []
+    for number, branch in enumerate(solution.branches):
+        label = labels[number] if labels else None
+        names.append(_ROLE.sub(lambda m, label=label: _word(m, label), branch.name))
+    if len(set(names)) < len(names):  # the geometry did not tell the branches apart: say the roots
+        names = [_ROLE.sub(lambda m: _word(m, None), branch.name) for branch in solution.branches]
+    said = any(labels[number][role] for number in range(len(names)) for role in labels[number]) if labels else False
+    branches = tuple(Branch(name, branch.assignments) for name, branch in zip(names, solution.branches))
+    wrist = "wrist centre" if wrist_centre(chain) is not None else "point where axes 4 and 5 meet"
+    method = f"{solution.method}; branch names: {DEFINITIONS.format(wrist=wrist)}" if said else solution.method
+    return replace(solution, branches=branches, method=method)
+
+
+def _word(match, label) -> str:
+    role, joint, word = match.group(1), match.group(2) or "", match.group(3)
+    if label and label.get(role):
+        return f"{role}{joint} {label[role]}"
+    sign = "+" if word == WORDS[role][0] else "−"
+    return f"{role}{joint} {sign}√"
+
+
+def _planar(chain) -> bool:
+    """Whether every revolute axis is parallel to the first (a planar arm, a SCARA)."""
+    rng = random.Random(3)
+    frames = poses(chain, sample_values(chain, rng))
+    first = axis_line(chain, 1, frames)[1]
+    return all(_length(cross(first, axis_line(chain, j, frames)[1])) < TOLERANCE
+               for j, row in enumerate(chain.rows, 1) if row.joint == "R")
+
+
+def _geometry(solution, evaluate):
+    """[{"shoulder": "left" | "right" | None, "elbow": "up" | "down" | None}] per branch, the same at
+    every pose tried, or None if the arm is not of the shape the words describe."""
+    chain = solution.chain
+    if chain.n < 4 or any(row.joint != "R" for row in chain.rows[:2]):
+        return None
+    centre = wrist_centre(chain)
+    rng = random.Random(16)
+    found: list = [None] * len(solution.branches)
+    for _ in range(POSES):
+        values = sample_values(chain, rng)
+        rotation, origin = poses(chain, values)[chain.last_frame]
+        target = [[*rotation[r], origin[r]] for r in range(3)] + [[0.0, 0.0, 0.0, 1.0]]
+        for number, joints in enumerate(evaluate(solution, target)):
+            if any(math.isnan(x) for x in joints):
+                continue
+            label = _labels(chain, {**values, **dict(zip(solution.joint_variables, map(float, joints)))}, centre)
+            if label is None:
+                return None
+            if found[number] is None:
+                found[number] = label
+            found[number] = {role: word if found[number][role] == word else None for role, word in label.items()}
+    return [label or {"shoulder": None, "elbow": None} for label in found]
+
+
+def _labels(chain, values: dict, centre):
+    """The shoulder's and the elbow's words at one configuration, or None if the arm's shape does not fit."""
+    frames = poses(chain, values)
+    _, up = axis_line(chain, 1, frames)
+    shoulder, across = axis_line(chain, 2, frames)
+    elbow, third = axis_line(chain, 3, frames)
+    if abs(dot(up, across)) > TOLERANCE:
+        return None
+    has_elbow = chain.rows[2].joint == "R" and _length(cross(across, third)) < TOLERANCE
+    if centre is not None:
+        wrist = frames[centre][1]
+    else:
+        point, fourth = axis_line(chain, 4, frames)
+        if _length(cross(across, fourth)) > TOLERANCE:
+            return None
+        fifth = axis_line(chain, 5, frames)[0] if chain.n >= 5 else point
+        # where axis 5 meets axis 4 (the UR5's wrist, d4 along axis 4 from the arm's plane)
+        wrist = fifth if distance_to_axis(fifth, (point, fourth)) < TOLERANCE else point
+    reach, bend = minus(wrist, shoulder), minus(elbow, shoulder)
+    offset = [dot(across, reach) * a for a in across]  # the arm's plane, from the shoulder, along axis 2
+    flat = [r - dot(up, reach) * u for r, u in zip(reach, up)]
+    side = dot(cross(flat, offset), up)
+    in_plane = minus(reach, offset)
+    bend = [b - dot(across, bend) * a for b, a in zip(bend, across)]
+    length = _length([r - dot(up, in_plane) * u for r, u in zip(in_plane, up)])
+    if length < TOLERANCE:
+        return {"shoulder": None, "elbow": None}
+    forward = [(r - dot(up, in_plane) * u) / length for r, u in zip(in_plane, up)]
+    height = dot(bend, up) * dot(in_plane, forward) - dot(in_plane, up) * dot(bend, forward)
+    return {"shoulder": None if abs(side) < TOLERANCE else ("right" if side < 0 else "left"),
+            "elbow": None if abs(height) < TOLERANCE or not has_elbow else ("up" if height > 0 else "down")}
+
+
+def _length(vector) -> float:
+    return math.sqrt(sum(x * x for x in vector))
