@@ -13,9 +13,13 @@ z0 pointing up, at three poses:
 - elbow up / down: the elbow (on axis 3) above / below the line from the shoulder (on axis 2) to
   the wrist centre, in that plane.
 
+- shoulder front / back, for an arm whose plane passes through axis 1 but whose axis 2 lies off
+  axis 1 (a shoulder offset a1, as an IRB 140's): the wrist centre on the side of axis 1 where
+  axis 2 is, or reached over the back.
+
 Where the words hold they are given by that geometry; where they cannot be checked (the arm is not
-of that shape, or the arm plane passes through axis 1) the name says the root instead: "shoulder
-+√", "elbow −√".
+of that shape, or its plane and axis 2 pass through axis 1) the name says the root instead:
+"shoulder +√", "elbow −√".
 
 >>> import dhsym
 >>> [branch.name for branch in dhsym.load("puma560").ik().branches][:2]
@@ -36,8 +40,10 @@ from .solution import Branch
 POSES = 3  # the words must hold at every one of these poses
 TOLERANCE = 1e-7
 _ROLE = re.compile(r"\b(shoulder|elbow)( \([^)]*\))? (right|left|up|down)\b")
-DEFINITIONS = ("shoulder right/left: seen from above (z0 up), the arm's plane lies right/left of the line from axis 1 "
-               "to the {wrist}; elbow up/down: the elbow above/below the line from the shoulder to the {wrist}")
+DEFINITIONS = {"right": "shoulder right/left: seen from above (z0 up), the arm's plane lies right/left of the line "
+                        "from axis 1 to the {wrist}",
+               "front": "shoulder front/back: the {wrist} on the side of axis 1 where axis 2 is, or on the other",
+               "up": "elbow up/down: the elbow above/below the line from the shoulder to the {wrist}"}
 
 
 def checked_names(solution, evaluate):
@@ -55,10 +61,12 @@ def checked_names(solution, evaluate):
         names.append(_ROLE.sub(lambda m, label=label: _word(m, label), branch.name))
     if len(set(names)) < len(names):  # the geometry did not tell the branches apart: say the roots
         names = [_ROLE.sub(lambda m: _word(m, None), branch.name) for branch in solution.branches]
-    said = any(labels[number][role] for number in range(len(names)) for role in labels[number]) if labels else False
+    said = {word for label in labels or () for word in label.values()}
     branches = tuple(Branch(name, branch.assignments) for name, branch in zip(names, solution.branches))
     wrist = "wrist centre" if wrist_centre(chain) is not None else "point where axes 4 and 5 meet"
-    method = f"{solution.method}; branch names: {DEFINITIONS.format(wrist=wrist)}" if said else solution.method
+    meanings = [text.format(wrist=wrist) for key, text in DEFINITIONS.items()
+                if key in said or {"right": "left", "front": "back", "up": "down"}[key] in said]
+    method = f"{solution.method}; branch names: {'; '.join(meanings)}" if meanings else solution.method
     return replace(solution, branches=branches, method=method)
 
 
@@ -107,7 +115,7 @@ def _geometry(solution, evaluate):
 def _labels(chain, values: dict, centre):
     """The shoulder's and the elbow's words at one configuration, or None if the arm's shape does not fit."""
     frames = poses(chain, values)
-    _, up = axis_line(chain, 1, frames)
+    base, up = axis_line(chain, 1, frames)
     shoulder, across = axis_line(chain, 2, frames)
     elbow, third = axis_line(chain, 3, frames)
     if abs(dot(up, across)) > TOLERANCE:
@@ -133,7 +141,16 @@ def _labels(chain, values: dict, centre):
         return {"shoulder": None, "elbow": None}
     forward = [(r - dot(up, in_plane) * u) / length for r, u in zip(in_plane, up)]
     height = dot(bend, up) * dot(in_plane, forward) - dot(in_plane, up) * dot(bend, forward)
-    return {"shoulder": None if abs(side) < TOLERANCE else ("right" if side < 0 else "left"),
+    if abs(side) < TOLERANCE:  # no offset along axis 2: the wrist in front of the shoulder or behind it
+        apart = minus(shoulder, base)
+        apart = [a - dot(up, apart) * u for a, u in zip(apart, up)]
+        away = minus(wrist, base)
+        ahead = dot(apart, [a - dot(up, away) * u for a, u in zip(away, up)])
+        side = 0.0 if _length(apart) < TOLERANCE or abs(ahead) < TOLERANCE else (-1.0 if ahead > 0 else 1.0)
+        words = ("front", "back")
+    else:
+        words = ("right", "left")
+    return {"shoulder": None if abs(side) < TOLERANCE else (words[0] if side < 0 else words[1]),
             "elbow": None if abs(height) < TOLERANCE or not has_elbow else ("up" if height > 0 else "down")}
 
 
