@@ -3,15 +3,17 @@ square root it chose (dhsym.inverse.branches): + is "shoulder right", "elbow dow
 arm that is the book's own definition (Spong's elbow down and up, by the sign of the root). For a
 spatial arm whose shoulder is joints 1 and 2 (axes crossing at right angles) and whose elbow is
 joint 3 (parallel to joint 2), the words are checked against the geometry a textbook draws, with
-z0 pointing up, at three poses:
+z0 pointing up, at twelve poses:
 
 - shoulder right / left: seen from above, the plane in which the arm swings (normal to axis 2,
   through the wrist centre) lies to the right / left of the line from axis 1 to the wrist centre,
   as a person's right or left arm does (the PUMA's two shoulder configurations; for an arm with no
-  wrist centre whose axis 4 is parallel to axis 2, as the UR5's, the point where axis 5 meets
-  axis 4 stands for it);
+  wrist centre whose axis 4 is parallel to axis 2, as the UR5's, the point where axes 5 and 6
+  meet stands for it);
 - elbow up / down: the elbow (on axis 3) above / below the line from the shoulder (on axis 2) to
-  the wrist centre, in that plane.
+  the wrist centre, in that plane; said only of an arm with a wrist centre whose axes 1 and 2
+  meet, where the shoulder's root fixes on which side of the shoulder the wrist centre lies (else
+  the elbow's side of that line changes with the pose within one branch).
 
 - shoulder front / back, for an arm whose plane passes through axis 1 but whose axis 2 lies off
   axis 1 (a shoulder offset a1, as an IRB 140's): the wrist centre on the side of axis 1 where
@@ -32,12 +34,12 @@ import random
 import re
 from dataclasses import replace
 
-from ..velocity.geometry import axis_line, distance_to_axis, dot, minus, poses, sample_values, wrist_centre
+from ..velocity.geometry import axis_line, distance_to_axis, dot, minus, poses, wrist_centre
 from ..velocity.jacobian import cross
 from .branches import WORDS
 from .solution import Branch
 
-POSES = 3  # the words must hold at every one of these poses
+POSES = 12  # the words must hold at every one of these poses
 TOLERANCE = 1e-7
 _ROLE = re.compile(r"\b(shoulder|elbow)( \([^)]*\))? (right|left|up|down)\b")
 DEFINITIONS = {"right": "shoulder right/left: seen from above (z0 up), the arm's plane lies right/left of the line "
@@ -63,7 +65,7 @@ def checked_names(solution, evaluate):
         names = [_ROLE.sub(lambda m: _word(m, None), branch.name) for branch in solution.branches]
     said = {word for label in labels or () for word in label.values()}
     branches = tuple(Branch(name, branch.assignments) for name, branch in zip(names, solution.branches))
-    wrist = "wrist centre" if wrist_centre(chain) is not None else "point where axes 4 and 5 meet"
+    wrist = "wrist centre" if wrist_centre(chain) is not None else "wrist (where axes 5 and 6 meet)"
     meanings = [text.format(wrist=wrist) for key, text in DEFINITIONS.items()
                 if key in said or {"right": "left", "front": "back", "up": "down"}[key] in said]
     method = f"{solution.method}; branch names: {'; '.join(meanings)}" if meanings else solution.method
@@ -81,7 +83,7 @@ def _word(match, label) -> str:
 def _planar(chain) -> bool:
     """Whether every revolute axis is parallel to the first (a planar arm, a SCARA)."""
     rng = random.Random(3)
-    frames = poses(chain, sample_values(chain, rng))
+    frames = poses(chain, _values(chain, rng))
     first = axis_line(chain, 1, frames)[1]
     return all(_length(cross(first, axis_line(chain, j, frames)[1])) < TOLERANCE
                for j, row in enumerate(chain.rows, 1) if row.joint == "R")
@@ -96,11 +98,14 @@ def _geometry(solution, evaluate):
     centre = wrist_centre(chain)
     rng = random.Random(16)
     found: list = [None] * len(solution.branches)
+    configurations, targets = [], []
     for _ in range(POSES):
-        values = sample_values(chain, rng)
+        values = _values(chain, rng)
         rotation, origin = poses(chain, values)[chain.last_frame]
-        target = [[*rotation[r], origin[r]] for r in range(3)] + [[0.0, 0.0, 0.0, 1.0]]
-        for number, joints in enumerate(evaluate(solution, target)):
+        configurations.append(values)
+        targets.append([[*rotation[r], origin[r]] for r in range(3)] + [[0.0, 0.0, 0.0, 1.0]])
+    for values, branches in zip(configurations, evaluate(solution, targets)):
+        for number, joints in enumerate(branches):
             if any(math.isnan(x) for x in joints):
                 continue
             label = _labels(chain, {**values, **dict(zip(solution.joint_variables, map(float, joints)))}, centre)
@@ -112,6 +117,20 @@ def _geometry(solution, evaluate):
     return [label or {"shoulder": None, "elbow": None} for label in found]
 
 
+def _values(chain, rng: random.Random) -> dict:
+    """Joint angles uniform in (−π, π), slides in (0.5, 1.5), constants from the robot's sample (else
+    in (0.5, 1.5)), drawn in the order of the names: the same numbers in every run."""
+    values = {}
+    for symbol in sorted(chain.symbols, key=lambda s: s.name):
+        if symbol in chain.sample:
+            values[symbol] = float(chain.sample[symbol])
+        elif symbol in chain.joint_variables and chain.rows[chain.joint_variables.index(symbol)].joint == "R":
+            values[symbol] = rng.uniform(-math.pi, math.pi)
+        else:
+            values[symbol] = rng.uniform(0.5, 1.5)
+    return values
+
+
 def _labels(chain, values: dict, centre):
     """The shoulder's and the elbow's words at one configuration, or None if the arm's shape does not fit."""
     frames = poses(chain, values)
@@ -120,16 +139,24 @@ def _labels(chain, values: dict, centre):
     elbow, third = axis_line(chain, 3, frames)
     if abs(dot(up, across)) > TOLERANCE:
         return None
-    has_elbow = chain.rows[2].joint == "R" and _length(cross(across, third)) < TOLERANCE
+    normal = cross(up, across)
+    crossing = abs(dot(minus(shoulder, base), normal)) < TOLERANCE * _length(normal)  # axes 1 and 2 meet
+    # the elbow's side of the line to the wrist is fixed by the roots only when the shoulder's root fixes
+    # which way the wrist centre lies from the shoulder: axes 1 and 2 meet, and the arm has a wrist centre
+    has_elbow = (chain.rows[2].joint == "R" and _length(cross(across, third)) < TOLERANCE and crossing
+                 and centre is not None)
     if centre is not None:
         wrist = frames[centre][1]
     else:
         point, fourth = axis_line(chain, 4, frames)
         if _length(cross(across, fourth)) > TOLERANCE:
             return None
-        fifth = axis_line(chain, 5, frames)[0] if chain.n >= 5 else point
-        # where axis 5 meets axis 4 (the UR5's wrist, d4 along axis 4 from the arm's plane)
-        wrist = fifth if distance_to_axis(fifth, (point, fourth)) < TOLERANCE else point
+        wrist = point
+        for j in range(min(chain.n, 6), 4, -1):  # where axes 5 and 6 meet (the UR5's), else axes 4 and 5
+            candidate, _ = axis_line(chain, j, frames)
+            if distance_to_axis(candidate, axis_line(chain, j - 1, frames)) < TOLERANCE:
+                wrist = candidate
+                break
     reach, bend = minus(wrist, shoulder), minus(elbow, shoulder)
     offset = [dot(across, reach) * a for a in across]  # the arm's plane, from the shoulder, along axis 2
     flat = [r - dot(up, reach) * u for r, u in zip(reach, up)]
