@@ -169,3 +169,14 @@ def test_shoulder_and_elbow_names_are_what_the_arm_does(name, frames):
             assert ("shoulder left" in branch) == left and ("shoulder right" in branch) == (not left), branch
             if "elbow up" in branch or "elbow down" in branch:
                 assert ("elbow up" in branch) == above and ("elbow down" in branch) == (not above), branch
+
+
+def test_every_line_is_in_the_textbook_notation():
+    """The solver's sentences too: 'the factor s5 of det J', not sin(θ5); LaTeX sets a sum of names as one formula."""
+    _, result = _solved("puma560")
+    text = result.text(100)
+    assert "the factor s5 of det J" in " ".join(text.split())
+    body = text.split("\nwhere c1")[0]  # the legend says what c23 and s23 are
+    assert "sin(θ" not in body and "cos(θ" not in body
+    latex = result.latex()._repr_latex_()
+    assert "\\theta_{2} + \\theta_{3}" in latex and "sin($" not in latex
