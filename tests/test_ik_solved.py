@@ -88,6 +88,12 @@ def test_the_puma_derivation_compiles_and_fits(capsys, tmp_path, kind):
     assert _pdflatex(tmp_path, kind, out) == (0, [])
 
 
+def test_branch_names_that_say_the_root_compile_as_frame_titles(capsys, tmp_path):
+    status, out, _ = dhsym_cli(capsys, "latex", "spatial3r", "--ik", "--document", "slides")
+    assert status == 0 and "Branch 4: shoulder $-\\surd$, elbow $-\\surd$" in out
+    assert _pdflatex(tmp_path, "slides", out) == (0, [])
+
+
 def test_the_ik_snippet_compiles(capsys, tmp_path):
     status, out, _ = dhsym_cli(capsys, "ik", "stanford", "--format", "latex")
     assert status == 0 and _pdflatex(tmp_path, "snippet", HOST.format(out)) == (0, [])

@@ -86,7 +86,7 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
                            [paragraph("Used by every branch:", page), Rows([rows])]))
     for number, branch in enumerate(solution.branches, 1):
         rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in branch.assignments]
-        out.append(Section(PART, f"Branch {number}: {tex_text(branch.name)}", [Rows([rows])]))
+        out.append(Section(PART, f"Branch {number}: {branch_title(branch.name)}", [Rows([rows])]))
     names = solution_names(solution)
     remarks = [paragraph(f"Condition: {latex_sentence(text, names, printer)}.", page)
                for text in solution.conditions]
@@ -99,6 +99,17 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
         for section in out:
             section.items.insert(0, _heading(section.title, page))
     return out
+
+
+def branch_title(name: str) -> str:
+    r"""A branch's name as LaTeX text, a root's sign as math.
+
+    >>> branch_title("shoulder +√, elbow −√, wrist flipped")
+    'shoulder $+\\surd$, elbow $-\\surd$, wrist flipped'
+    """
+    pieces = re.split(r"([+−]√)", name)
+    return "".join(f"${'+' if piece[0] == '+' else '-'}\\surd$" if position % 2 else tex_text(piece)
+                   for position, piece in enumerate(pieces))
 
 
 def _heading(title: str, page: Page) -> Block:
