@@ -57,7 +57,9 @@ def test_puma_text_fits_every_width_and_names_its_eight_branches(by_hand, capsys
     assert status == 0 and max(map(display_width, out.splitlines())) <= width
     words = " ".join(out.split())
     assert "K = (px² + py² + pz² − a2² − a3² − d3² − d4²)/(2 a2)" in words
-    assert "Branch 8: shoulder right, elbow down, wrist flipped" in words
+    # the hand-written names follow the roots; dhsym checks them against the arm: with the shoulder on the
+    # right the arm reaches over, and the root that put the elbow above the line to the wrist puts it below
+    assert "Branch 8: shoulder right, elbow up, wrist flipped" in words
     assert "θ1 = atan2(py, px) − atan2(d3, −√(px² + py² − d3²))" in words
     assert "s23 = sin(θ2 + θ3)" in words
 

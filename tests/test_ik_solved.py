@@ -88,6 +88,12 @@ def test_the_puma_derivation_compiles_and_fits(capsys, tmp_path, kind):
     assert _pdflatex(tmp_path, kind, out) == (0, [])
 
 
+def test_branch_names_that_say_the_root_compile_as_frame_titles(capsys, tmp_path):
+    status, out, _ = dhsym_cli(capsys, "latex", "spatial3r", "--ik", "--document", "slides")
+    assert status == 0 and "Branch 4: shoulder $-\\surd$, elbow $-\\surd$" in out
+    assert _pdflatex(tmp_path, "slides", out) == (0, [])
+
+
 def test_the_ik_snippet_compiles(capsys, tmp_path):
     status, out, _ = dhsym_cli(capsys, "ik", "stanford", "--format", "latex")
     assert status == 0 and _pdflatex(tmp_path, "snippet", HOST.format(out)) == (0, [])
@@ -135,3 +141,48 @@ def test_branches_of_a_redundant_arm_are_drawn_with_the_free_joint_in_its_place(
     assert all(np.allclose(np.array(fk(*q), dtype=float), pose, atol=1e-8) for q in joints)
     figure = draw_branches(chain, values=values, free=["theta_3"], figure=Figure())
     assert all(ax.get_title().splitlines()[-2].split(", ")[2] == "20°" for ax in figure.axes)
+
+
+@pytest.mark.parametrize("name, frames", [("puma560", (2, 3, 4)), ("ur5", (1, 2, 5))])
+def test_shoulder_and_elbow_names_are_what_the_arm_does(name, frames):
+    """Seen from above (z0 up): 'shoulder left' puts the arm's plane left of the line from axis 1
+    to the wrist, 'elbow up' puts the elbow above the line from the shoulder to the wrist: checked
+    at random poses from the frames' positions (frames: the one on axis 2, on axis 3, the wrist's).
+    The UR5's elbow is not above or below that line in a whole branch: its name says the root."""
+    import sympy
+
+    chain, result = _solved(name)
+    constants = sample_constants(chain)
+    values = {s: constants[s.name] for s in chain.symbols if s.name in constants}
+    at = {k: sympy.lambdify(chain.joint_variables, chain.transform(0, k).subs(values), "numpy") for k in frames}
+    fk = numeric_fk(chain, constants)
+    names = [branch.name for branch in result.branches]
+    words = {part for n in names for part in n.split(", ")}
+    assert {"shoulder left", "shoulder right"} <= words
+    assert ({"elbow up", "elbow down"} <= words) == (name == "puma560")
+    for q in random_joints(chain, np.random.default_rng(8), 6):
+        for branch, joints in zip(names, result.evaluate(np.array(fk(*q), dtype=float))):
+            if np.isnan(joints).any():
+                continue
+            (s, n2), (e, _), (w, _) = [(m[:3, 3], m[:3, 2]) for m in (np.array(at[k](*joints), float) for k in frames)]
+            up = np.array([0.0, 0.0, 1.0])
+            offset = n2 * (n2 @ (w - s))
+            left = np.cross(w - s, offset) @ up > 0
+            reach, bend = w - s - offset, e - s - n2 * (n2 @ (e - s))
+            ahead = reach - (reach @ up) * up
+            ahead /= np.linalg.norm(ahead)
+            above = (bend @ up) * (reach @ ahead) - (reach @ up) * (bend @ ahead) > 0
+            assert ("shoulder left" in branch) == left and ("shoulder right" in branch) == (not left), branch
+            if "elbow up" in branch or "elbow down" in branch:
+                assert ("elbow up" in branch) == above and ("elbow down" in branch) == (not above), branch
+
+
+def test_every_line_is_in_the_textbook_notation():
+    """The solver's sentences too: 'the factor s5 of det J', not sin(θ5); LaTeX sets a sum of names as one formula."""
+    _, result = _solved("puma560")
+    text = result.text(100)
+    assert "the factor s5 of det J" in " ".join(text.split())
+    body = text.split("\nwhere c1")[0]  # the legend says what c23 and s23 are
+    assert "sin(θ" not in body and "cos(θ" not in body
+    latex = result.latex()._repr_latex_()
+    assert "\\theta_{2} + \\theta_{3}" in latex and "sin($" not in latex

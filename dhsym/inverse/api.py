@@ -26,7 +26,9 @@ from ..core.robot import as_robot
 from ..errors import UserError
 from .codegen import module_text
 from .evaluate import evaluate
+from .naming import checked_names
 from .solve import solve
+from .written import as_written, with_written_symbols
 
 POSE_DOF = 6  # a pose fixes six numbers: a closed form has finitely many branches for at most six unknowns
 
@@ -56,9 +58,15 @@ def free_variables(chain, names, option: str = "--free") -> tuple:
 
 def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     """The solution of `chain` (a Robot, or a plain Chain) with the joint variables `free` kept as
-    parameters; its messages and titles use the robot's name and frame numbers."""
+    parameters, its decimals as the robot file wrote them (solved as symbols, see
+    dhsym.inverse.written); its messages and titles use the robot's name and frame numbers."""
     robot = as_robot(chain)
-    return InverseKinematics(solve(robot, free=free_variables(robot, free)))
+    variables = free_variables(robot, free)
+    numbers = robot.numbers  # how the file wrote its numbers: the one place this reads it
+    solving, written = with_written_symbols(robot, numbers)
+    solution = solve(solving, free=variables)
+    solution = as_written(solution, robot, numbers) if written else solution
+    return InverseKinematics(checked_names(solution, evaluate))
 
 
 class InverseKinematics:

@@ -32,7 +32,7 @@ from .evaluate import ROUNDING
 from .solution import TARGET_NAMES
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
-             "angles"}  # the module's own names
+             "angles", "elements", "missing", "k"}  # the module's own names
 _ELEMENTS = {name: (row, column) for row in range(3) for column, name in
              enumerate(TARGET_NAMES[4 * row:4 * row + 4])}
 
@@ -46,6 +46,12 @@ class _NumpyCode(NumPyPrinter):
 
     def _print_Symbol(self, expr):
         return self.names.get(expr.name, expr.name)
+
+    def _print_Dummy(self, expr):  # a variable of the module's own, named already
+        return expr.name
+
+    def _print_Written(self, expr):  # a number as the robot file wrote it (dhsym.inverse.written)
+        return expr.name
 
     def _print_Rational(self, expr):
         decimal = self.numbers.decimal(expr, alone=True) if self.numbers else None
@@ -88,11 +94,7 @@ def module_text(solution, command: str = "") -> str:
     """The text of the standalone module for `solution` (see the module docstring)."""
     chain = solution.chain
     joints = list(solution.joint_variables)
-    constants = sorted((s for s in chain.symbols if s not in chain.joint_variables), key=lambda s: s.name)
-    definitions = [name for name, _ in solution.definitions]
-    assigned = {name for branch in solution.branches for name, _ in branch.assignments}
-    names = python_names([s.name for s in joints + constants + list(solution.free) + definitions] + list(TARGET_NAMES)
-                         + sorted({s.name for s in assigned} - {s.name for s in joints}))
+    names, constants = _names(solution)
     code = _NumpyCode(names, getattr(chain, "numbers", None))
     sample = {str(symbol): value for symbol, value in chain.sample.items()}
     keywords = [f"{names[s.name]}={_default(sample[s.name])}" for s in constants if s.name in sample]
@@ -104,26 +106,19 @@ def module_text(solution, command: str = "") -> str:
                 or sympy.Symbol(name) in used]
     kinds = {row.variable: row.joint for row in chain.rows}
     revolute = tuple(k for k, joint in enumerate(joints) if kinds.get(joint) == "R")
-    body = [f"    {names[name]} = poses[:, {_ELEMENTS[name][0]}, {_ELEMENTS[name][1]}]" for name in elements]
-    body.append(f"    result = numpy.full((len(poses), {len(solution.branches)}, {len(joints)}), numpy.nan)")
+    body = [f"    {names[name]} = elements[{4 * _ELEMENTS[name][0] + _ELEMENTS[name][1]}]" for name in elements]
+    body.append(f"    result = numpy.empty(({len(solution.branches)}, {len(joints)}, len(poses)))"
+                "  # each value's poses side by side: faster")
     body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
-    for name, value in solution.definitions:
-        body.append(f"        {names[name.name]} = {code.doprint(value)}")
-    for number, branch in enumerate(solution.branches):
-        body.append(f"        # {_comment(branch.name)}")
-        given = dict(branch.assignments)
-        for name, value in branch.assignments:
-            body.append(f"        {names[name.name]} = {code.doprint(value)}")
-        for k, joint in enumerate(joints):
-            value = names[joint.name] if joint in given or joint in solution.free else "numpy.nan"
-            body.append(f"        result[:, {number}, {k}] = {value}")
+    body += ["        " + line for line in _computation(solution, names, code)]
     lines = [
         f'"""Closed-form inverse kinematics of {_comment(chain.name)} ({chain.convention} DH).\n',
         (f"Made by `{_comment(command)}`.\n" if command else "Made by dhsym.\n"),
         "ik(T, **constants): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by",
         "default; the result holds every branch's joint values, shaped (B, n) or (N, B, n): branches in",
         "the order of BRANCHES, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN where a",
-        'branch does not exist. Needs numpy only.\n"""',
+        "branch does not exist. Needs numpy only. A value that branches share is computed once and named",
+        'in the first branch that needs it (theta_1, theta_1_2 for the other root, ...).\n"""',
         "import numpy", "",
         f"BRANCHES = {tuple(branch.name for branch in solution.branches)!r}",
         f"JOINTS = {tuple(j.name for j in joints)!r}",
@@ -137,13 +132,122 @@ def module_text(solution, command: str = "") -> str:
         "    if T.ndim not in (2, 3) or T.shape[-2:] != (4, 4):",
         '        raise ValueError(f"T must be one pose (4, 4) or many (N, 4, 4), not an array of shape {T.shape}")',
         "    poses = T.reshape(-1, 4, 4)",
+        "    elements = numpy.ascontiguousarray(poses.reshape(-1, 16).T)  # each element's values side by side: faster",
         *body,
-        "    angles = result[:, :, list(REVOLUTE)]",
-        "    result[:, :, list(REVOLUTE)] = (angles + numpy.pi) % (2 * numpy.pi) - numpy.pi",
-        "    result[~numpy.isfinite(result).all(axis=-1)] = numpy.nan  # a branch exists whole or not at all",
+        "    for k in REVOLUTE:",
+        "        angles = result[:, k]",
+        "        numpy.remainder(angles + numpy.pi, 2 * numpy.pi, out=angles)",
+        "        angles -= numpy.pi",
+        "    missing = ~numpy.isfinite(result).all(axis=1)  # a branch exists whole or not at all",
+        "    numpy.copyto(result, numpy.nan, where=missing[:, None, :])",
+        "    result = numpy.ascontiguousarray(result.transpose(2, 0, 1))",
         "    return result[0] if T.ndim == 2 else result", "",
     ]
     return "\n".join(lines)
+
+
+def keyword_names(solution) -> dict:
+    """{name of a constant or --free joint variable: its keyword argument in the module's ik()}."""
+    names, constants = _names(solution)
+    return {s.name: names[s.name] for s in list(constants) + list(solution.free)}
+
+
+def _names(solution) -> tuple[dict, list]:
+    """(symbol name -> Python name for every name the module uses, the robot's constants in order)."""
+    chain = solution.chain
+    joints = list(solution.joint_variables)
+    constants = sorted((s for s in chain.symbols if s not in chain.joint_variables), key=lambda s: s.name)
+    definitions = [name for name, _ in solution.definitions]
+    assigned = {name for branch in solution.branches for name, _ in branch.assignments}
+    names = python_names([s.name for s in joints + constants + list(solution.free) + definitions] + list(TARGET_NAMES)
+                         + sorted({s.name for s in assigned} - {s.name for s in joints}))
+    return names, constants
+
+
+def _computation(solution, names: dict, code) -> list[str]:
+    """The lines that compute every branch: the definitions, then each branch's assignments, a value
+    that an earlier branch computed already (the same expression of the same earlier values) taken
+    from it, and sub-expressions used more than once (cos θ1, √(1 − D²)) computed once."""
+    taken = set(names.values())
+    variable = {}  # the value's expression, in the variables computed before it -> its variable
+    lines = []  # (comment, None, None) or (None, variable, expression)
+    named: set = set()  # the variables' names so far
+
+    def compute(name, value, known) -> sympy.Dummy:
+        key = value.xreplace(known)
+        if key not in variable:
+            text = base = names[name.name]
+            count = 1
+            while text in named or (count > 1 and text in taken):
+                count += 1
+                text = f"{base}_{count}"
+            taken.add(text)
+            named.add(text)
+            variable[key] = sympy.Dummy(text)
+            lines.append((None, variable[key], key))
+        return variable[key]
+
+    shared = {}
+    if solution.definitions:
+        lines.append(("shared by every branch", None, None))
+    for name, value in solution.definitions:
+        shared[name] = compute(name, value, shared)
+    columns = []
+    for branch in solution.branches:
+        lines.append((_comment(branch.name), None, None))
+        known = dict(shared)
+        for name, value in branch.assignments:
+            known[name] = compute(name, value, known)
+        columns.append([known.get(joint) if joint in known else (joint if joint in solution.free else None)
+                        for joint in solution.joint_variables])
+    out = _shared_subexpressions(lines, taken, code)
+    for number, values in enumerate(columns):
+        for k, value in enumerate(values):
+            text = "numpy.nan" if value is None else code.doprint(value)
+            out.append(f"result[{number}, {k}] = {text}")
+    return out
+
+
+def _shared_subexpressions(lines, taken: set, code) -> list[str]:
+    """The lines as Python, each sub-expression used more than once computed once, just before the
+    first line that needs it; cos and sin of a value are named after it (cos_theta_1)."""
+    expressions = [expression for comment, _, expression in lines if comment is None]
+    replacements, reduced = sympy.cse(expressions, symbols=_temporaries(taken), order="none")
+    renamed = {}
+    for symbol, value in replacements:
+        if isinstance(value, (sympy.cos, sympy.sin)) and value.args[0].is_Symbol:
+            text = f"{type(value).__name__}_{value.args[0].name}"
+            if text not in taken:
+                taken.add(text)
+                renamed[symbol] = sympy.Dummy(text)
+    replacements = [(renamed.get(s, s), v.xreplace(renamed)) for s, v in replacements]
+    reduced = iter(r.xreplace(renamed) for r in reduced)
+    pending = dict(replacements)
+    out = []
+
+    def emit(expression):
+        for symbol in sorted(expression.free_symbols & pending.keys(), key=str):
+            if symbol in pending:
+                value = pending.pop(symbol)
+                emit(value)
+                out.append(f"{code.doprint(symbol)} = {code.doprint(value)}")
+
+    for comment, symbol, _ in lines:
+        if comment is not None:
+            out.append(f"# {comment}")
+            continue
+        expression = next(reduced)
+        emit(expression)
+        out.append(f"{code.doprint(symbol)} = {code.doprint(expression)}")
+    return out
+
+
+def _temporaries(taken: set):
+    number = 0
+    while True:
+        number += 1
+        if f"common_{number}" not in taken:
+            yield sympy.Dummy(f"common_{number}")
 
 
 def _comment(text: str) -> str:

@@ -11,10 +11,6 @@ array([[ 0.      ,  1.570796],
 """
 from __future__ import annotations
 
-import sympy
-
-from .solution import target_symbols
-
 COMPILED_KEPT = 64  # compiled solutions kept between calls
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 
@@ -22,78 +18,34 @@ ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a 
 def evaluate(solution, T, constants=None):
     """Joint values of every branch for the pose T (4×4 → (B, n)) or poses (N×4×4 → (N, B, n)):
     branches in solution order, joints in `solution.joint_variables` order, NaN where a branch
-    does not exist. `constants` maps the robot's symbols (and --free joint variables) to numbers;
-    it defaults to the robot's sample values."""
-    import numpy
-
-    poses = numpy.asarray(T, dtype=float)
-    single = poses.ndim == 2
-    poses = poses.reshape((-1, 4, 4))
-    values = dict(solution.chain.sample)
-    values.update(constants or {})
-    names = {str(k): v for k, v in values.items()}
-    function, parameters = _program(solution)
-    arguments = [poses[:, r, c] for r, c in _positions()]
-    for symbol in parameters:
-        if str(symbol) not in names:
+    does not exist. `constants` maps the robot's symbols (and --free joint variables), or their
+    names, to numbers; the robot's sample values are the defaults. The numbers come from the
+    module `dhsym ik --format python` writes (dhsym.inverse.codegen), compiled once per solution:
+    one generator for the printed module and for this."""
+    function, keywords, required = _program(solution)
+    given = {getattr(k, "name", str(k)): v for k, v in (constants or {}).items()}
+    for name in required:
+        if name not in given:
             from ..errors import UserError
-            raise UserError(f"no value for {symbol}: give it in the constants (a --free joint variable needs one)")
-        arguments.append(float(names[str(symbol)]))
-    count, branches, joints = poses.shape[0], len(solution.branches), len(solution.joint_variables)
-    revolute = [row.joint == "R" for row, v in zip(solution.chain.rows, solution.chain.joint_variables)
-                if v in solution.joint_variables]
-    with numpy.errstate(invalid="ignore", divide="ignore"):
-        out = numpy.empty((count, branches * joints))
-        for k, value in enumerate(function(*arguments)):
-            out[:, k] = value  # a number (a joint the pose does not change) fills its column
-        out = out.reshape((count, branches, joints))
-        out[..., revolute] = (out[..., revolute] + numpy.pi) % (2 * numpy.pi) - numpy.pi
-        out[numpy.isnan(out).any(axis=-1)] = numpy.nan  # half a branch is no branch
-    return out[0] if single else out
-
-
-def _positions():
-    return [(r, c) for r in range(3) for c in range(4)]
+            raise UserError(f"no value for {name}: give it in the constants (a --free joint variable needs one)")
+    return function(T, **{keywords[name]: float(value) for name, value in given.items() if name in keywords})
 
 
 _compiled: dict = {}
-_KEPT = sympy.Function("kept")  # a named value put in as it is: no rewriting across it
-
-
-def _identity(x):
-    return x
 
 
 def _program(solution):
-    """One numpy function of the target elements and the robot's constants that gives every
-    joint of every branch, flat, with the sub-expressions that branches share (θ1, D, √(1 − D²),
-    c1 of the shoulder) computed once: each name is put in for its value, and common
-    sub-expression elimination shares what the branches have in common. Kept per solution.
-    A name is put in unevaluated: SymPy would turn sin(atan2(y, x)) into y/√(x² + y²), which is
-    0/0 where atan2(0, 0) is a number (the shoulder on the axis, the wrist at s5 = 0)."""
-    key = (solution.definitions, solution.branches, solution.joint_variables)
+    """(the module's ik function, {constant name: keyword}, the names that have no default), kept per solution."""
+    key = (id(solution.chain), solution.definitions, solution.branches, solution.joint_variables, solution.free)
     if key not in _compiled:
+        from .codegen import keyword_names, module_text  # the generator imports this module's ROUNDING
+
         if len(_compiled) > COMPILED_KEPT:  # a long session solving many arms keeps only recent ones
             _compiled.clear()
-        shared: dict = {}
-        for name, value in solution.definitions:
-            shared[name] = _KEPT(value.xreplace(shared))
-        outputs = []
-        for branch in solution.branches:
-            known = dict(shared)
-            for name, value in branch.assignments:
-                known[name] = _KEPT(value.xreplace(known))
-            outputs += [sympy.sympify(known.get(v, v)) for v in solution.joint_variables]
-        inputs = list(target_symbols())
-        parameters = sorted(set().union(*(e.free_symbols for e in outputs)) - set(inputs), key=str)
-        function = sympy.lambdify(inputs + parameters, outputs, modules=[{"sqrt": _sqrt, "kept": _identity}, "numpy"],
-                                   cse=True)
-        _compiled[key] = function, parameters
+        namespace: dict = {}
+        exec(compile(module_text(solution), f"<ik of {solution.chain.name}>", "exec"), namespace)  # our own text
+        keywords = keyword_names(solution)
+        sample = {str(symbol) for symbol in solution.chain.sample}
+        required = [name for name in keywords if name not in sample]
+        _compiled[key] = namespace["ik"], keywords, required
     return _compiled[key]
-
-
-def _sqrt(x):
-    import numpy
-
-    x = numpy.asarray(x, dtype=float)
-    return numpy.sqrt(numpy.where((x < 0) & (x > -ROUNDING), 0.0, x))

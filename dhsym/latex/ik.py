@@ -23,7 +23,6 @@ import re
 import sympy
 
 from ..printing.ik import (
-    IDENTIFIER,
     RELATIONS,
     latex_name,
     latex_printer,
@@ -87,7 +86,7 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
                            [paragraph("Used by every branch:", page), Rows([rows])]))
     for number, branch in enumerate(solution.branches, 1):
         rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in branch.assignments]
-        out.append(Section(PART, f"Branch {number}: {tex_text(branch.name)}", [Rows([rows])]))
+        out.append(Section(PART, f"Branch {number}: {branch_title(branch.name)}", [Rows([rows])]))
     names = solution_names(solution)
     remarks = [paragraph(f"Condition: {latex_sentence(text, names, printer)}.", page)
                for text in solution.conditions]
@@ -100,6 +99,17 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
         for section in out:
             section.items.insert(0, _heading(section.title, page))
     return out
+
+
+def branch_title(name: str) -> str:
+    r"""A branch's name as LaTeX text, a root's sign as math.
+
+    >>> branch_title("shoulder +√, elbow −√, wrist flipped")
+    'shoulder $+\\surd$, elbow $-\\surd$, wrist flipped'
+    """
+    pieces = re.split(r"([+−]√)", name)
+    return "".join(f"${'+' if piece[0] == '+' else '-'}\\surd$" if position % 2 else tex_text(piece)
+                   for position, piece in enumerate(pieces))
 
 
 def _heading(title: str, page: Page) -> Block:
@@ -141,10 +151,9 @@ def latex_sentence(text: str, names, printer) -> str:
             out.append(f"${printer.doprint(part[1])}{RELATIONS['latex'][part[2]]}{printer.doprint(part[3])}$")
             continue
         position = 0
-        for match in IDENTIFIER.finditer(part[1]):
-            if match.group(0) in part[2]:
-                out += [prose(part[1][position:match.start()]), f"${printer.doprint(part[2][match.group(0)])}$"]
-                position = match.end()
+        for start, end, expression in part[2]:
+            out += [prose(part[1][position:start]), f"${printer.doprint(expression)}$"]
+            position = end
         out.append(prose(part[1][position:]))
     return "".join(out)
 

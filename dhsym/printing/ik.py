@@ -20,10 +20,12 @@ from __future__ import annotations
 import re
 
 import sympy
+from sympy.printing.precedence import PRECEDENCE, precedence
 
 from ..core.robot import as_robot
 from ..errors import UserError
 from ..inverse.solution import TARGET_NAMES
+from ..inverse.written import Written
 from ..io.expr import parse_expression, real_symbol
 from . import render
 from .notation import GREEK_NAMES, display_name
@@ -39,10 +41,23 @@ class _InverseNotation:
 
     def _setup(self):
         super()._setup()
-        joint_key = self.notation.term_key
-        # an instance attribute: the printers ask the notation for the order of terms
+        joint_key, factor_key = self.notation.term_key, self.notation.factor_key
+        # instance attributes: the printers ask the notation for the order of terms and factors
         self.notation.term_key = lambda term: (not _has_target(term), term.could_extract_minus_sign(),
                                                joint_key(term))
+        self.notation.factor_key = lambda factor: (not _is_written(factor), factor_key(factor))
+
+    def _print_Written(self, expr):
+        """A number as the robot file wrote it (see dhsym.inverse.written): 0.0823."""
+        return expr.name
+
+    def _join(self, pieces):
+        """Factors side by side; two numbers that could not be made one (0.089159² · 0.0823) get a dot."""
+        out = pieces[0]
+        for piece in pieces[1:]:
+            numbers = out[-1:].isdigit() and piece[:1].isdigit()
+            out = out + self._times + piece if numbers else super()._join([out, piece])
+        return out
 
     def _print_Symbol(self, expr):
         if expr.name in _TARGET:
@@ -53,12 +68,18 @@ class _InverseNotation:
         return ", ".join(self._print(argument) for argument in expr.args)
 
 
+def _is_written(factor) -> bool:
+    return isinstance(factor.base if factor.is_Pow else factor, Written)
+
+
 def _has_target(term) -> bool:
     return any(symbol.name in _TARGET for symbol in term.free_symbols)
 
 
 class IKTextPrinter(_InverseNotation, TextPrinter):
     """Text: atan2(py, px), acos(D), √(1 − D²)."""
+
+    _times = " · "
 
     def _print_atan2(self, expr):
         return f"atan2({self._arguments(expr)})"
@@ -77,6 +98,8 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
 class IKLatexPrinter(_InverseNotation, LatexPrinter):
     r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
 
+    _times = " \\cdot "
+
     def _print_atan2(self, expr):
         return f"\\mathrm{{atan2}}({self._arguments(expr)})"
 
@@ -92,6 +115,26 @@ class IKLatexPrinter(_InverseNotation, LatexPrinter):
         return super()._fraction(top, bottom, grouped)
 
 
+class IKExactPrinter(ExactPrinter):
+    """The JSON form: a written number first in its product, as the file's numbers are written
+    (`0.0823*r13`, not `r13*0.0823`); sympy.sympify reads it back."""
+
+    def _print_Written(self, expr):
+        return expr.name
+
+    def _print_Mul(self, expr):
+        coefficient, rest = expr.as_coeff_Mul()
+        factors = sympy.Mul.make_args(rest)
+        lead = next((f for f in factors if isinstance(f, Written)), None)
+        if lead is None or coefficient not in (1, -1) or len(factors) < 2:
+            return super()._print_Mul(expr)
+        others = sympy.Mul(*(f for f in factors if f is not lead))
+        text = self._print(others)
+        if precedence(others) < PRECEDENCE["Mul"] or text.startswith("1/") or text.startswith("-"):
+            text = f"({text})"
+        return ("-" if coefficient < 0 else "") + f"{lead.name}*{text}"
+
+
 def _one_group(text: str) -> bool:
     """Whether `text` is one bracketed group, (…), whose opening bracket closes at its end."""
     depth = 0
@@ -104,7 +147,8 @@ def _one_group(text: str) -> bool:
 
 
 _RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
-IDENTIFIER = re.compile(r"(?<![\w.])[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(])")
+_TERM = r"(?:(?:sin|cos)\([^()]*\)|[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(]))"
+_MATH_RUN = re.compile(rf"(?<![\w.]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5)
 RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
              "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
 
@@ -112,11 +156,16 @@ RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", "
 def sentence_parts(text: str, names) -> list:
     """A solver's sentence ("1 - D**2 >= 0 (else …)", "a_3 = 0 and d_4 = 0: theta_3 is not
     determined") as parts to print: ("relation", lhs, operator, rhs) for each relation it starts
-    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, symbols)
-    for the rest, with the `names` it mentions. A sentence that starts with no relation stays words.
+    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, math) for
+    the rest, where `math` lists (start, end, expression) for the names, sums of names and sines
+    and cosines of them that the words mention (theta_2 + theta_3, sin(theta_5)), each printed
+    as math. A sentence that starts with no relation stays words.
 
     >>> sentence_parts("1 - D**2 >= 0 (else no branch)", ["D"])[0]
     ('relation', 1 - D**2, '>=', 0)
+    >>> sentence_parts("only theta_4 + theta_6 is determined; the factor sin(theta_5)", ["theta_4", "theta_5",
+    ...                "theta_6"])[0][2]
+    [(5, 22, theta_4 + theta_6), (49, 61, sin(theta_5))]
     """
     cuts = [len(text)] + [m.start() for m in re.finditer(r": | \(", text)]
     for cut in sorted(set(cuts)):
@@ -128,7 +177,7 @@ def sentence_parts(text: str, names) -> list:
 
 
 def _relations(math: str) -> list:
-    """[("relation", lhs, operator, rhs), ("words", " and ", {}), …] for `math`, or [] if it is not
+    """[("relation", lhs, operator, rhs), ("words", " and ", []), …] for `math`, or [] if it is not
     a conjunction of relations the safe parser reads."""
     parts = []
     for clause in math.split(" and "):
@@ -140,15 +189,26 @@ def _relations(math: str) -> list:
         if sides is None:
             return []
         if parts:
-            parts.append(("words", " and ", {}))
+            parts.append(("words", " and ", []))
         parts.append(("relation", sides[0], match.group(2), sides[1]))
     return parts
 
 
-def _mentioned(text: str, names) -> dict:
-    """{name: its symbol} for the chain's and the solution's names that `text` mentions."""
-    wanted = set(names)
-    return {m.group(0): real_symbol(m.group(0)) for m in IDENTIFIER.finditer(text) if m.group(0) in wanted}
+def _mentioned(text: str, names) -> list:
+    """(start, end, expression) for each run of math in `text` that names only the chain's and the
+    solution's names: a name, a sum of them, sin or cos of them."""
+    wanted, found = set(names), []
+    for match in _MATH_RUN.finditer(text):
+        used = {m.group(0) for m in re.finditer(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?", match.group(0))}
+        if not used - {"sin", "cos"} or not used - {"sin", "cos"} <= wanted:
+            continue
+        try:
+            expression = parse_expression(match.group(0))
+        except UserError:
+            continue
+        found.append((match.start(), match.end(), expression.xreplace({s: real_symbol(s.name)
+                                                                         for s in expression.free_symbols})))
+    return found
 
 
 def solution_names(solution) -> list[str]:
@@ -158,20 +218,23 @@ def solution_names(solution) -> list[str]:
 
 
 def text_sentence(text: str, names, printer) -> str:
-    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5² = 0: θ4 is not determined'."""
+    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5 = 0: only θ4 + θ6 is determined'."""
     out = []
     for part in sentence_parts(text, names):
         if part[0] == "relation":
             out.append(printer.doprint(part[1]) + RELATIONS["text"][part[2]] + printer.doprint(part[3]))
         else:
-            out.append(_names_printed(part[1], part[2], printer))
+            out.append(_math_printed(part[1], part[2], printer))
     return "".join(out)
 
 
-def _names_printed(text: str, mentioned: dict, printer) -> str:
-    """`text` with each name in `mentioned` as the printer writes it: theta_1 -> θ1."""
-    return IDENTIFIER.sub(lambda m: printer.doprint(mentioned[m.group(0)]) if m.group(0) in mentioned
-                          else m.group(0), text)
+def _math_printed(text: str, math, printer) -> str:
+    """`text` with each run of math in `math` as the printer writes it: sin(theta_5) -> s5."""
+    out, position = [], 0
+    for start, end, expression in math:
+        out += [text[position:start], printer.doprint(expression)]
+        position = end
+    return "".join(out) + text[position:]
 
 
 def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
@@ -302,7 +365,7 @@ def json_solution(solution) -> dict:
     """The JSON contract: full forms with the robot file's names and decimals as written;
     `sympy.sympify` reads every expression back."""
     chain = solution.chain
-    exact = ExactPrinter(chain_settings(chain))
+    exact = IKExactPrinter(chain_settings(chain))
     pairs = lambda items: [[name.name, exact.doprint(value)] for name, value in items]  # noqa: E731
     return {
         "robot": chain.name,

@@ -1,0 +1,151 @@
+"""Decimals as the robot file wrote them, through the solver and back out.
+
+The parser reads `0.0823` as the Rational 823/10000, and SymPy combines rationals: solved with
+the numbers in, a UR5 gives `D = (20000 px s1 − 20000 py c1 − 2183)/1646`. So the solver gets a
+chain whose written decimals (the lengths a and d, and the translations of the base and tool)
+are symbols, one per value, and solves it as it solves a table of names:
+`D = (px s1 − py c1 − d4)/d6`. A `Written` symbol's name is its decimal, so every printer
+writes it as the file did: `D = (px s1 − py c1 − 0.10915)/0.0823`. Afterwards products, powers
+and sums of written numbers are folded into one decimal wherever the file's rule prints the result
+as a decimal (see dhsym.core.numbers): `2·0.089159·0.0823 r33` is `0.0146755714 r33`.
+
+>>> import sympy
+>>> from dhsym.core.numbers import WrittenNumbers
+>>> a, b = Written.of(sympy.Rational(17, 40)), Written.of(sympy.Rational(823, 10000))
+>>> a, a.value
+(0.425, 17/40)
+>>> px = sympy.Symbol("px", real=True)
+>>> fold(2 * a * b * px + a**2 - px / b, WrittenNumbers(places=5))
+px*0.069955 - px/0.0823 + 0.180625
+>>> exact(px / b)
+10000*px/823
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import sympy
+
+from ..core.chain import Chain, DHRow
+from ..core.numbers import decimal_text
+from ..core.transforms import Step
+from .solution import Branch
+from .solution import Step as Equation
+
+
+class Written(sympy.Symbol):
+    """A positive number as the robot file wrote it: a symbol named by its decimal, `0.0823`,
+    that the solver treats as a constant and every printer writes as the decimal."""
+
+    @classmethod
+    def of(cls, value) -> "Written":
+        return cls(decimal_text(sympy.Rational(value)), positive=True)
+
+    @property
+    def value(self) -> sympy.Rational:
+        return sympy.Rational(self.name)
+
+
+def exact(expr):
+    """`expr` with every written number put back as its exact rational."""
+    found = {s: s.value for s in getattr(expr, "free_symbols", ()) if isinstance(s, Written)}
+    return expr.xreplace(found) if found else expr
+
+
+def with_written_symbols(robot, numbers) -> tuple:
+    """(a copy of `robot` whose written decimals are `Written` symbols, {symbol: value}); the robot
+    itself and {} when it has none. Angles (θ offsets, α, base and tool rotations) keep their numbers:
+    the solver reads the axes' directions from them."""
+    found: dict = {}
+
+    def put(value):
+        value = sympy.sympify(value)
+        terms = []
+        for term in sympy.Add.make_args(value):
+            coefficient, rest = term.as_coeff_Mul()
+            if coefficient.is_Rational and not coefficient.is_Integer and numbers.decimal(abs(coefficient)):
+                symbol = Written.of(abs(coefficient))
+                found[symbol] = symbol.value
+                term = (1 if coefficient > 0 else -1) * symbol * rest
+            terms.append(term)
+        return sympy.Add(*terms)
+
+    plain = robot.chain
+    rows = [DHRow(row.joint, row.theta, put(row.d), put(row.a), row.alpha, row.variable) for row in plain.rows]
+    moved = [[step if step.is_rotation else Step(step.kind, put(step.value)) for step in steps]
+             for steps in (plain.base, plain.tool)]
+    if not found:
+        return robot, {}
+    copy = robot.replace(chain=Chain(rows, plain.convention, moved[0], moved[1], plain.simplifier),
+                         sample={**robot.sample, **found})
+    return copy, found
+
+
+def fold(expr, numbers):
+    """`expr` with each product, power and sum of numbers and written numbers made one written
+    decimal where the file's rule prints it as one (else left as it is)."""
+    if not isinstance(expr, sympy.Basic) or expr.is_Atom or not _holds_written(expr):
+        return expr
+    args = [fold(arg, numbers) for arg in expr.args]
+    if expr.is_Mul:
+        constant = [a for a in args if _is_constant(a)]
+        rest = [a for a in args if not _is_constant(a)]
+        upper = [a for a in constant if not (a.is_Pow and a.exp.is_negative) and not a.is_Rational]
+        lower = [1 / a for a in constant if a.is_Pow and a.exp.is_negative]
+        for number in (a for a in constant if a.is_Rational):  # 1/2 goes to the denominator as 2
+            upper, lower = upper + [sympy.Integer(number.p)], lower + [sympy.Integer(number.q)]
+        whole = _written(sympy.Mul(*constant), numbers)
+        if whole is not None:
+            return sympy.Mul(whole, *rest)
+        top, bottom = _written(sympy.Mul(*upper), numbers), _written(sympy.Mul(*lower), numbers)
+        top = sympy.Mul(*upper) if top is None else top
+        bottom = sympy.Mul(*lower) if bottom is None else bottom
+        return sympy.Mul(top, 1 / bottom, *rest)
+    if expr.is_Add:
+        constant = [a for a in args if _is_constant(a)]
+        rest = [a for a in args if not _is_constant(a)]
+        whole = _written(sympy.Add(*constant), numbers)
+        return sympy.Add(*rest, *(constant if whole is None else [whole]))
+    rebuilt = expr.func(*args)
+    if expr.is_Pow and _is_constant(rebuilt):
+        whole = _written(rebuilt, numbers)
+        return rebuilt if whole is None else whole
+    return rebuilt
+
+
+def _holds_written(expr) -> bool:
+    return any(isinstance(s, Written) for s in expr.free_symbols)
+
+
+def _is_constant(expr) -> bool:
+    """A number, or a product, power or sum of numbers and written numbers only."""
+    return all(isinstance(s, Written) for s in expr.free_symbols) and not expr.has(sympy.Function)
+
+
+def _written(expr, numbers):
+    """A constant as a written decimal (±Written, or an integer), or None if the file's rule would
+    not print its value as a decimal."""
+    value = exact(expr)
+    if not value.is_Rational:
+        return None
+    if value.is_Integer:
+        return value
+    if numbers.decimal(abs(value)) is None:
+        return None
+    return (1 if value > 0 else -1) * Written.of(abs(value))
+
+
+def as_written(solution, chain, numbers):
+    """A solution of the chain `with_written_symbols` made, given back to `chain` with its
+    numbers folded (see `fold`)."""
+    pairs = lambda items: tuple((name, fold(value, numbers)) for name, value in items)  # noqa: E731
+    steps = tuple(Equation(_fold_any(step.lhs, numbers), _fold_any(step.rhs, numbers), step.subproblem, step.solves,
+                           step.note) for step in solution.steps)
+    return replace(solution, chain=chain, definitions=pairs(solution.definitions), steps=steps,
+                   branches=tuple(Branch(branch.name, pairs(branch.assignments)) for branch in solution.branches))
+
+
+def _fold_any(expr, numbers):
+    if isinstance(expr, sympy.MatrixBase):
+        return expr.applyfunc(lambda element: fold(element, numbers))
+    return fold(expr, numbers)
