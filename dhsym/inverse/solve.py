@@ -19,10 +19,10 @@ from itertools import product
 import sympy
 
 from ..errors import UserError
-from ..velocity.determinant import determinant
 from .branches import branch_name
 from .equations import point_equations, transform_equations
 from .scan import Derivation, scan
+from .singular import tie_to_jacobian
 from .solution import Branch, Solution, target_matrix, target_symbols
 from .structure import analyse
 from .witness import witness
@@ -120,17 +120,6 @@ def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:
                 fixed[target[r, c]] = fk[r, c]
     said = ", ".join(f"{name} = {value}" for name, value in fixed.items())
     return target.xreplace(fixed), said
-
-
-def tie_to_jacobian(chain, derivation) -> None:
-    """Say which degenerate cases are singularities that `dhsym jacobian` prints: a factor of
-    det J (worked out fast for a wrist-partitioned arm, det A · det C)."""
-    factors = determinant(chain).factors
-    for expr, index in derivation.vanishing:
-        bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
-        matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
-        if matched:
-            derivation.degenerate[index] += f"; a singularity of J: the factor {matched[0]} of det J"
 
 
 def free_variables(chain, free) -> tuple[sympy.Symbol, ...]:
