@@ -79,14 +79,25 @@ def expand(expr) -> sympy.Expr:
     expr = sympy.sympify(expr)
     if expr.is_Atom or expr.has(sympy.Float):
         return sympy.expand(expr)
+    if expr.is_Mul:  # a sum over a product of symbols (K/(2 a2)): each term of the sum divided
+        over = [f for f in expr.args if f.is_Pow and f.exp.is_Integer and f.exp < 0 and f.base.is_Symbol]
+        rest = _polynomial(sympy.Mul(*[f for f in expr.args if f not in over])) if over else None
+        if rest is not None:
+            divisor = sympy.Mul(*over)
+            return sympy.Add(*[t * divisor for t in sympy.Add.make_args(rest.as_expr())])
+    poly = _polynomial(expr)
+    return sympy.expand(expr) if poly is None else poly.as_expr()
+
+
+def _polynomial(expr):
+    """`expr` in the ring over the rationals of its symbols and cos/sin terms, or None."""
     atoms = expr.atoms(sympy.Symbol, sympy.cos, sympy.sin)
-    if not atoms:
-        return sympy.expand(expr)
+    if not atoms or expr.has(sympy.Float):
+        return None
     try:
-        poly = PolyRing(sorted(atoms, key=sympy.default_sort_key), QQ).from_expr(expr)
+        return PolyRing(sorted(atoms, key=sympy.default_sort_key), QQ).from_expr(expr)
     except (ValueError, CoercionFailed):
-        return sympy.expand(expr)
-    return poly.as_expr()
+        return None
 
 
 def has_square_pair(expr) -> bool:

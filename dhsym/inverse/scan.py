@@ -34,6 +34,7 @@ from ..errors import UserError
 from . import algebra
 from . import subproblems as sp
 from .solution import Step
+from .witness import NotANumber, value_at
 
 WITNESS_ZERO = 1e-8
 FORMS_PER_UNKNOWN = 8  # the shortest equations per unknown whose sub-problem form is worked out
@@ -115,8 +116,13 @@ def _number(expr, witness: dict) -> float | None:
     """The value of `expr` at the witness pose, or None when it cannot be had."""
     if not witness:
         return None
+    expr = sympy.sympify(expr)
     try:
-        return float(sympy.sympify(expr).xreplace(witness).evalf(15))
+        return value_at(expr, witness)
+    except NotANumber:
+        pass
+    try:  # what the fast walk does not know (a function it has no float for), SymPy evaluates
+        return float(expr.xreplace(witness).evalf(15))
     except (TypeError, ValueError):
         return None
 

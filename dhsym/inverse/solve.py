@@ -163,10 +163,15 @@ def _used_elements(definitions, assignments) -> list[str]:
 
 def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:
     """One branch per choice of the signs, named in words."""
-    branches = []
+    branches, made = [], {}  # an assignment with the same signs in it is worked out once, not per branch
+    held = [(n, v, tuple(s for s, _, _ in signs if s in v.free_symbols)) for n, v in assignments]
     for choice in product((1, -1), repeat=len(signs)):
         values = {s: c for (s, _, _), c in zip(signs, choice)}
         name = branch_name([(joint, rule, c) for (_, joint, rule), c in zip(signs, choice)], first_joint,
                            wrist_joints)
-        branches.append(Branch(name, tuple((n, v.xreplace(values)) for n, v in assignments)))
+        for n, v, mine in held:
+            key = (n, v, tuple(values[s] for s in mine))
+            if key not in made:
+                made[key] = v.xreplace({s: values[s] for s in mine})
+        branches.append(Branch(name, tuple((n, made[(n, v, tuple(values[s] for s in mine))]) for n, v, mine in held)))
     return branches
