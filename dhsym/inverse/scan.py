@@ -34,7 +34,7 @@ from ..errors import UserError
 from . import algebra
 from . import subproblems as sp
 from .solution import Step
-from .witness import NotANumber, value_at
+from .witness import number_at
 
 WITNESS_ZERO = 1e-8
 FORMS_PER_UNKNOWN = 8  # the shortest equations per unknown whose sub-problem form is worked out
@@ -87,7 +87,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
         known = len(derivation.assignments)
         value = _apply(rule, candidates, derivation, constants)
         for name, named in derivation.assignments[known:]:
-            witness[name] = _number(named, witness)
+            witness[name] = number_at(named, witness)
         variable, angle = candidates[0].variable, candidates[0].angle
         if angle == variable:
             derivation.assignments.append((variable, value))
@@ -95,7 +95,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
             phi = sympy.Symbol(f"phi_{len([a for a, _ in derivation.assignments if str(a).startswith('phi')]) + 1}",
                                real=True)
             derivation.assignments.append((phi, value))
-            witness[phi] = _number(angle, witness)
+            witness[phi] = number_at(angle, witness)
             coefficient = angle.coeff(variable)
             expression = algebra.expand((phi - (angle - coefficient * variable)) / coefficient)
             pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
@@ -112,23 +112,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     return derivation
 
 
-def _number(expr, witness: dict) -> float | None:
-    """The value of `expr` at the witness pose, or None when it cannot be had."""
-    if not witness:
-        return None
-    expr = sympy.sympify(expr)
-    try:
-        return value_at(expr, witness)
-    except NotANumber:
-        pass
-    try:  # what the fast walk does not know (a function it has no float for), SymPy evaluates
-        return float(expr.xreplace(witness).evalf(15))
-    except (TypeError, ValueError):
-        return None
-
-
 def _vanishes(expr, witness: dict) -> bool:
-    value = _number(expr, witness)
+    value = number_at(expr, witness)
     return value is not None and abs(value) < WITNESS_ZERO
 
 
@@ -246,10 +231,20 @@ def _shape(equation, remaining, prismatic):
     if len(angles) == 1:
         (angle,) = angles
         variable = _last(angle, unknown, remaining)
-        if variable is not None and not (expr.xreplace({sympy.cos(angle): 0, sympy.sin(angle): 0}).free_symbols
-                                         & unknown):
+        if variable is not None and (not _outside(expr, angle, unknown) or not (
+                expr.xreplace({sympy.cos(angle): 0, sympy.sin(angle): 0}).free_symbols & unknown)):
             return angle, variable
     return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
+
+
+def _outside(expr, angle, unknown) -> bool:
+    """Whether an unknown occurs anywhere but in cos(angle) and sin(angle): a walk that spares
+    rebuilding the expression (when none does, putting 0 for them leaves no unknown)."""
+    if isinstance(expr, (sympy.cos, sympy.sin)) and expr.args[0] == angle:
+        return False
+    if expr.is_Symbol:
+        return expr in unknown
+    return any(_outside(a, angle, unknown) for a in expr.args)
 
 
 _cache: dict = {}

@@ -33,6 +33,25 @@ def witness(chain, seed: int = SEED) -> dict:
     return {symbol: sympy.Float(value, 17) for symbol, value in values.items()}
 
 
+def number_at(expr, numbers: dict) -> float | None:
+    """The value of `expr` at the pose `numbers`, or None when it cannot be had.
+
+    >>> number_at(sympy.sqrt(sympy.Symbol("x")), {sympy.Symbol("x"): -1.0}) is None
+    True
+    """
+    if not numbers:
+        return None
+    expr = sympy.sympify(expr)
+    try:
+        return value_at(expr, numbers)
+    except NotANumber:
+        pass
+    try:  # what the fast walk does not know (a function it has no float for), SymPy evaluates
+        return float(expr.xreplace(numbers).evalf(15))
+    except (TypeError, ValueError):
+        return None
+
+
 class NotANumber(Exception):
     """The expression has no real value at the pose (a name without one, a complex value)."""
 
