@@ -9,11 +9,15 @@ forward kinematics, and how fast a chain with no closed form is refused.
    cost of FK. The ratio is also given per branch (the PUMA has 8, the UR5 8).
 3. Refusal time of a general 6R (symbolic twists): decided from the axes, before any algebra.
 
-Run: python benchmarks/ik_speed.py
+4. With --all: the derivation time (CPU, least of 3 cold runs) of every built-in robot that has a
+   closed form.
+
+Run: python benchmarks/ik_speed.py [--all]
 """
 from __future__ import annotations
 
 import math
+import sys
 import time
 
 import numpy
@@ -24,6 +28,7 @@ import dhsym
 from dhsym.errors import UserError
 from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.solve import solve
+from dhsym.io.library import builtin_names
 
 POSES = 10_000
 
@@ -89,6 +94,27 @@ def report(name: str) -> None:
           f"ratio {ik_time / fk_time:.1f} (per branch {ik_time / fk_time / branches:.2f})")
 
 
+def derivation_cpu(name: str, runs: int = 3) -> float:
+    """The least CPU time of `runs` cold derivations (a fresh chain, an empty SymPy cache)."""
+    times = []
+    for _ in range(runs):
+        clear_cache()
+        chain = dhsym.load(name)
+        start = time.process_time()
+        solve(chain)
+        times.append(time.process_time() - start)
+    return min(times)
+
+
+def every_robot() -> None:
+    print("derivation, CPU seconds (least of 3 cold runs):")
+    for name in builtin_names():
+        try:
+            print(f"  {name:22s} {derivation_cpu(name):.2f}", flush=True)
+        except UserError as error:
+            print(f"  {name:22s} refused: {error}")
+
+
 def main() -> None:
     for name in ("puma560", "ur5"):
         report(name)
@@ -100,6 +126,8 @@ def main() -> None:
     except UserError as error:
         message = str(error)
     print(f"general 6R: refused in {time.perf_counter() - start:.3f} s: {message}")
+    if "--all" in sys.argv[1:]:
+        every_robot()
 
 
 if __name__ == "__main__":

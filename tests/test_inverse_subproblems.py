@@ -6,7 +6,12 @@ import sympy
 from hypothesis import example, given
 from hypothesis import strategies as st
 
+import dhsym
 from dhsym.inverse import subproblems as sp
+from dhsym.inverse.algebra import expand, pythagoras
+from dhsym.inverse.singular import wrist_factors
+from dhsym.inverse.witness import number_at
+from dhsym.velocity.determinant import determinant
 
 theta, d = sympy.symbols("theta d", real=True)
 sigma = sympy.Symbol("sigma", real=True)
@@ -98,3 +103,56 @@ def test_no_root_outside_the_workspace():
     form = sp.trig_linear(sympy.cos(theta) - X, theta)
     assert sp.existence(*form) == 1 - X ** 2  # the condition: cos θ = X needs 1 − X² ≥ 0
     assert math.isnan(_value(sp.one_equation(*form, sigma), 1, 2.0))
+
+
+# The speed-ups of the derivation: each must give what the slower SymPy route gives.
+
+_a, _b, _t = sympy.symbols("a_2 b_3 theta_1", real=True)
+_atoms = [_a, _b, sympy.cos(_t), sympy.sin(_t), sympy.cos(_t + _a), sympy.Integer(2), sympy.Rational(-1, 3)]
+
+
+@st.composite
+def _polynomials(draw, depth=3):
+    """Random sums and products of symbols, cos/sin terms and rationals, sometimes over a monomial."""
+    if depth == 0 or draw(st.booleans()):
+        return draw(st.sampled_from(_atoms))
+    parts = draw(st.lists(_polynomials(depth - 1), min_size=2, max_size=3))
+    expr = sympy.Add(*parts) if draw(st.booleans()) else sympy.Mul(*parts)
+    return expr / (2 * _a) if draw(st.integers(0, 4)) == 0 else expr
+
+
+@given(_polynomials())
+@example(sympy.sqrt(2) * (_a + 1) ** 2)  # not over the rationals: SymPy expands it
+@example(_a / (_b * (_a + 1)))  # a quotient by a sum: SymPy expands it
+def test_ring_expansion_is_sympys_expansion(expr):
+    assert expand(expr) == sympy.expand(expr)
+
+
+def test_pythagoras_shortens_without_double_angles_as_a_book_does():
+    t3, t4 = sympy.symbols("theta_3 theta_4", real=True)
+    d3, d5 = sympy.symbols("d_3 d_5", real=True)
+    s3, c3, s4, c4 = sympy.sin(t3), sympy.cos(t3), sympy.sin(t4), sympy.cos(t4)
+    # the iiwa's determinant with θ3 free: what trigsimp wrote, at a hundredth of the cost
+    det = d3**2 + 2*d3*d5*c4 + d5**2*s4**2*c3**2 + d5**2*c4**2
+    assert pythagoras(det) == d3**2 + 2*d3*d5*c4 - d5**2*s3**2*s4**2 + d5**2
+    # nothing shorter: left as it is (trigsimp would write sin(2θ1), which a book does not)
+    px, py, t1 = sympy.symbols("px py theta_1", real=True)
+    kept = px**2*sympy.cos(t1)**2 + 2*px*py*sympy.sin(t1)*sympy.cos(t1) + py**2*sympy.sin(t1)**2
+    assert pythagoras(kept) is kept
+
+
+def test_wrist_singularity_is_a_factor_of_the_whole_determinant():
+    for name in ("puma560", "stanford", "inline6", "cylindrical_wrist"):
+        chain = dhsym.load(name)
+        found = wrist_factors(chain)
+        assert found and all(f in determinant(chain).factors for f in found), name
+
+
+@given(angles, lengths)
+def test_the_witness_value_is_sympys(angle, length):
+    x, y = sympy.symbols("x y", real=True)
+    expr = sympy.atan2(y * sympy.sin(x), sympy.sqrt(1 + y**2) - sympy.cos(x)) / (2 * y) + sympy.pi * y**3
+    numbers = {x: sympy.Float(angle, 17), y: sympy.Float(length, 17)}
+    assert math.isclose(number_at(expr, numbers), float(expr.xreplace(numbers).evalf(15)), rel_tol=1e-12,
+                        abs_tol=1e-14)
+    assert number_at(sympy.sqrt(x - 10), numbers) is None  # complex: no value, as SymPy's float() says

@@ -21,6 +21,8 @@ import sympy
 
 from ..core.robot import as_chain, as_robot
 from ..core.simplify import collect_by_trig, contract
+from . import algebra
+from .algebra import Ring
 
 ZERO = sympy.Matrix([0, 0, 0])
 
@@ -42,17 +44,23 @@ class Equation:
         return self.lhs - self.rhs
 
 
-def squared_length(steps, variables, point=ZERO, point_length=0) -> sympy.Expr:
-    """‖S₁⋯S_m · point‖², given ‖point‖² (`point_length`), without simplifying a sum of squares."""
+def squared_length(steps, variables, point=ZERO, point_length=0, memo: dict | None = None,
+                   ring: Ring | None = None) -> sympy.Expr:
+    """‖S₁⋯S_m · point‖², given ‖point‖² (`point_length`), without simplifying a sum of squares.
+    `memo` keeps the contracted tails of the steps between calls (Paul's pairs share them)."""
     variables = frozenset(variables)
+    memo = {} if memo is None else memo
     total = sympy.sympify(point_length)
     for k, step in enumerate(steps):
         if step.is_rotation or step.value == 0:
             continue
-        after = contract(steps[k + 1:], variables)
+        tail = tuple(steps[k + 1:])
+        if tail not in memo:
+            memo[tail] = contract(tail, variables)
+        after = memo[tail]
         coordinate = (after[:3, :3] * point + after[:3, 3])[step.axis]
         total += 2 * step.value * coordinate + step.value ** 2
-    return collect_by_trig(sympy.expand(total), variables)
+    return collect_by_trig(algebra.expand(total) if ring is None else ring.expand(total), variables)
 
 
 def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None) -> tuple[sympy.Matrix, sympy.Expr]:
@@ -63,7 +71,7 @@ def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None) -> tup
     variables = chain.joint_variables
     inverse = chain.transform(frame, known_in)
     seen = inverse[:3, :3] * point + inverse[:3, 3]
-    return seen.applyfunc(lambda e: collect_by_trig(sympy.expand(e), frozenset(variables))), \
+    return seen.applyfunc(lambda e: collect_by_trig(algebra.expand(e), frozenset(variables))), \
         squared_length(chain.steps(frame, known_in), variables, point, point_length)
 
 
@@ -83,7 +91,7 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
         seen, seen_length = moved(chain, frame, point, point_length, known_in)
         chain_side = chain.transform(frame, holder)
         there = chain_side[:3, :3] * local + chain_side[:3, 3]
-        there = there.applyfunc(lambda e: collect_by_trig(sympy.expand(e), frozenset(variables)))
+        there = there.applyfunc(lambda e: collect_by_trig(algebra.expand(e), frozenset(variables)))
         there_length = squared_length(chain.steps(frame, holder), variables, local, local_length)
         name = _frame_name(robot, frame)
         for axis in range(3):
@@ -96,7 +104,11 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
 
 def transform_equations(chain, target: sympy.Matrix, position: bool, start=None, end=None) -> list[Equation]:
     """(ⁱT_first) T (ʲT_last)⁻¹ = ⁱT_j for every pair of frames i ≤ j (between `start` and `end`):
-    the rotation elements, and with `position` the position elements and the squared distance."""
+    the rotation elements, and with `position` the position elements and the squared distance.
+
+    The two sides of each product are expanded once (per i, per j) and only the elements that
+    are asked for are multiplied out: expansion is canonical, so the result is the same as
+    expanding the whole product, at a fraction of the work."""
     robot, chain = as_robot(chain), as_chain(chain)  # frames are the chain's; the robot names them
     frames, first, last = chain.frames, chain.first_frame, chain.last_frame
     if end is not None:
@@ -104,29 +116,47 @@ def transform_equations(chain, target: sympy.Matrix, position: bool, start=None,
     if start is not None:
         frames = frames[frames.index(start):]
     variables = frozenset(chain.joint_variables)
-    tidy = lambda e: collect_by_trig(sympy.expand(e), variables)  # noqa: E731
+    columns = 4 if position else 3
+    memo: dict = {}  # contracted tails of steps, shared by the squared lengths
+    afters = {j: chain.transform(last, j) for j in frames[1:]}
+    leads = {i: chain.transform(i, first) for i in frames[:-1]}
+    ring = Ring([m[r, c] for m in list(afters.values()) + list(leads.values()) + [target]
+                 for r in range(3) for c in range(columns)])
+    if ring.usable:  # multiplied out as polynomials: the same expansion, many times faster
+        convert, made = ring.poly, lambda e: collect_by_trig(ring.expr(e), variables)  # noqa: E731
+    else:
+        convert, made = sympy.expand, lambda e: collect_by_trig(sympy.expand(e), variables)  # noqa: E731
+    expanded_after = {j: [[convert(after[m, c]) for c in range(columns)] for m in range(3)]
+                      for j, after in afters.items()}
+    tip_lengths = {}
     equations = []
     for a, i in enumerate(frames):
-        before = chain.transform(i, first) * target
+        if a == len(frames) - 1:
+            break
+        lead = leads[i]
+        before = [[convert(sum(lead[r, m] * target[m, c] for m in range(3)) + (lead[r, 3] if c == 3 else 0))
+                   for c in range(columns)] for r in range(3)]
         for j in frames[a + 1:]:
-            after = chain.transform(last, j)
-            seen = before * after
+            after = expanded_after[j]
             chain_side = chain.transform(i, j)
             where = f"{_frame_name(robot, i)}T{_frame_name(robot, j)}"
             for r in range(3):
-                for c in range(4 if position else 3):
-                    equations.append(Equation(tidy(seen[r, c]), chain_side[r, c], _kind(c, j == last),
+                for c in range(columns):
+                    seen = sum((before[r][m] * after[m][c] for m in range(3)), before[r][3] if c == 3 else 0)
+                    equations.append(Equation(made(seen), chain_side[r, c], _kind(c, j == last),
                                               f"element ({r + 1}, {c + 1}) of {where}", where))
             if position:
-                tip = after[:3, 3]
+                tip = afters[j][:3, 3]
+                if j not in tip_lengths:
+                    tip_lengths[j] = squared_length(chain.steps(last, j), variables, memo=memo, ring=ring)
                 # ‖T·b‖² = ‖b‖² + 2 p·(R b) + ‖p‖² for the unit-orthogonal R of the target
                 rotated = target[:3, :3] * tip
-                inner = (squared_length(chain.steps(last, j), variables)
-                         + sympy.expand(2 * sum(target[k, 3] * rotated[k] for k in range(3))
+                inner = (tip_lengths[j]
+                         + ring.expand(2 * sum(target[k, 3] * rotated[k] for k in range(3))
                                         + sum(target[k, 3] ** 2 for k in range(3))))
                 point = rotated + target[:3, 3]
-                seen_length = squared_length(chain.steps(i, first), variables, point, inner)
-                there_length = squared_length(chain.steps(i, j), variables)
+                seen_length = squared_length(chain.steps(i, first), variables, point, inner, memo, ring)
+                there_length = squared_length(chain.steps(i, j), variables, memo=memo, ring=ring)
                 equations.append(Equation(seen_length, there_length, _kind(3, j == last), f"squared length of {where}",
                                           where))
     return equations

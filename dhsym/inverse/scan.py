@@ -31,8 +31,10 @@ import sympy
 
 from ..core.size import length, tree_size
 from ..errors import UserError
+from . import algebra
 from . import subproblems as sp
 from .solution import Step
+from .witness import number_at
 
 WITNESS_ZERO = 1e-8
 FORMS_PER_UNKNOWN = 8  # the shortest equations per unknown whose sub-problem form is worked out
@@ -69,9 +71,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
-    _cache.clear()  # forms are reused within one search only: memory stays bounded across many
-    _lengths.clear()
-    _shapes.clear()
+    for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works):
+        memo.clear()  # kept within one search only: memory stays bounded across many
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
@@ -86,7 +87,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
         known = len(derivation.assignments)
         value = _apply(rule, candidates, derivation, constants)
         for name, named in derivation.assignments[known:]:
-            witness[name] = _number(named, witness)
+            witness[name] = number_at(named, witness)
         variable, angle = candidates[0].variable, candidates[0].angle
         if angle == variable:
             derivation.assignments.append((variable, value))
@@ -94,9 +95,9 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
             phi = sympy.Symbol(f"phi_{len([a for a, _ in derivation.assignments if str(a).startswith('phi')]) + 1}",
                                real=True)
             derivation.assignments.append((phi, value))
-            witness[phi] = _number(angle, witness)
+            witness[phi] = number_at(angle, witness)
             coefficient = angle.coeff(variable)
-            expression = sympy.expand((phi - (angle - coefficient * variable)) / coefficient)
+            expression = algebra.expand((phi - (angle - coefficient * variable)) / coefficient)
             pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
                     for e in pool]
             pending.append((variable, expression))
@@ -111,18 +112,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     return derivation
 
 
-def _number(expr, witness: dict) -> float | None:
-    """The value of `expr` at the witness pose, or None when it cannot be had."""
-    if not witness:
-        return None
-    try:
-        return float(sympy.sympify(expr).xreplace(witness).evalf(15))
-    except (TypeError, ValueError):
-        return None
-
-
 def _vanishes(expr, witness: dict) -> bool:
-    value = _number(expr, witness)
+    value = number_at(expr, witness)
     return value is not None and abs(value) < WITNESS_ZERO
 
 
@@ -142,20 +133,25 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
             # first the equations where the unknown is on the chain's side alone, with the shortest
             # chain side: there the coefficients of cos and sin are the chain's constants
             on_target_side = bool(equation.lhs.free_symbols & set(remaining))
-            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side,
-                                                    tree_size(equation.rhs), tree_size(equation.expr),
+            if equation not in _sizes:
+                _sizes[equation] = (tree_size(equation.rhs), tree_size(equation.expr))
+            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side, *_sizes[equation],
                                                     len(groups.get(shape[0], [])), equation, shape))
-    singles = []
-    for group in groups.values():
-        worked = 0
-        for *_, equation, shape in sorted(group, key=lambda item: item[:5]):
-            if worked >= FORMS_PER_UNKNOWN:
-                break
-            candidate = _candidate(equation, shape, constants)
-            if candidate is None or _says_nothing(candidate, prismatic, witness):
-                continue
-            singles.append(candidate)
-            worked += 1
+    # Forms are worked out kind by kind: once one kind gives a candidate, no equation of a later
+    # kind can be in the best option (the kind ranks first), and its forms are never needed.
+    ordered = {angle: sorted(group, key=lambda item: item[:5]) for angle, group in groups.items()}
+    worked: dict = {angle: [] for angle in ordered}
+    for level in range(len(order)):
+        for angle, items in ordered.items():
+            for kind, *_, equation, shape in items:
+                if kind != level or len(worked[angle]) >= FORMS_PER_UNKNOWN:
+                    continue
+                candidate = _candidate(equation, shape, constants)
+                if candidate is not None and not _says_nothing(candidate, prismatic, witness):
+                    worked[angle].append(candidate)
+        if any(worked.values()):
+            break
+    singles = [c for found in worked.values() for c in found]
     options = []
     for c in singles:
         if c.variable in prismatic:
@@ -171,16 +167,35 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
             by_source.setdefault((c.angle, c.equation.source), []).append(c)
     for group in by_source.values():
         for first, second in combinations(group[:PAIR_CANDIDATES], 2):
-            if not _pair_works(first.form, second.form, witness):
-                continue
             constant = all(x.is_number for x in first.form[:2] + second.form[:2])
-            rank = 0 if constant else 2 if sp.determinant_sign(first.form, second.form) else 3
-            options.append(((max(kind_rank(first), kind_rank(second)), rank,
-                             _form_length(first.form) + _form_length(second.form)), "pair", [first, second]))
-    if not options:
-        return None
-    _, rule, candidates = min(options, key=lambda o: o[0])
-    return rule, candidates
+            # rank 2 or 3 (the determinant's sign known or not) is settled only if the pair comes first
+            options.append(((max(kind_rank(first), kind_rank(second)), 0 if constant else 2,
+                             _form_length(first.form) + _form_length(second.form)), "pair?", [first, second]))
+    return _first(options, witness)
+
+
+def _first(options, witness):
+    """The first of the options with the least key, or None. A pair's key is a lower bound until it
+    comes first: only then is it checked (does it determine the angle? is its determinant's sign
+    fixed?), so pairs that cannot win cost nothing; the choice is the same as with every key known."""
+    pending = [(key, index, rule, candidates) for index, (key, rule, candidates) in enumerate(options)]
+    while pending:
+        best = min(pending, key=lambda o: o[:2])
+        key, index, rule, candidates = best
+        if rule != "pair?":
+            return rule, candidates
+        pending.remove(best)
+        forms = (candidates[0].form, candidates[1].form)
+        if forms not in _works:
+            _works[forms] = _pair_works(*forms, witness)
+        if not _works[forms]:
+            continue
+        if key[1] == 2:
+            if forms not in _signs:
+                _signs[forms] = sp.determinant_sign(*forms)
+            key = (key[0], 2 if _signs[forms] else 3, key[2])
+        pending.append((key, index, "pair", candidates))
+    return None
 
 
 def kind_rank_of(equation, order) -> int:
@@ -216,15 +231,28 @@ def _shape(equation, remaining, prismatic):
     if len(angles) == 1:
         (angle,) = angles
         variable = _last(angle, unknown, remaining)
-        if variable is not None and not (expr.xreplace({sympy.cos(angle): 0, sympy.sin(angle): 0}).free_symbols
-                                         & unknown):
+        if variable is not None and (not _outside(expr, angle, unknown) or not (
+                expr.xreplace({sympy.cos(angle): 0, sympy.sin(angle): 0}).free_symbols & unknown)):
             return angle, variable
     return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
+
+
+def _outside(expr, angle, unknown) -> bool:
+    """Whether an unknown occurs anywhere but in cos(angle) and sin(angle): a walk that spares
+    rebuilding the expression (when none does, putting 0 for them leaves no unknown)."""
+    if isinstance(expr, (sympy.cos, sympy.sin)) and expr.args[0] == angle:
+        return False
+    if expr.is_Symbol:
+        return expr in unknown
+    return any(_outside(a, angle, unknown) for a in expr.args)
 
 
 _cache: dict = {}
 _lengths: dict = {}
 _shapes: dict = {}
+_sizes: dict = {}  # equation -> tree sizes of its chain side and of the whole
+_signs: dict = {}  # pair of forms -> the sign of its determinant (None: either)
+_works: dict = {}  # pair of forms -> whether it determines the angle at the witness pose
 
 
 def _form_length(form) -> int:
@@ -260,7 +288,7 @@ def _last(angle, unknown, remaining):
     """The unknown of a sum of angles that the sum determines: the last one, with coefficient ±1."""
     for variable in reversed(remaining):
         if variable in unknown and angle.coeff(variable) in (1, -1):
-            rest = sympy.expand(angle - angle.coeff(variable) * variable)
+            rest = algebra.expand(angle - angle.coeff(variable) * variable)
             if not rest.free_symbols & {variable}:
                 return variable
     return None
@@ -277,14 +305,6 @@ def _degenerate_pair(det, shown) -> str:
                     f"{base.args[0]} line up, and only the sum (or difference) of the angles about them is "
                     "determined, a one-parameter family (evaluate gives one member)")
     return f"{_unsigned(det)} = 0: {shown} is not determined by these equations"
-
-
-def _has_square_pair(expr) -> bool:
-    """Whether sin(x)**k and cos(x)**k of one angle both occur: only then can trigsimp shorten
-    without double angles (a cheap test that spares trigsimp most determinants)."""
-    powers = {(type(p.base), p.base.args[0], p.exp) for p in expr.atoms(sympy.Pow)
-              if isinstance(p.base, (sympy.sin, sympy.cos))}
-    return any((sympy.cos, x, k) in powers for f, x, k in powers if f is sympy.sin)
 
 
 def _unsigned(expr):
@@ -314,15 +334,15 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
                                          "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
                                          (variable,), f"{c.equation.where} (equation {index} of 2)"))
         det = sp.determinant(candidates[0].form, candidates[1].form)
-        if not det.is_number and _has_square_pair(det) and length(det) < 60:
-            # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
-            shorter = sympy.factor(sympy.trigsimp(det))
-            if not any(f.args[0].as_coeff_Mul()[0] not in (1, -1) for f in shorter.atoms(sympy.sin, sympy.cos)):
-                det = min([det, shorter], key=length)
+        if not det.is_number and algebra.has_square_pair(det) and length(det) < 60:
+            reduced = algebra.pythagoras(det)  # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
+            if reduced is not det:
+                det = min([det, sympy.factor(reduced)], key=length)
         if not det.is_number:
             derivation.vanishing.append((det, len(derivation.degenerate)))
             derivation.degenerate.append(_degenerate_pair(det, shown))
-        return sp.pair(candidates[0].form, candidates[1].form)
+        forms = (candidates[0].form, candidates[1].form)
+        return sp.pair(*forms, _signs[forms] if forms in _signs else sp.determinant_sign(*forms))
     sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
     if rule == "linear":
         a, b = first.form
@@ -364,6 +384,6 @@ def _variants(a, b, c, sigma):
     atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
     placeholder = sympy.Dummy("c")
     for sign in (1, -1):
-        sa, sb, sc = (x if sign == 1 else sympy.factor_terms(sympy.together(sympy.expand(-x))) for x in (a, b, c))
+        sa, sb, sc = (x if sign == 1 else sympy.factor_terms(sympy.together(algebra.expand(-x))) for x in (a, b, c))
         for shape in ("A", "B"):
             yield sa, sb, sc, shape, sp.one_equation(sa, sb, placeholder, sigma, shape)

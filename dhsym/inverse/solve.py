@@ -20,10 +20,10 @@ import sympy
 
 from ..core.robot import as_robot
 from ..errors import UserError
-from ..velocity.determinant import determinant
 from .branches import branch_name
 from .equations import point_equations, transform_equations
 from .scan import Derivation, scan
+from .singular import tie_to_jacobian
 from .solution import Branch, Solution, target_matrix, target_symbols
 from .structure import analyse
 from .witness import witness
@@ -128,17 +128,6 @@ def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:
     return target.xreplace(fixed), said
 
 
-def tie_to_jacobian(chain, derivation) -> None:
-    """Say which degenerate cases are singularities that `dhsym jacobian` prints: a factor of
-    det J (worked out fast for a wrist-partitioned arm, det A · det C)."""
-    factors = determinant(chain).factors
-    for expr, index in derivation.vanishing:
-        bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
-        matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
-        if matched:
-            derivation.degenerate[index] += f"; a singularity of J: the factor {matched[0]} of det J"
-
-
 def free_variables(chain, free) -> tuple[sympy.Symbol, ...]:
     """The joint variables named in `free` (symbols or names), checked."""
     by_name = {str(v): v for v in chain.joint_variables}
@@ -182,10 +171,15 @@ def _used_elements(definitions, assignments) -> list[str]:
 
 def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:
     """One branch per choice of the signs, named in words."""
-    branches = []
+    branches, made = [], {}  # an assignment with the same signs in it is worked out once, not per branch
+    held = [(n, v, tuple(s for s, _, _ in signs if s in v.free_symbols)) for n, v in assignments]
     for choice in product((1, -1), repeat=len(signs)):
         values = {s: c for (s, _, _), c in zip(signs, choice)}
         name = branch_name([(joint, rule, c) for (_, joint, rule), c in zip(signs, choice)], first_joint,
                            wrist_joints)
-        branches.append(Branch(name, tuple((n, v.xreplace(values)) for n, v in assignments)))
+        for n, v, mine in held:
+            key = (n, v, tuple(values[s] for s in mine))
+            if key not in made:
+                made[key] = v.xreplace({s: values[s] for s in mine})
+        branches.append(Branch(name, tuple((n, made[(n, v, tuple(values[s] for s in mine))]) for n, v, mine in held)))
     return branches

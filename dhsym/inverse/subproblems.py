@@ -23,6 +23,7 @@ import math
 import sympy
 
 from ..core.size import length
+from . import algebra
 
 
 def expand_around(expr: sympy.Expr, variable: sympy.Symbol) -> sympy.Expr | None:
@@ -35,7 +36,7 @@ def expand_around(expr: sympy.Expr, variable: sympy.Symbol) -> sympy.Expr | None
         if variable not in argument.free_symbols or argument == variable:
             continue
         coefficient = argument.coeff(variable)
-        rest = sympy.expand(argument - coefficient * variable)
+        rest = algebra.expand(argument - coefficient * variable)
         if coefficient not in (1, -1) or variable in rest.free_symbols:
             return None
         c, s = sympy.cos(variable), coefficient * sympy.sin(variable)
@@ -58,10 +59,10 @@ def trig_linear(expr: sympy.Expr, variable: sympy.Symbol, constants=frozenset())
     # Only the terms that hold cos θ or sin θ are expanded: the rest is c, as written.
     terms = sympy.Add.make_args(plain)
     rest = sympy.Add(*[t for t in terms if not t.has(c_, s_)])
-    bearing = sympy.expand(sympy.Add(*[t for t in terms if t.has(c_, s_)]))
+    bearing = algebra.expand(sympy.Add(*[t for t in terms if t.has(c_, s_)]))
     parts = sympy.collect(bearing, [c_, s_], evaluate=False)
     if set(parts) - {c_, s_, sympy.S.One}:
-        parts = sympy.collect(sympy.expand(bearing.subs(s_ ** 2, 1 - c_ ** 2)), [c_, s_], evaluate=False)
+        parts = sympy.collect(algebra.expand(bearing.subs(s_ ** 2, 1 - c_ ** 2)), [c_, s_], evaluate=False)
         if set(parts) - {c_, s_, sympy.S.One}:  # sin² = 1 − cos² did not make it linear
             return None
     a, b = parts.get(c_, sympy.Integer(0)), parts.get(s_, sympy.Integer(0))
@@ -79,7 +80,7 @@ def _divided(value, factor):
     """value / factor over one denominator ((K − a2²)/(2 a2), not K/(2 a2) − a2/2)."""
     if factor in (1, -1):
         return factor * value
-    return sympy.factor_terms(sympy.together(sympy.expand(value / factor)))
+    return sympy.factor_terms(sympy.together(algebra.expand(value / factor)))
 
 
 def _common_constant(a, b, constants) -> sympy.Expr:
@@ -90,7 +91,7 @@ def _common_constant(a, b, constants) -> sympy.Expr:
     if shared is not None:
         return shared
     x, y = sympy.Dummy("x"), sympy.Dummy("y")
-    shared, _ = sympy.factor_terms(sympy.expand(a * x + b * y)).as_independent(x, y, as_Add=False)
+    shared, _ = sympy.factor_terms(algebra.expand(a * x + b * y)).as_independent(x, y, as_Add=False)
     kept = [f for f in sympy.Mul.make_args(shared)
             if f.is_number and f != 0 or (f.free_symbols <= set(constants) and not f.atoms(sympy.Function))]
     shared = sympy.Mul(*kept)
@@ -164,9 +165,10 @@ def existence(a, b, c) -> sympy.Expr | None:
     return a ** 2 + b ** 2 - c ** 2
 
 
-def pair(first, second) -> sympy.Expr:
+def pair(first, second, sign: int | None | str = "unknown") -> sympy.Expr:
     """θ from two equations a cos θ + b sin θ = c, solved as a linear system in (cos θ, sin θ):
-    atan2 of the pair, one root. `first` and `second` are (a, b, c).
+    atan2 of the pair, one root. `first` and `second` are (a, b, c); `sign` is their
+    determinant's, when the caller has worked it out already.
 
     >>> x, y, s5 = sympy.symbols("x y s_5", real=True)
     >>> pair((-s5, 0, x), (0, s5, y))          # −s5 cos θ = x, s5 sin θ = y
@@ -174,7 +176,7 @@ def pair(first, second) -> sympy.Expr:
     """
     (a1, b1, k1), (a2, b2, k2) = first, second
     cos_part, sin_part = k1 * b2 - b1 * k2, a1 * k2 - a2 * k1
-    sign = determinant_sign(first, second)
+    sign = determinant_sign(first, second) if sign == "unknown" else sign  # the caller may know it
     if sign is None:  # atan2(s·det², c·det²) = atan2(s, c): det² > 0 wherever det ≠ 0
         det = a1 * b2 - a2 * b1
         return sympy.atan2(_tidy(sin_part * det), _tidy(cos_part * det))
@@ -184,12 +186,12 @@ def pair(first, second) -> sympy.Expr:
 def pair_is_defined(first, second) -> bool:
     """Whether the pair gives cos θ and sin θ that are not both identically zero."""
     (a1, b1, k1), (a2, b2, k2) = first, second
-    return sympy.expand(k1 * b2 - b1 * k2) != 0 or sympy.expand(a1 * k2 - a2 * k1) != 0
+    return algebra.expand(k1 * b2 - b1 * k2) != 0 or algebra.expand(a1 * k2 - a2 * k1) != 0
 
 
 def determinant(first, second, factored: bool = True) -> sympy.Expr:
     """The determinant of the pair's 2×2 system; where it is zero the angle is not determined."""
-    det = sympy.expand(first[0] * second[1] - second[0] * first[1])
+    det = algebra.expand(first[0] * second[1] - second[0] * first[1])
     return sympy.factor(det) if factored else det
 
 
@@ -197,12 +199,12 @@ def determinant_sign(first, second) -> int | None:
     """+1 or −1 when the pair's determinant keeps one sign wherever it is not zero, else None.
     [[α, −β], [β, α]] has α² + β² ≥ 0 and [[α, β], [β, −α]] has −(α² + β²) ≤ 0."""
     (a1, b1, _), (a2, b2, _) = first, second
-    zero = lambda e: sympy.expand(e) == 0  # noqa: E731
+    zero = lambda e: algebra.expand(e) == 0  # noqa: E731
     if zero(a1 - b2) and zero(b1 + a2):
         return 1
     if zero(a1 + b2) and zero(b1 - a2):
         return -1
-    det = sympy.expand(a1 * b2 - a2 * b1)
+    det = algebra.expand(a1 * b2 - a2 * b1)
     if det.is_number:
         return 1 if det > 0 else -1 if det < 0 else None
     return 1 if det.is_nonnegative else -1 if det.is_nonpositive else None
@@ -210,7 +212,7 @@ def determinant_sign(first, second) -> int | None:
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:
     """The shorter of the expression and its factored form."""
-    candidates = [expr, sympy.factor_terms(expr), sympy.factor_terms(sympy.expand(expr))]
+    candidates = [expr, sympy.factor_terms(expr), sympy.factor_terms(algebra.expand(expr))]
     return min(candidates, key=length)
 
 
@@ -222,7 +224,7 @@ def polynomial(expr: sympy.Expr, variable: sympy.Symbol):
     [1, 0, -x]
     """
     try:
-        poly = sympy.Poly(sympy.expand(expr), variable)
+        poly = sympy.Poly(algebra.expand(expr), variable)
     except sympy.PolynomialError:
         return None
     if poly.degree() not in (1, 2) or any(variable in c.free_symbols for c in poly.all_coeffs()):

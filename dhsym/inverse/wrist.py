@@ -32,10 +32,10 @@ def centre(chain, wrist) -> tuple[int, sympy.Matrix, sympy.Matrix]:
     (p1, u1), (p2, u2) = axis_in(chain, first, holder, zero), axis_in(chain, wrist[1], holder, zero)
     w = p1 - p2
     b, d, e = u1.dot(u2), u1.dot(w), u2.dot(w)
-    s = sympy.simplify((b * e - d) / (1 - b ** 2))
-    point = (p1 + s * u1).applyfunc(sympy.simplify)
+    s = _simplified((b * e - d) / (1 - b ** 2))
+    point = (p1 + s * u1).applyfunc(_simplified)
     back = chain.transform(chain.last_frame, holder).xreplace(zero)
-    in_last = (back[:3, :3] * point + back[:3, 3]).applyfunc(sympy.simplify)
+    in_last = (back[:3, :3] * point + back[:3, 3]).applyfunc(_simplified)
     return holder, point, in_last
 
 
@@ -47,8 +47,17 @@ def centre_at_start(chain, wrist) -> tuple[int, sympy.Matrix, sympy.Matrix]:
     (p1, u1), (p2, u2) = axis_in(chain, wrist[0], first, zero), axis_in(chain, wrist[1], first, zero)
     w = p1 - p2
     b, d, e = u1.dot(u2), u1.dot(w), u2.dot(w)
-    s = sympy.simplify((b * e - d) / (1 - b ** 2))
-    point = (p1 + s * u1).applyfunc(sympy.simplify)
+    s = _simplified((b * e - d) / (1 - b ** 2))
+    point = (p1 + s * u1).applyfunc(_simplified)
     holder = wrist[-1]
     there = chain.transform(holder, first).xreplace(zero)
-    return holder, (there[:3, :3] * point + there[:3, 3]).applyfunc(sympy.simplify), point
+    return holder, (there[:3, :3] * point + there[:3, 3]).applyfunc(_simplified), point
+
+
+def _simplified(expr: sympy.Expr) -> sympy.Expr:
+    """sympy.simplify, except for what it leaves as it is: a rational number, a symbol, or a
+    product of those (the wrist centre is −d6 or d4 in most arms, and simplify costs a tenth of
+    the PUMA's derivation)."""
+    if all(f.is_Rational or f.is_Symbol for f in sympy.Mul.make_args(expr)):
+        return expr
+    return sympy.simplify(expr)

@@ -1,0 +1,130 @@
+"""Exact expansion by polynomial arithmetic: the equations of inverse kinematics are polynomials
+in the cos/sin of the joint angles, the robot's constants and the target's names, with rational
+coefficients. Multiplied out in SymPy's sparse polynomial ring they expand many times faster
+than `sympy.expand` walks the expression trees, and give the same expression (expansion is
+canonical). Where an expression is not such a polynomial (√2 from a twist of π/4, a quotient),
+the caller gets None and uses `sympy.expand`. Also here: sin² + cos² = 1 applied the way a
+book does, without trigsimp's double angles.
+
+>>> import sympy
+>>> x, t = sympy.symbols("x theta", real=True)
+>>> first, second = x * sympy.cos(t) + 1, sympy.sin(t) - x
+>>> ring = Ring([first, second])
+>>> ring.expr(ring.poly(first) * ring.poly(second)) == sympy.expand(first * second)
+True
+>>> Ring([sympy.sqrt(2) * x]).usable, Ring([0.5 * x]).usable
+(False, False)
+"""
+from __future__ import annotations
+
+from itertools import product
+
+import sympy
+from sympy.polys.domains import QQ
+from sympy.polys.polyerrors import CoercionFailed
+from sympy.polys.rings import PolyRing
+
+from ..core.size import length
+
+PYTHAGORAS_ANGLES = 3  # angles whose squares are rewritten by sin² + cos² = 1: at most 3³ expansions
+
+
+class Ring:
+    """The polynomial ring over the rationals whose generators are the symbols and cos/sin
+    terms of `exprs`; `usable` is False when one of them is not a polynomial in those."""
+
+    def __init__(self, exprs):
+        atoms = set()
+        for expr in exprs:
+            atoms |= sympy.sympify(expr).atoms(sympy.Symbol, sympy.cos, sympy.sin)
+        self.ring = PolyRing(sorted(atoms, key=sympy.default_sort_key) or [sympy.Dummy()], QQ)
+        self.usable = True
+        self._polys: dict = {}
+        for expr in exprs:
+            if self.poly(expr) is None:
+                self.usable = False
+                break
+
+    def poly(self, expr):
+        """`expr` as an element of the ring (kept), or None when it is not a polynomial there."""
+        expr = sympy.sympify(expr)
+        if expr not in self._polys:
+            if expr.has(sympy.Float):  # a decimal stays as SymPy's arithmetic writes it
+                self._polys[expr] = None
+                return None
+            try:
+                self._polys[expr] = self.ring.from_expr(expr)
+            except (ValueError, CoercionFailed):
+                self._polys[expr] = None
+        return self._polys[expr]
+
+    def expr(self, poly) -> sympy.Expr:
+        """The expanded expression of a ring element."""
+        return poly.as_expr()
+
+    def expand(self, expr) -> sympy.Expr:
+        """`sympy.expand(expr)`, by the ring where `expr` is one of its polynomials."""
+        poly = self.poly(expr) if self.usable else None
+        return sympy.expand(expr) if poly is None else poly.as_expr()
+
+
+def expand(expr) -> sympy.Expr:
+    """`sympy.expand(expr)`, multiplied out in the ring of its own symbols and cos/sin terms when
+    it is a polynomial there (the same expression, faster), else by SymPy.
+
+    >>> x, y = sympy.symbols("x y")
+    >>> expand((x + y) * (x - sympy.cos(y)))
+    x**2 + x*y - x*cos(y) - y*cos(y)
+    """
+    expr = sympy.sympify(expr)
+    if expr.is_Atom or expr.has(sympy.Float):
+        return sympy.expand(expr)
+    if expr.is_Mul:  # a sum over a product of symbols (K/(2 a2)): each term of the sum divided
+        over = [f for f in expr.args if f.is_Pow and f.exp.is_Integer and f.exp < 0 and f.base.is_Symbol]
+        rest = _polynomial(sympy.Mul(*[f for f in expr.args if f not in over])) if over else None
+        if rest is not None:
+            divisor = sympy.Mul(*over)
+            return sympy.Add(*[t * divisor for t in sympy.Add.make_args(rest.as_expr())])
+    poly = _polynomial(expr)
+    return sympy.expand(expr) if poly is None else poly.as_expr()
+
+
+def _polynomial(expr):
+    """`expr` in the ring over the rationals of its symbols and cos/sin terms, or None."""
+    atoms = expr.atoms(sympy.Symbol, sympy.cos, sympy.sin)
+    if not atoms or expr.has(sympy.Float):
+        return None
+    try:
+        return PolyRing(sorted(atoms, key=sympy.default_sort_key), QQ).from_expr(expr)
+    except (ValueError, CoercionFailed):
+        return None
+
+
+def has_square_pair(expr) -> bool:
+    """Whether sin(x)**k and cos(x)**k of one angle both occur: only then can cos² + sin² = 1
+    shorten (a cheap test that spares the search most determinants)."""
+    powers = {(type(p.base), p.base.args[0], p.exp) for p in expr.atoms(sympy.Pow)
+              if isinstance(p.base, (sympy.sin, sympy.cos))}
+    return any((sympy.cos, x, k) in powers for f, x, k in powers if f is sympy.sin)
+
+
+def pythagoras(expr: sympy.Expr) -> sympy.Expr:
+    """The shortest of the forms that sin²x = 1 − cos²x or cos²x = 1 − sin²x give, for each angle
+    whose square occurs (the identity a book uses; no double angles, where SymPy's trigsimp
+    writes 2 s1 c1 as sin 2θ1, at a hundred times the cost); `expr` itself when none is shorter.
+
+    >>> t, a = sympy.symbols("theta a", real=True)
+    >>> pythagoras(1 + 2*a*sympy.cos(t) + a**2*sympy.sin(t)**2 + a**2*sympy.cos(t)**2)
+    a**2 + 2*a*cos(theta) + 1
+    """
+    angles = sorted({p.base.args[0] for p in expr.atoms(sympy.Pow)
+                     if isinstance(p.base, (sympy.sin, sympy.cos)) and p.exp == 2}, key=sympy.default_sort_key)
+    best, shortest = expr, length(expr)
+    for choice in product((None, sympy.sin, sympy.cos), repeat=min(len(angles), PYTHAGORAS_ANGLES)):
+        rules = {f(x) ** 2: 1 - (sympy.cos(x) if f is sympy.sin else sympy.sin(x)) ** 2
+                 for f, x in zip(choice, angles) if f is not None}
+        if rules:
+            reduced = expand(expr.xreplace(rules))
+            if length(reduced) < shortest:
+                best, shortest = reduced, length(reduced)
+    return best
