@@ -28,8 +28,9 @@ import sympy
 from sympy.printing.numpy import NumPyPrinter
 
 from ..core.numbers import decimal_text
-from .evaluate import ROUNDING
 from .solution import TARGET_NAMES
+
+ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
              "angles", "elements", "missing", "k"}  # the module's own names

@@ -11,8 +11,9 @@ array([[ 0.      ,  1.570796],
 """
 from __future__ import annotations
 
+from .codegen import keyword_names, module_text
+
 COMPILED_KEPT = 64  # compiled solutions kept between calls
-ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 
 
 def evaluate(solution, T, constants=None):
@@ -38,8 +39,6 @@ def _program(solution):
     """(the module's ik function, {constant name: keyword}, the names that have no default), kept per solution."""
     key = (id(solution.chain), solution.definitions, solution.branches, solution.joint_variables, solution.free)
     if key not in _compiled:
-        from .codegen import keyword_names, module_text  # the generator imports this module's ROUNDING
-
         if len(_compiled) > COMPILED_KEPT:  # a long session solving many arms keeps only recent ones
             _compiled.clear()
         namespace: dict = {}
