@@ -16,11 +16,12 @@ from __future__ import annotations
 
 import sympy
 
+from ..core.transforms import joint_axis_frame
+
 
 def axis_in(chain, joint: int, frame: int, zero: dict) -> tuple[sympy.Matrix, sympy.Matrix]:
     """(point, unit direction) of the axis of `joint` in `frame`, with the variables in `zero` set."""
-    axis_frame = joint - 1 if chain.convention == "standard" else joint
-    m = chain.transform(frame, axis_frame).xreplace(zero)
+    m = chain.transform(frame, joint_axis_frame(chain.convention, joint)).xreplace(zero)
     return m[:3, 3], m[:3, 2]
 
 
