@@ -113,7 +113,7 @@ def _assert_same_kinematics(chain, names, path, base, tip):
 def test_the_python_api_gives_the_urdf_kinematics(label, path, base, tip, convention):
     imported = import_urdf(path, base, tip, convention)
     assert imported.robot.convention == convention and imported.robot.n == len(imported.joint_names)
-    _assert_same_kinematics(imported.chain, imported.joint_names, path, base, tip)
+    _assert_same_kinematics(imported.robot, imported.joint_names, path, base, tip)
 
 
 @pytest.mark.parametrize("convention", ["standard", "modified"])
