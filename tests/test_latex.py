@@ -18,10 +18,10 @@ from itertools import pairwise
 from pathlib import Path
 
 import pytest
+from cli_runner import run_dhsym
 from robots import GREEK_PRISMATIC, TEN_JOINTS, TEST_ROBOTS
 
 from dhsym import display
-from dhsym.cli import main
 from dhsym.io.library import builtin_names, load
 from dhsym.io.robotfile import load_robot_text
 from dhsym.latex import document as latexdoc
@@ -399,23 +399,21 @@ def test_golden_files_hold_the_textbook_forms():
 
 # ---------------------------------------------------------------- the command
 
-def test_cli_writes_the_same_text_to_a_file(tmp_path, capsys):
-    assert main(["latex", "planar2r", "--document", "article"]) == 0
-    printed = capsys.readouterr().out
+def test_cli_writes_the_same_text_to_a_file(tmp_path):
+    printed = run_dhsym("latex", "planar2r", "--document", "article").ok()
     target = tmp_path / "arm.tex"
-    assert main(["latex", "planar2r", "--document", "article", "-o", str(target)]) == 0
-    assert capsys.readouterr().out == ""
+    assert run_dhsym("latex", "planar2r", "--document", "article", "-o", target).ok() == ""
     assert target.read_text(encoding="utf-8") == printed
     assert [p.name for p in tmp_path.iterdir()] == ["arm.tex"]  # no temporary file left behind
 
 
-def test_cli_failures_leave_no_partial_file(tmp_path, capsys, monkeypatch):
+def test_cli_failures_leave_no_partial_file(tmp_path, monkeypatch):
     target = tmp_path / "slides.tex"
-    assert main(["latex", "puma560", "--from", "9", "-o", str(target)]) == 2
-    error = capsys.readouterr().err
-    assert error.count("\n") == 1 and "--from: no frame 9 in this robot; frames are 0, 1, 2, 3, 4, 5, 6" in error
-    assert main(["latex", "puma560", "--from", "2", "--to", "2", "-o", str(target)]) == 2
-    assert "same frame" in capsys.readouterr().err
+    status, _, error = run_dhsym("latex", "puma560", "--from", "9", "-o", target)
+    assert status == 2 and error.count("\n") == 1
+    assert "--from: no frame 9 in this robot; frames are 0, 1, 2, 3, 4, 5, 6" in error
+    status, _, error = run_dhsym("latex", "puma560", "--from", "2", "--to", "2", "-o", target)
+    assert status == 2 and "same frame" in error
     assert not target.exists()
 
     target.write_text("the lecturer's old slides")
@@ -424,16 +422,14 @@ def test_cli_failures_leave_no_partial_file(tmp_path, capsys, monkeypatch):
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr(os, "replace", broken_rename)
-    assert main(["latex", "puma560", "-o", str(target)]) == 2
-    assert "No space left on device" in capsys.readouterr().err
+    status, _, error = run_dhsym("latex", "puma560", "-o", target)
+    assert status == 2 and "No space left on device" in error
     assert target.read_text() == "the lecturer's old slides"
     assert [p.name for p in tmp_path.iterdir()] == ["slides.tex"]
 
 
-def test_cli_from_to_and_inverse(capsys):
-    assert main(["latex", "puma560", "--document", "snippet", "--from", "3", "--to", "6"]) == 0
-    forward = capsys.readouterr().out
+def test_cli_from_to_and_inverse():
+    forward = run_dhsym("latex", "puma560", "--document", "snippet", "--from", "3", "--to", "6").ok()
     assert "% Result: ${}^{3}T_{6}$" in forward and "{}^{0}T_{1}" not in forward.split("% Link")[1]
-    assert main(["latex", "puma560", "--document", "snippet", "--from", "6", "--to", "3"]) == 0
-    backward = capsys.readouterr().out
+    backward = run_dhsym("latex", "puma560", "--document", "snippet", "--from", "6", "--to", "3").ok()
     assert "{}^{6}T_{5} =" in backward and "% Result: ${}^{6}T_{3}$" in backward
