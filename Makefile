@@ -5,6 +5,9 @@ BIN := $(VENV)/bin
 RUNTIME := $(VENV)/.ready-runtime
 DEV := $(VENV)/.ready-dev
 PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
+# pytest on every core (pytest-xdist); tests that share a costly fixture stay on one worker (tests/conftest.py).
+JOBS ?= auto
+PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist loadgroup
 
 # The fast lane for the edit-test loop: no notebooks, browser, pdflatex, pip or fuzzing (under a minute).
 .PHONY: demo test check install tex browser node-packages bench lint notebooks clean
@@ -37,11 +40,11 @@ demo: $(RUNTIME)
 
 test: install tex browser node-packages
 	$(BIN)/ruff check dhsym tests benchmarks
-	$(BIN)/python -m pytest
+	$(PYTEST)
 
 check: install
 	$(BIN)/ruff check dhsym tests benchmarks
-	$(BIN)/python -m pytest -m "not slow" -x
+	$(PYTEST) -m "not slow" -x
 
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py

@@ -283,7 +283,10 @@ def poe_fk(axes, tool, values):
     return product_of_exponentials(Screws(sympy.Matrix(rows).T, tool), values)
 
 
-@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# 12 geometries a run (each takes seconds: exact frame assignment, then FK evaluated both ways): CI
+# draws the same 12 every time (derandomized), each local run 12 new ones; the cases fixed by hand
+# above cover every kind of value.
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(geometries())
 def test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics(geometry):
     axes, tool, convention, decimals, symbolic = geometry
