@@ -9,7 +9,8 @@ PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
 JOBS ?= auto
 PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist loadgroup
 
-# The fast lane for the edit-test loop: no notebooks, browser, pdflatex, pip or fuzzing (under a minute).
+# The fast lane for the edit-test loop (`make check`, under a minute on two cores): no notebooks, browser,
+# pdflatex, pip, fuzzing or closed-form solutions of real robots; the seconds-long tests are listed in tests/conftest.py.
 .PHONY: demo test check install tex browser node-packages bench lint notebooks clean
 
 # The demo needs only what dhsym itself imports; the tests add pytest, jupyter, ruff and friends.
@@ -44,7 +45,7 @@ test: install tex browser node-packages
 
 check: install
 	$(BIN)/ruff check dhsym tests benchmarks
-	$(PYTEST) -m "not slow" -x
+	HYPOTHESIS_PROFILE=quick $(PYTEST) -m "not slow" -x
 
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py

@@ -11,6 +11,8 @@ sys.path.insert(0, os.path.dirname(__file__))  # for tests/textbook.py, tests/cl
 settings.register_profile("dev", deadline=None, max_examples=40, suppress_health_check=[HealthCheck.too_slow])
 settings.register_profile("ci", deadline=None, max_examples=40, suppress_health_check=[HealthCheck.too_slow],
                           derandomize=True)
+# `make check` (the edit-test loop) draws 10 examples per property; `make test` the profile's 40.
+settings.register_profile("quick", deadline=None, max_examples=10, suppress_health_check=[HealthCheck.too_slow])
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 
 
