@@ -5,9 +5,11 @@ BIN := $(VENV)/bin
 RUNTIME := $(VENV)/.ready-runtime
 DEV := $(VENV)/.ready-dev
 PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
-# pytest on every core (pytest-xdist); tests that share a costly fixture stay on one worker (tests/conftest.py).
+# pytest on every core (pytest-xdist). Each test file runs on one worker, so that a module's costly fixture
+# (the compiled LaTeX documents) is built once. (--dist loadgroup would be finer, but pytest-xdist 3.8's groups
+# do not take under pytest 9.2: it renames item._nodeid, which pytest 9 no longer reads.)
 JOBS ?= auto
-PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist loadgroup
+PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist loadfile
 
 # The fast lane for the edit-test loop (`make check`, under a minute on two cores): no notebooks, browser,
 # pdflatex, pip, fuzzing or closed-form solutions of real robots; the seconds-long tests are listed in tests/conftest.py.

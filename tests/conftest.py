@@ -51,33 +51,12 @@ SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_t
 SLOW_FIXTURES = ("compiled",)  # tests that run pdflatex
 
 
-# Under pytest-xdist (`make test` runs `-n 2 --dist loadgroup`), the tests that share a costly
-# module fixture run on one worker, so that it is built once: the compiled LaTeX documents of a
-# file, and each notebook (executed once, then rendered in the browser from the same run).
-SHARED_FIXTURES = ("compiled",)
-
-
-def _xdist_group(item) -> str | None:
-    fixtures = getattr(item, "fixturenames", ())
-    shared = [name for name in SHARED_FIXTURES if name in fixtures]
-    if shared:
-        return f"{item.path.name}:{shared[0]}"
-    if item.path.name in ("test_notebooks.py", "test_notebook_pages.py") and hasattr(item, "callspec"):
-        path = item.callspec.params.get("path")
-        return f"notebook:{path.name}" if path is not None else None
-    return None
-
-
 def pytest_collection_modifyitems(config, items):
     import pytest
 
-    grouping = config.pluginmanager.hasplugin("xdist")
     for item in items:
         fixtures = getattr(item, "fixturenames", ())
         if (item.path.name in SLOW_FILES or item.name in SLOW_TESTS
                 or getattr(item, "originalname", item.name) in SLOW_TESTS
                 or any(name in fixtures for name in SLOW_FIXTURES)):
             item.add_marker(pytest.mark.slow)
-        group = _xdist_group(item) if grouping else None
-        if group:
-            item.add_marker(pytest.mark.xdist_group(group))
