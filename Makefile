@@ -5,8 +5,14 @@ BIN := $(VENV)/bin
 RUNTIME := $(VENV)/.ready-runtime
 DEV := $(VENV)/.ready-dev
 PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
+# pytest on every core (pytest-xdist). Each test file runs on one worker, so that a module's costly fixture
+# (the compiled LaTeX documents) is built once. (--dist loadgroup would be finer, but pytest-xdist 3.8's groups
+# do not take under pytest 9.2: it renames item._nodeid, which pytest 9 no longer reads.)
+JOBS ?= auto
+PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist loadfile
 
-# The fast lane for the edit-test loop: no notebooks, browser, pdflatex, pip or fuzzing (under a minute).
+# The fast lane for the edit-test loop (`make check`, under a minute on two cores): no notebooks, browser,
+# pdflatex, pip, fuzzing or closed-form solutions of real robots; the seconds-long tests are listed in tests/conftest.py.
 .PHONY: demo test check install tex browser node-packages bench lint notebooks clean
 
 # The demo needs only what dhsym itself imports; the tests add pytest, jupyter, ruff and friends.
@@ -37,11 +43,11 @@ demo: $(RUNTIME)
 
 test: install tex browser node-packages
 	$(BIN)/ruff check dhsym tests benchmarks
-	$(BIN)/python -m pytest
+	$(PYTEST)
 
 check: install
 	$(BIN)/ruff check dhsym tests benchmarks
-	$(BIN)/python -m pytest -m "not slow" -x
+	HYPOTHESIS_PROFILE=quick $(PYTEST) -m "not slow" -x
 
 bench: install
 	$(BIN)/python benchmarks/simplify_speed.py

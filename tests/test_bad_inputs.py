@@ -7,7 +7,7 @@ An expected line with an error means exit status 2 and nothing on stdout; warnin
 mean exit status 0 and a result on stdout. Several inputs try to run code that would create
 a file named CANARY; the tests check that it never appears.
 
-Most cases run in-process through `cli.main` (fast); a handful run through a real subprocess,
+Most cases run in-process (tests/cli_runner.py, fast); a handful run through a real subprocess,
 to check what a user sees: no traceback, the exit status, the streams.
 """
 import os
@@ -15,10 +15,10 @@ import re
 import shutil
 import stat
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+from cli_runner import run_dhsym, run_dhsym_process
 
 from dhsym.cli import app as cli
 from dhsym.errors import UserError
@@ -76,73 +76,61 @@ def test_the_corpus_is_big_and_complete():
 
 
 @pytest.mark.parametrize("name", CASES)
-def test_case_in_process(name, workdir, monkeypatch, capsys):
-    monkeypatch.chdir(workdir)
-    status = cli.main(command_line(name))
-    stdout, stderr = capsys.readouterr()
-    check_outcome(name, status, stdout, stderr)
+def test_case_in_process(name, workdir):
+    check_outcome(name, *run_dhsym(*command_line(name), cwd=workdir))
     assert not (workdir / CANARY).exists()
 
 
 @pytest.mark.parametrize("name", THROUGH_SUBPROCESS)
 def test_case_through_subprocess(name, workdir):
-    result = subprocess.run([sys.executable, "-m", "dhsym.cli", *command_line(name)], cwd=workdir,
-                            capture_output=True, text=True, timeout=60, env={**os.environ, "PYTHONIOENCODING": "utf-8"})
-    check_outcome(name, result.returncode, result.stdout, result.stderr)
+    check_outcome(name, *run_dhsym_process(*command_line(name), cwd=workdir))
     assert not (workdir / CANARY).exists()
 
 
-def _run_in_process(argv, capsys, **injected):
-    status = cli.main(argv, **injected)
-    stdout, stderr = capsys.readouterr()
-    return status, stdout, stderr
-
-
-def test_a_file_over_the_size_limit_is_refused_without_reading_it_all(tmp_path, monkeypatch, capsys):
+def test_a_file_over_the_size_limit_is_refused_without_reading_it_all(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     Path("huge.yaml").write_bytes(b"notes: " + b"x" * MAX_FILE_BYTES + b"\n")
-    assert _run_in_process(["fk", "huge.yaml"], capsys) == (
+    assert run_dhsym("fk", "huge.yaml") == (
         2, "", "dhsym: error: huge.yaml:1:1: file is larger than 1 MiB, the limit for robot files\n")
 
 
-def test_too_many_yaml_values_are_refused(tmp_path, monkeypatch, capsys):
+def test_too_many_yaml_values_are_refused(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     Path("wide.yaml").write_text("convention: standard\nnotes: [" + "1, " * MAX_YAML_NODES + "1]\n")
-    status, stdout, stderr = _run_in_process(["fk", "wide.yaml"], capsys)
+    status, stdout, stderr = run_dhsym("fk", "wide.yaml")
     assert (status, stdout) == (2, "")
     assert re.fullmatch(r"dhsym: error: wide\.yaml:2:\d+: more than 20000 YAML values; this is not a robot file\n",
                         stderr)
 
 
-def test_an_internal_bug_asks_for_a_report_and_exits_70(capsys):
+def test_an_internal_bug_asks_for_a_report_and_exits_70():
     def broken(name):
         raise KeyError("a bug")
-    status, stdout, stderr = _run_in_process(["fk", "planar2r"], capsys, read=broken)
+    status, stdout, stderr = run_dhsym("fk", "planar2r", read=broken)
     assert status == 70 and stdout == ""
     assert stderr == ("dhsym: internal error: KeyError: 'a bug' (a bug in dhsym, not a mistake in your input; please "
                       "report it on the dhsym issue tracker with the command and the robot file)\n")
 
 
-def test_a_closed_pipe_is_one_error_line(capsys):
+def test_a_closed_pipe_is_one_error_line():
     def reader_left(name):
         raise BrokenPipeError()
-    status, stdout, stderr = _run_in_process(["fk", "planar2r"], capsys, read=reader_left)
+    status, stdout, stderr = run_dhsym("fk", "planar2r", read=reader_left)
     assert (status, stdout) == (cli.EXIT_BROKEN_PIPE, "")
     assert stderr.startswith("dhsym: error: standard output was closed by its reader") and stderr.count("\n") == 1
 
 
 def test_an_ascii_terminal_gets_advice_not_a_traceback():
-    result = subprocess.run([sys.executable, "-m", "dhsym.cli", "fk", "planar2r"], capture_output=True, text=True,
-                            timeout=60, env={**os.environ, "PYTHONIOENCODING": "ascii"})
-    assert result.returncode == 2 and result.stdout == ""
+    result = run_dhsym_process("fk", "planar2r", env={"PYTHONIOENCODING": "ascii"})
+    assert result.status == 2 and result.stdout == ""
     assert result.stderr == "dhsym: error: the output cannot be written as ascii; use --ascii, or set " \
                             "PYTHONIOENCODING=utf-8\n"
 
 
-def test_messages_stay_on_one_line_whatever_the_file_is_called(tmp_path, monkeypatch, capsys):
+def test_messages_stay_on_one_line_whatever_the_file_is_called(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     Path("two\nlines.yaml").write_text("convention: standard\njoints: []\n")
-    status, _, stderr = _run_in_process(["fk", "two\nlines.yaml"], capsys)
+    status, _, stderr = run_dhsym("fk", "two\nlines.yaml")
     assert status == 2
     assert stderr == "dhsym: error: two\\nlines.yaml:2:9: joints is empty; a robot needs at least one joint\n"
 
@@ -187,17 +175,11 @@ def test_a_missing_folder_is_a_user_error(tmp_path):
 needs_fifo = pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes need a POSIX system")
 
 
-def _dhsym(args, folder, stdin=None):
-    """A real run with a time limit far off, so that a run that would block for ever fails the test."""
-    return subprocess.run([sys.executable, "-m", "dhsym.cli", *args], cwd=folder, capture_output=True, text=True,
-                          timeout=120, input=stdin, env={**os.environ, "PYTHONIOENCODING": "utf-8"})
-
-
 @needs_fifo
 def test_a_named_pipe_nobody_writes_is_refused_at_once_not_waited_for(tmp_path):
     os.mkfifo(tmp_path / "robot.yaml")
-    result = _dhsym(["fk", "robot.yaml"], tmp_path)
-    assert result.returncode == 2 and result.stdout == ""
+    result = run_dhsym_process("fk", "robot.yaml", cwd=tmp_path)
+    assert result.status == 2 and result.stdout == ""
     assert result.stderr.startswith("dhsym: error: robot.yaml: is a named pipe that no program writes to")
     assert result.stderr.count("\n") == 1 and "- to read standard input" in result.stderr
 
@@ -205,8 +187,8 @@ def test_a_named_pipe_nobody_writes_is_refused_at_once_not_waited_for(tmp_path):
 @needs_fifo
 def test_a_named_pipe_nobody_reads_is_refused_as_output_and_no_file_appears(tmp_path):
     os.mkfifo(tmp_path / "T.tex")
-    result = _dhsym(["latex", "planar2r", "-o", "T.tex"], tmp_path)
-    assert result.returncode == 2 and result.stdout == ""
+    result = run_dhsym_process("latex", "planar2r", "-o", "T.tex", cwd=tmp_path)
+    assert result.status == 2 and result.stdout == ""
     assert result.stderr == ("dhsym: error: T.tex: is a named pipe that no program reads, and dhsym does not wait "
                              "for one; start the reader first, or write to a file\n")
     assert stat.S_ISFIFO((tmp_path / "T.tex").stat().st_mode) and os.listdir(tmp_path) == ["T.tex"]
@@ -232,8 +214,8 @@ def test_a_socket_is_neither_a_robot_file_nor_an_output(tmp_path, monkeypatch):
     server = socket.socket(socket.AF_UNIX)
     server.bind("robot.sock")
     try:
-        result = _dhsym(["fk", "robot.sock"], tmp_path)
-        assert result.returncode == 2 and result.stderr == "dhsym: error: robot.sock: is a socket, not a robot file\n"
+        result = run_dhsym_process("fk", "robot.sock", cwd=tmp_path)
+        assert result.status == 2 and result.stderr == "dhsym: error: robot.sock: is a socket, not a robot file\n"
         with pytest.raises(UserError, match="^robot.sock: is a socket, not a file to write to$"):
             write_atomic("robot.sock", "x")
     finally:
@@ -242,8 +224,9 @@ def test_a_socket_is_neither_a_robot_file_nor_an_output(tmp_path, monkeypatch):
 
 def test_devices_and_standard_input_still_work(tmp_path):
     robot = (Path(__file__).parents[1] / "dhsym" / "robots" / "planar2r.yaml").read_text(encoding="utf-8")
-    assert _dhsym(["latex", "planar2r", "-o", os.devnull], tmp_path).returncode == 0
-    full = _dhsym(["latex", "planar2r", "-o", "/dev/full"], tmp_path) if Path("/dev/full").exists() else None
+    assert run_dhsym_process("latex", "planar2r", "-o", os.devnull, cwd=tmp_path).status == 0
+    full = (run_dhsym_process("latex", "planar2r", "-o", "/dev/full", cwd=tmp_path) if Path("/dev/full").exists()
+            else None)
     assert full is None or full.stderr == "dhsym: error: /dev/full: cannot write file: No space left on device\n"
-    piped = _dhsym(["fk", "-"], tmp_path, stdin=robot)
-    assert piped.returncode == 0 and "a_{1}" not in piped.stdout and "c12" in piped.stdout
+    piped = run_dhsym_process("fk", "-", cwd=tmp_path, stdin=robot)
+    assert piped.status == 0 and "a_{1}" not in piped.stdout and "c12" in piped.stdout

@@ -11,10 +11,10 @@ import sys
 import time
 
 import pytest
+from cli_runner import run_dhsym
 
 import dhsym
 from dhsym import Chain, DHRow, real_symbol
-from dhsym.cli import app as cli
 from dhsym.core import chain as chain_module
 from dhsym.core.budget import BudgetExceeded, CommandTooSlow, time_budget
 from dhsym.errors import UserError
@@ -36,12 +36,6 @@ def general_rows(n):
         t, d, a, alpha = (real_symbol(f"{name}_{i}") for name in ("theta", "d", "a", "alpha"))
         rows.append(DHRow.revolute(t, d=d, a=a, alpha=alpha))
     return rows
-
-
-def _cli(argv, capsys, **injected):
-    status = cli.main(argv, **injected)
-    stdout, stderr = capsys.readouterr()
-    return status, stdout, stderr
 
 
 def test_a_transform_too_large_to_build_is_refused_from_its_estimate():
@@ -70,20 +64,20 @@ def test_whether_a_determinant_is_factored_is_decided_by_counting_terms(monkeypa
                            "7,000 that dhsym factors: not computed.")
 
 
-def test_the_safety_net_stops_a_command_with_one_line_that_says_what_it_is(capsys):
-    status, stdout, stderr = _cli(["fk", "planar2r", "--timeout", "0.2"], capsys, read=never_finishes)
+def test_the_safety_net_stops_a_command_with_one_line_that_says_what_it_is():
+    status, stdout, stderr = run_dhsym("fk", "planar2r", "--timeout", "0.2", read=never_finishes)
     assert (status, stdout) == (2, "")
     assert stderr == ("dhsym: error: planar2r: stopped by the safety net after 0.2 s (--timeout); no normal input "
                       "takes this long, and the size estimates did not foresee it; please report the robot file on "
                       "the dhsym issue tracker\n")
 
 
-def test_without_an_interval_timer_commands_still_work(monkeypatch, capsys):
+def test_without_an_interval_timer_commands_still_work(monkeypatch):
     """Windows has no signal.setitimer: the estimates alone bound the work, and nothing exits 70."""
-    expected = _cli(["jacobian", "planar2r"], capsys)
+    expected = run_dhsym("jacobian", "planar2r")
     monkeypatch.delattr(signal, "setitimer")
-    assert _cli(["jacobian", "planar2r"], capsys) == expected
-    status, stdout, stderr = _cli(["fk", "general.yaml"], capsys, read=lambda name: _general_robot(24))
+    assert run_dhsym("jacobian", "planar2r") == expected
+    status, stdout, stderr = run_dhsym("fk", "general.yaml", read=lambda name: _general_robot(24))
     assert status == 2 and "too large to print or read" in stderr
     with time_budget(0.01, CommandTooSlow):  # no timer: no limit, no error
         time.sleep(0.05)

@@ -1,23 +1,21 @@
-"""The CLI through subprocess: outputs, exit codes, JSON that reads back, determinism, numbers
-and angles as written, output that fits its width, and faults that are not bugs."""
+"""The CLI as a user runs it: outputs, exit codes, JSON that reads back, determinism, numbers
+and angles as written, output that fits its width, and faults that are not bugs.
+
+Most tests run the command in this process (tests/cli_runner.py: the same `main`, its own
+streams, 100 columns); a real process where only one shows it: the demo, the hash seed, no
+terminal and no $COLUMNS, a full disk, a closed or abandoned standard output."""
 import json
 import os
 import stat
 import subprocess
-import sys
 
 import pytest
 import sympy
+from cli_runner import COMMAND, run_dhsym_process
+from cli_runner import run_dhsym as run
 
 from dhsym.checking.verify import numeric_error
 from dhsym.io.library import load
-
-
-def run(*args, env=None, input=None, **options):
-    """dhsym as a user runs it; 100 columns unless the test says otherwise, whatever the tester's terminal."""
-    return subprocess.run([sys.executable, "-m", "dhsym.cli", *args], capture_output=True, text=True, input=input,
-                          env={**os.environ, "COLUMNS": "100", **(env or {})}, timeout=60, **options)
-
 
 UR5_PUBLISHED = """\
 name: UR5 (published numbers)
@@ -50,8 +48,8 @@ def robot_file(tmp_path):
 
 
 def test_demo_output():
-    result = run("fk", "puma560")
-    assert result.returncode == 0 and result.stderr == ""
+    result = run_dhsym_process("fk", "puma560")
+    assert result.status == 0 and result.stderr == ""
     assert "px  = c1(a2 c2 + a3 c23 − d4 s23) − d3 s1" in result.stdout
     assert "c23 = cos(θ2 + θ3)" in result.stdout
 
@@ -90,7 +88,7 @@ def test_tool_frame_is_the_default_end():
 ])
 def test_user_errors_are_one_line_exit_2(args, message):
     result = run(*args)
-    assert result.returncode == 2 and result.stdout == ""
+    assert result.status == 2 and result.stdout == ""
     assert result.stderr.count("\n") == 1 and result.stderr.startswith(message)
     assert "Traceback" not in result.stderr
 
@@ -98,7 +96,7 @@ def test_user_errors_are_one_line_exit_2(args, message):
 def test_help_at_every_level():
     for args in (("--help",), ("fk", "--help"), ("table", "--help"), ("links", "--help"), ("list", "--help")):
         result = run(*args)
-        assert result.returncode == 0 and "usage: dhsym" in result.stdout
+        assert result.status == 0 and "usage: dhsym" in result.stdout
 
 
 def test_list_shows_sources():
@@ -114,9 +112,10 @@ def test_links_and_table():
 
 
 def test_same_output_under_any_hash_seed():
-    outputs = {run("fk", "puma560", env={"PYTHONHASHSEED": seed}).stdout for seed in ("0", "1", "12345")}
+    outputs = {run_dhsym_process("fk", "puma560", env={"PYTHONHASHSEED": seed}).stdout for seed in ("0", "1", "12345")}
     assert len(outputs) == 1
-    outputs = {run("fk", "scara", "--format", "latex", env={"PYTHONHASHSEED": seed}).stdout for seed in ("0", "7")}
+    outputs = {run_dhsym_process("fk", "scara", "--format", "latex", env={"PYTHONHASHSEED": seed}).stdout
+               for seed in ("0", "7")}
     assert len(outputs) == 1
 
 
@@ -150,7 +149,7 @@ def test_control_characters_in_names_are_escaped_in_every_output(robot_file):
     for command in (["table"], ["fk"], ["jacobian"], ["screws"], ["fk", "--format", "json"], ["latex"],
                     ["latex", "--document", "article"], ["check", "--against", path]):
         result = run(command[0], path, *command[1:])
-        assert result.returncode == 0 and result.stdout, command
+        assert result.status == 0 and result.stdout, command
         assert not any(ch not in "\n\t" and not ch.isprintable() for ch in result.stdout), command
     assert run("table", path).stdout.startswith("arm\\x1b[31mRED\\x9b: DH table")
     assert json.loads(run("fk", path, "--format", "json").stdout)["robot"] == "arm\x1b[31mRED\x9b"
@@ -224,14 +223,14 @@ def test_a_long_element_breaks_before_a_top_level_sign_with_a_hanging_indent():
 
 
 def test_the_textbook_forms_print_unchanged_at_the_default_width():
-    text = run("fk", "puma560", env={"COLUMNS": ""}).stdout  # no terminal, no COLUMNS: 100
+    text = run_dhsym_process("fk", "puma560", env={"COLUMNS": ""}).stdout  # no terminal, no COLUMNS: 100
     assert "r11 = c1[c23(c4 c5 c6 − s4 s6) − s23 s5 c6] + s1(c4 s6 + s4 c5 c6)\n" in text
 
 
 @pytest.mark.parametrize("width", ["0", "-5", "39"])
 def test_a_width_below_the_minimum_is_refused(width):
     result = run("fk", "puma560", f"--width={width}")
-    assert result.returncode == 2 and result.stdout == ""
+    assert result.status == 2 and result.stdout == ""
     assert result.stderr == (f"dhsym: error: argument --width: the width must be at least 40 columns, not {width} "
                              f"(see 'dhsym fk --help')\n")
 
@@ -248,11 +247,11 @@ def test_every_robot_command_reads_the_robot_file_from_standard_input(robot_file
     path = robot_file(OFFSET_ARM)
     for command in (["fk"], ["links"], ["table"], ["latex", "--document", "snippet"]):
         from_file, from_stdin = run(*command[:1], path, *command[1:]), run(*command[:1], "-", *command[1:],
-                                                                           input=OFFSET_ARM)
-        assert from_stdin.returncode == 0 and from_stdin.stdout.replace("<stdin>", path) == from_file.stdout
-    picture = run("plot", "-", "--set", "l_1=1", "l_2=0.5", "-o", str(tmp_path / "arm.png"), input=OFFSET_ARM)
-    assert picture.returncode == 0 and (tmp_path / "arm.png").read_bytes()[:4] == b"\x89PNG"
-    broken = run("fk", "-", input="convention: standard\njoints: [{joint: R, alpha: pi2, a: 0, d: 0, theta: q}]\n")
+                                                                           stdin=OFFSET_ARM)
+        assert from_stdin.status == 0 and from_stdin.stdout.replace("<stdin>", path) == from_file.stdout
+    picture = run("plot", "-", "--set", "l_1=1", "l_2=0.5", "-o", str(tmp_path / "arm.png"), stdin=OFFSET_ARM)
+    assert picture.status == 0 and (tmp_path / "arm.png").read_bytes()[:4] == b"\x89PNG"
+    broken = run("fk", "-", stdin="convention: standard\njoints: [{joint: R, alpha: pi2, a: 0, d: 0, theta: q}]\n")
     assert broken.stderr == ("dhsym: warning: <stdin>:2:28: joint row 1 alpha: 'pi2' is a new symbol, not π; "
                              "did you mean pi/2?\n")
 
@@ -261,7 +260,7 @@ def test_the_ur5_determinant_does_not_depend_on_the_machine():
     """Factored or not is decided by counting terms, not by a time budget (it used to say "not
     computed" on a loaded machine)."""
     result = run("jacobian", "ur5")
-    assert result.returncode == 0
+    assert result.status == 0
     assert "not computed" not in result.stdout and "s5" in result.stdout.split("det")[-1]
 
 
@@ -269,11 +268,11 @@ def test_a_result_too_large_to_print_is_refused_within_seconds(robot_file):
     rows = "".join(f"  - {{joint: R, alpha: alpha_{i}, a: a_{i}, d: d_{i}, theta: theta_{i}}}\n" for i in range(1, 25))
     path = robot_file("name: general\nconvention: standard\njoints:\n" + rows)
     result = run("fk", path)  # refused by the estimate (the message below), not by a budget after minutes
-    assert result.returncode == 2 and result.stdout == ""
+    assert result.status == 2 and result.stdout == ""
     assert result.stderr == (f"dhsym: error: {path}: 0T24 would take about 1.2 trillion characters, too large to "
                              f"print or read; ask for part of the chain with --from/--to (--from 0 --to 8 fits), or "
                              f"print the link matrices with 'dhsym links'\n")
-    assert run("fk", path, "--from", "0", "--to", "3").returncode == 0
+    assert run("fk", path, "--from", "0", "--to", "3").status == 0
 
 
 @pytest.mark.skipif(not (os.path.exists("/dev/full") and stat.S_ISCHR(os.stat("/dev/full").st_mode)),
@@ -281,24 +280,21 @@ def test_a_result_too_large_to_print_is_refused_within_seconds(robot_file):
 def test_a_full_disk_is_an_error_not_a_bug():
     for command in (["fk", "puma560"], ["table", "puma560"], ["fk", "iiwa7", "--format", "json"]):
         with open("/dev/full", "w") as full:
-            result = subprocess.run([sys.executable, "-m", "dhsym.cli", *command], stdout=full, stderr=subprocess.PIPE,
-                                    text=True, timeout=60, env={**os.environ, "COLUMNS": "100"})
-        assert (result.returncode, result.stderr) == (2, "dhsym: error: cannot write the output: No space left on "
+            result = run_dhsym_process(*command, stdout=full)
+        assert (result.status, result.stderr) == (2, "dhsym: error: cannot write the output: No space left on "
                                                          "device\n"), command
-    result = run("latex", "planar2r", "-o", "/dev/full")
-    assert (result.returncode, result.stderr) == (2, "dhsym: error: /dev/full: cannot write file: No space left on "
+    result = run_dhsym_process("latex", "planar2r", "-o", "/dev/full")
+    assert (result.status, result.stderr) == (2, "dhsym: error: /dev/full: cannot write file: No space left on "
                                                      "device\n")
     assert stat.S_ISCHR(os.stat("/dev/full").st_mode)  # written to, never replaced by a regular file
 
 
 def test_a_closed_standard_output_or_pipe_is_not_a_bug():
-    closed = subprocess.run([sys.executable, "-m", "dhsym.cli", "fk", "puma560"], stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, text=True, timeout=60, close_fds=True,
-                            preexec_fn=lambda: os.close(1))
-    assert (closed.returncode, closed.stderr) == (2, "dhsym: error: standard output is closed; there is nowhere "
+    closed = run_dhsym_process("fk", "puma560", stdout=subprocess.DEVNULL, close_fds=True,
+                               preexec_fn=lambda: os.close(1))
+    assert (closed.status, closed.stderr) == (2, "dhsym: error: standard output is closed; there is nowhere "
                                                      "to write the result\n")
-    reader = subprocess.Popen([sys.executable, "-m", "dhsym.cli", "links", "iiwa7"], stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE)
+    reader = subprocess.Popen([*COMMAND, "links", "iiwa7"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     reader.stdout.close()  # the reader leaves before anything is written, like `| head -0`
     assert reader.wait(timeout=60) == 141
     assert reader.stderr.read() == ("dhsym: error: standard output was closed by its reader before all of the output "
@@ -307,10 +303,10 @@ def test_a_closed_standard_output_or_pipe_is_not_a_bug():
 
 def test_an_unwritable_output_path_is_one_error_line(tmp_path):
     result = run("latex", "planar2r", "-o", str(tmp_path / "missing" / "arm.tex"))
-    assert (result.returncode, result.stdout) == (2, "")
+    assert (result.status, result.stdout) == (2, "")
     assert result.stderr == f"dhsym: error: {tmp_path / 'missing' / 'arm.tex'}: folder " \
                             f"'{tmp_path / 'missing'}' does not exist\n"
     folder = tmp_path / "folder.tex"
     folder.mkdir()
     result = run("latex", "planar2r", "-o", str(folder))
-    assert result.returncode == 2 and result.stderr.startswith(f"dhsym: error: {folder}: cannot write file: ")
+    assert result.status == 2 and result.stderr.startswith(f"dhsym: error: {folder}: cannot write file: ")

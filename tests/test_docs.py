@@ -37,9 +37,9 @@ import subprocess
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import NamedTuple
 
 import pytest
+from cli_runner import run_dhsym
 
 ROOT = Path(__file__).resolve().parent.parent
 PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
@@ -82,33 +82,6 @@ def blocks(page: Path) -> list[Block]:
             current.lines.append(line[len(current.indent):] if line.startswith(current.indent) else line.lstrip())
     assert current is None, f"{page.name}: a code block is not closed"
     return found
-
-
-class Result(NamedTuple):
-    status: int
-    stdout: str
-    stderr: str
-
-
-def run_dhsym(*args, stdin: str = "") -> Result:
-    """`dhsym ARGS` in this process, as `python -m dhsym.cli ARGS` runs it (`dhsym.cli.main`).
-
-    The same call as tests/cli_runner.py's `run_dhsym` on the `ci` branch; once both are merged,
-    this function gives way to that one.
-    """
-    from dhsym.cli import main
-
-    out, err = io.StringIO(), io.StringIO()
-    saved_stdin, sys.stdin = sys.stdin, io.TextIOWrapper(io.BytesIO(stdin.encode("utf-8")), encoding="utf-8")
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            try:
-                status = main([str(arg) for arg in args])
-            except SystemExit as leaving:  # --help and usage errors leave through argparse
-                status = leaving.code if isinstance(leaving.code, int) else int(leaving.code is not None)
-    finally:
-        sys.stdin = saved_stdin
-    return Result(status, out.getvalue(), err.getvalue())
 
 
 def run_console(block: Block, where: str) -> list[str]:

@@ -12,6 +12,7 @@ from decimal import Decimal
 import pytest
 import sympy
 import yaml
+from cli_runner import run_dhsym
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -360,14 +361,12 @@ def test_robot_files_with_decimals_and_offsets_read_back_from_every_output(text)
     """The table (text and JSON) reads back to the file's exact values; the JSON matrix to the product."""
     import json
 
-    from dhsym.cli.app import main
-
     robot = load_robot_text(text, "arm.yaml")
     chain = robot.chain
     names = {s.name: s for s in chain.symbols}
     commands = (["table", "-", "--ascii", "--width", "200"], ["table", "-", "--format", "json"],
                 ["fk", "-", "--format", "json"])
-    table, rows, fk = (_run_in_process(main, argv, text) for argv in commands)
+    table, rows, fk = (run_dhsym(*argv, stdin=text).ok() for argv in commands)
     cells = [line.split(" | ")[1:] for line in table.splitlines()[4:]]
     assert len(cells) == chain.n
     for row, line in zip(chain.rows, cells):
@@ -379,21 +378,6 @@ def test_robot_files_with_decimals_and_offsets_read_back_from_every_output(text)
     matrix = sympy.Matrix([[sympy.sympify(element, locals=names, rational=True) for element in row]
                            for row in json.loads(fk)["matrix"]])
     assert numeric_error(matrix, chain.fk(raw=True)) < 1e-9, text
-
-
-def _run_in_process(main, argv, text) -> str:
-    import contextlib
-    import io
-    import sys
-
-    stdin, stdout = sys.stdin, io.StringIO()
-    sys.stdin = io.TextIOWrapper(io.BytesIO(text.encode("utf-8")), encoding="utf-8")
-    try:
-        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(io.StringIO()):
-            assert main(argv) == 0
-    finally:
-        sys.stdin = stdin
-    return stdout.getvalue()
 
 
 def _numerically_equal(a: sympy.Expr, b: sympy.Expr) -> bool:

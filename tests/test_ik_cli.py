@@ -9,9 +9,9 @@ import ik_checks
 import ik_examples
 import numpy as np
 import pytest
+from cli_runner import run_dhsym
 
 import dhsym.inverse.api
-from dhsym.cli import main
 from dhsym.io.library import load
 from dhsym.printing.render import display_width
 
@@ -33,14 +33,8 @@ def by_hand(monkeypatch):
     monkeypatch.setattr(dhsym.inverse.api, "solve", solve)
 
 
-def dhsym_cli(capsys, *argv):
-    status = main(list(argv))
-    out, err = capsys.readouterr()
-    return status, out, err
-
-
-def test_text_is_the_textbook_form_and_fits_the_width(by_hand, capsys):
-    status, out, err = dhsym_cli(capsys, "ik", "planar2r", "--width", "40")
+def test_text_is_the_textbook_form_and_fits_the_width(by_hand):
+    status, out, err = run_dhsym("ik", "planar2r", "--width", "40")
     assert status == 0 and err == ""
     assert max(map(display_width, out.splitlines())) <= 40
     words = " ".join(out.split())
@@ -52,8 +46,8 @@ def test_text_is_the_textbook_form_and_fits_the_width(by_hand, capsys):
 
 
 @pytest.mark.parametrize("width", [40, 60, 100])
-def test_puma_text_fits_every_width_and_names_its_eight_branches(by_hand, capsys, width):
-    status, out, _ = dhsym_cli(capsys, "ik", "puma560", "--width", str(width))
+def test_puma_text_fits_every_width_and_names_its_eight_branches(by_hand, width):
+    status, out, _ = run_dhsym("ik", "puma560", "--width", str(width))
     assert status == 0 and max(map(display_width, out.splitlines())) <= width
     words = " ".join(out.split())
     assert "K = (px² + py² + pz² − a2² − a3² − d3² − d4²)/(2 a2)" in words
@@ -64,12 +58,12 @@ def test_puma_text_fits_every_width_and_names_its_eight_branches(by_hand, capsys
     assert "s23 = sin(θ2 + θ3)" in words
 
 
-def test_puma_json_and_module_reach_random_poses_with_all_eight_branches(by_hand, capsys, tmp_path):
+def test_puma_json_and_module_reach_random_poses_with_all_eight_branches(by_hand, tmp_path):
     chain = load("puma560")
-    _, out, _ = dhsym_cli(capsys, "ik", "puma560", "--format", "json")
+    _, out, _ = run_dhsym("ik", "puma560", "--format", "json")
     data = ik_checks.check_json(out, chain)
     assert len(data["solutions"]) == 8 and data["definitions"][0][0] == "K"
-    _, out, _ = dhsym_cli(capsys, "ik", "puma560", "--format", "python")
+    _, out, _ = run_dhsym("ik", "puma560", "--format", "python")
     (tmp_path / "puma_ik.py").write_text(out)
     module = ik_checks.import_module(tmp_path / "puma_ik.py")
     assert "def ik(T, *, a_2=0.4318, a_3=0.0203, d_3=0.1245, d_4=0.4318):" in out
@@ -80,21 +74,21 @@ def test_puma_json_and_module_reach_random_poses_with_all_eight_branches(by_hand
     assert module.ik(poses).shape == (20, 8, 6) and np.isfinite(module.ik(poses)).all()
 
 
-def test_ascii_text_has_no_unicode(by_hand, capsys):
-    status, out, _ = dhsym_cli(capsys, "ik", "planar2r", "--ascii")
+def test_ascii_text_has_no_unicode(by_hand):
+    status, out, _ = run_dhsym("ik", "planar2r", "--ascii")
     assert status == 0 and out.isascii(), [ch for ch in out if not ch.isascii()]
     assert "theta2 = atan2(sqrt(1 - D^2), D)" in out
 
 
-def test_json_is_the_contract(by_hand, capsys):
-    status, out, _ = dhsym_cli(capsys, "ik", "planar2r", "--format", "json")
+def test_json_is_the_contract(by_hand):
+    status, out, _ = run_dhsym("ik", "planar2r", "--format", "json")
     data = ik_checks.check_json(out, load("planar2r"))
     assert [branch["name"] for branch in data["solutions"]] == ["elbow down", "elbow up"]
     assert data["definitions"] == [["D", "(-a_1**2 - a_2**2 + px**2 + py**2)/(2*a_1*a_2)"]]
 
 
-def test_generated_module_reaches_every_pose_with_every_branch(by_hand, capsys, tmp_path):
-    status, out, _ = dhsym_cli(capsys, "ik", "planar2r", "--format", "python")
+def test_generated_module_reaches_every_pose_with_every_branch(by_hand, tmp_path):
+    status, out, _ = run_dhsym("ik", "planar2r", "--format", "python")
     assert status == 0 and "import sympy" not in out and "dhsym ik planar2r --format python" in out
     path = tmp_path / "planar2r_ik.py"
     path.write_text(out)
@@ -108,8 +102,8 @@ def test_generated_module_reaches_every_pose_with_every_branch(by_hand, capsys, 
     ik_checks.check_branches_reach(lambda T: module.ik(T, **other), chain, other, joints[:5], compare=position)
 
 
-def test_generated_module_shapes_and_nan_outside_the_workspace(by_hand, capsys, tmp_path):
-    _, out, _ = dhsym_cli(capsys, "ik", "planar2r", "--format", "python")
+def test_generated_module_shapes_and_nan_outside_the_workspace(by_hand, tmp_path):
+    _, out, _ = run_dhsym("ik", "planar2r", "--format", "python")
     (tmp_path / "arm_ik.py").write_text(out)
     ik = ik_checks.import_module(tmp_path / "arm_ik.py").ik
     far = np.eye(4)
@@ -143,14 +137,14 @@ def test_python_api_has_branches_evaluation_latex_and_code(by_hand):
     (["latex", "planar2r", "--free", "theta_1"], "--free names the parameters of the inverse kinematics; add --ik"),
     (["ik", "planar2r", "--format", "yaml"], "argument --format: invalid choice: 'yaml'"),
 ])
-def test_user_errors_are_one_line_and_status_2(capsys, argv, message):
-    status, out, err = dhsym_cli(capsys, *argv)
+def test_user_errors_are_one_line_and_status_2(argv, message):
+    status, out, err = run_dhsym(*argv)
     assert status == 2 and out == "" and err.count("\n") == 1 and err.startswith("dhsym: error: ")
     assert message in err
 
 
-def test_latex_snippet_is_the_derivation(by_hand, capsys):
-    _, out, _ = dhsym_cli(capsys, "ik", "planar2r", "--format", "latex")
+def test_latex_snippet_is_the_derivation(by_hand):
+    _, out, _ = run_dhsym("ik", "planar2r", "--format", "latex")
     assert "% Step 1 (law of cosines), for $\\theta_{2}$" in out
     assert "D &= \\frac{p_{x}^{2} + p_{y}^{2} - a_{1}^{2} - a_{2}^{2}}{2 a_{1} a_{2}}" in out
     assert "\\theta_{2} &= \\mathrm{atan2}(-\\sqrt{1 - D^{2}}, D)" in out
@@ -158,6 +152,8 @@ def test_latex_snippet_is_the_derivation(by_hand, capsys):
 
 
 def _pdflatex(folder, job: str, text: str):
+    if shutil.which("pdflatex") is None:
+        pytest.skip("pdflatex is not installed: run `make tex`")
     (folder / f"{job}.tex").write_text(text, encoding="utf-8")
     command = ["pdflatex", "-halt-on-error", "-interaction=nonstopmode", "-no-shell-escape", f"{job}.tex"]
     result = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=120)
@@ -171,9 +167,9 @@ def _pdflatex(folder, job: str, text: str):
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
 @pytest.mark.parametrize("kind", ["slides", "article", "snippet", "ik"])
 @pytest.mark.parametrize("robot", BY_HAND)
-def test_documents_with_the_derivation_compile_and_fit(by_hand, capsys, tmp_path, kind, robot):
+def test_documents_with_the_derivation_compile_and_fit(by_hand, tmp_path, kind, robot):
     argv = ["ik", robot, "--format", "latex"] if kind == "ik" else ["latex", robot, "--ik", "--document", kind]
-    status, out, _ = dhsym_cli(capsys, *argv)
+    status, out, _ = run_dhsym(*argv)
     assert status == 0 and "Branch 2: " in out
     text = HOST.format(out) if kind in ("snippet", "ik") else out
     assert _pdflatex(tmp_path, kind, text) == (0, [])
@@ -192,12 +188,12 @@ def test_plot_draws_every_branch_at_the_pose_side_by_side(by_hand):
     assert all("does not reach this pose" in ax.get_title() for ax in far.axes)
 
 
-def test_plot_command_writes_the_picture_and_refuses_a_wrong_element(by_hand, capsys, tmp_path):
+def test_plot_command_writes_the_picture_and_refuses_a_wrong_element(by_hand, tmp_path):
     path = tmp_path / "branches.png"
-    status, out, err = dhsym_cli(capsys, "plot", "planar2r", "--ik", "px=0.6, py=0.3", "-o", str(path))
+    status, out, err = run_dhsym("plot", "planar2r", "--ik", "px=0.6, py=0.3", "-o", str(path))
     assert (status, out.strip(), err) == (0, str(path), "") and path.read_bytes().startswith(b"\x89PNG")
-    status, out, err = dhsym_cli(capsys, "plot", "planar2r", "--ik", "qx=1", "-o", str(tmp_path / "no.png"))
+    status, out, err = run_dhsym("plot", "planar2r", "--ik", "qx=1", "-o", str(tmp_path / "no.png"))
     assert status == 2 and err.count("\n") == 1 and "--ik 'qx=1': expected ELEMENT=NUMBER" in err
     assert not (tmp_path / "no.png").exists()
-    status, _, err = dhsym_cli(capsys, "plot", "planar2r", "--free", "theta_1")
+    status, _, err = run_dhsym("plot", "planar2r", "--free", "theta_1")
     assert status == 2 and "add --ik" in err

@@ -3,6 +3,7 @@ consistent, a generated module that agrees with `evaluate()` and whose every bra
 FK(q) with q among them, text that fits, documents that compile, a picture of every branch."""
 import numpy as np
 import pytest
+from cli_runner import run_dhsym
 from ik_checks import (
     check_branches_reach,
     check_json,
@@ -12,7 +13,7 @@ from ik_checks import (
     sample_constants,
     used_target,
 )
-from test_ik_cli import HOST, _pdflatex, dhsym_cli
+from test_ik_cli import HOST, _pdflatex
 
 from dhsym.io.library import load
 from dhsym.printing.render import display_width
@@ -67,11 +68,11 @@ def test_the_puma_has_eight_named_branches_and_a_wrist_centre_free_derivation():
     assert result.solution.method.startswith("kinematic decoupling")
 
 
-def test_command_line_json_and_python_for_the_puma(capsys, tmp_path):
-    status, out, err = dhsym_cli(capsys, "ik", "puma560", "--format", "json")
+def test_command_line_json_and_python_for_the_puma(tmp_path):
+    status, out, err = run_dhsym("ik", "puma560", "--format", "json")
     assert status == 0 and err == ""
     data = check_json(out, load("puma560"))
-    status, out, _ = dhsym_cli(capsys, "ik", "puma560", "--format", "python")
+    status, out, _ = run_dhsym("ik", "puma560", "--format", "python")
     path = tmp_path / "puma_ik.py"
     path.write_text(out)
     ik = import_module(path).ik
@@ -82,20 +83,20 @@ def test_command_line_json_and_python_for_the_puma(capsys, tmp_path):
 
 
 @pytest.mark.parametrize("kind", ["slides", "article"])
-def test_the_puma_derivation_compiles_and_fits(capsys, tmp_path, kind):
-    status, out, _ = dhsym_cli(capsys, "latex", "puma560", "--ik", "--document", kind)
+def test_the_puma_derivation_compiles_and_fits(tmp_path, kind):
+    status, out, _ = run_dhsym("latex", "puma560", "--ik", "--document", kind)
     assert status == 0 and "Step 1 (" in out and "Branch 8: " in out
     assert _pdflatex(tmp_path, kind, out) == (0, [])
 
 
-def test_branch_names_that_say_the_root_compile_as_frame_titles(capsys, tmp_path):
-    status, out, _ = dhsym_cli(capsys, "latex", "spatial3r", "--ik", "--document", "slides")
+def test_branch_names_that_say_the_root_compile_as_frame_titles(tmp_path):
+    status, out, _ = run_dhsym("latex", "spatial3r", "--ik", "--document", "slides")
     assert status == 0 and "Branch 4: shoulder $-\\surd$, elbow $-\\surd$" in out
     assert _pdflatex(tmp_path, "slides", out) == (0, [])
 
 
-def test_the_ik_snippet_compiles(capsys, tmp_path):
-    status, out, _ = dhsym_cli(capsys, "ik", "stanford", "--format", "latex")
+def test_the_ik_snippet_compiles(tmp_path):
+    status, out, _ = run_dhsym("ik", "stanford", "--format", "latex")
     assert status == 0 and _pdflatex(tmp_path, "snippet", HOST.format(out)) == (0, [])
 
 

@@ -5,7 +5,10 @@ Every built-in robot, every test robot (TEST_ROBOTS) and every imported one (IMP
 compiled six ways (slides with and without --steps, article with --steps, snippet, and
 `fk --format latex` and `table --format latex` each wrapped in a minimal amsmath document),
 once per module and in parallel (or only those that `-k` selects). A document fails on any
-LaTeX error and on any overfull box wider or taller than OVERFULL_TOLERANCE_PT. Golden files:
+LaTeX error and on any overfull box wider or taller than OVERFULL_TOLERANCE_PT. Documents with
+the same preamble are compiled up to BATCH documents to a pdflatex run, each from a new page
+after a marker in the log, and each is judged by its own part of the log (loading beamer
+is most of the cost of a small document). Golden files:
 tests/golden/*.tex; after an intended change of the output, rewrite them with
 DHSYM_UPDATE_GOLDEN=1.
 """
@@ -18,9 +21,9 @@ from itertools import pairwise
 from pathlib import Path
 
 import pytest
+from cli_runner import run_dhsym
 from robots import GREEK_PRISMATIC, TEN_JOINTS, TEST_ROBOTS
 
-from dhsym.cli import main
 from dhsym.io.library import builtin_names, load
 from dhsym.io.robotfile import load_robot_text
 from dhsym.latex import display
@@ -103,6 +106,11 @@ def _all_elements() -> list[str]:
     return sorted(elements)
 
 
+RENDERED = ["puma560-slides-steps", "imported-icub_arm_urdf_names-slides", "imported-long_decimals-slides"]
+BATCH = 12  # documents to a pdflatex run; several runs go on in parallel
+MARK = "DHSYM-DOCUMENT"  # \typeout before each document of a batch: where its part of the log starts
+
+
 class _Compiled(dict):
     """{job name: (exit status, log text, pdf path)}, each document compiled when first asked for."""
 
@@ -115,12 +123,49 @@ class _Compiled(dict):
         return self[job]
 
     def prefetch(self, jobs) -> None:
-        """Compile the jobs not compiled yet, in parallel."""
+        """Compile the jobs not compiled yet: in batches of one preamble, the batches in parallel."""
         jobs = [job for job in dict.fromkeys(jobs) if job not in self]
-        for job in jobs:
-            (self.folder / f"{job}.tex").write_text(_source(job), encoding="utf-8")
         with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
-            self.update(zip(jobs, pool.map(lambda job: _pdflatex(self.folder, job), jobs), strict=True))
+            for results in pool.map(lambda batch: _compile_batch(self.folder, batch),
+                                    _batches({job: _source(job) for job in jobs})):
+                self.update(results)
+
+
+def _batches(sources: dict[str, str]) -> list[dict[str, str]]:
+    """The jobs in groups of at most BATCH with the same preamble; a document whose PDF is looked at alone."""
+    by_preamble: dict[str, list[dict[str, str]]] = {}
+    batches = []
+    for job, text in sources.items():
+        if job in RENDERED:
+            batches.append({job: text})
+            continue
+        groups = by_preamble.setdefault(text.split("\\begin{document}", 1)[0], [])
+        if not groups or len(groups[-1]) == BATCH:
+            groups.append({})
+            batches.append(groups[-1])
+        groups[-1][job] = text
+    return batches
+
+
+def _compile_batch(folder: Path, batch: dict[str, str]) -> dict[str, tuple]:
+    """{job: (status, its part of the log, the pdf)}; a lone document is compiled as it is."""
+    if len(batch) == 1:
+        [(job, text)] = batch.items()
+        (folder / f"{job}.tex").write_text(text, encoding="utf-8")
+        return {job: _pdflatex(folder, job)}
+    name = f"batch-{next(iter(batch))}"
+    preamble = next(iter(batch.values())).split("\\begin{document}", 1)[0]
+    bodies = [f"\\clearpage\\typeout{{{MARK} {job}}}\n"
+              + text.split("\\begin{document}\n", 1)[1].rsplit("\\end{document}", 1)[0] for job, text in batch.items()]
+    (folder / f"{name}.tex").write_text(preamble + "\\begin{document}\n" + "".join(bodies)
+                                        + f"\\clearpage\\typeout{{{MARK} -}}\n\\end{{document}}\n", encoding="utf-8")
+    status, log, pdf = _pdflatex(folder, name, halt_on_error=False)  # an error in one leaves the others judged
+    parts = re.split(rf"^{MARK} (\S+)$", log, flags=re.MULTILINE)
+    found = dict(zip(parts[1::2], parts[2::2]))
+    finished = "-" in found and status in (0, 1)
+    return {job: (0 if finished and not re.search(r"^! ", found[job], re.MULTILINE) else 1, found[job], pdf)
+            if job in found else (1, f"the batch {name} stopped before this document:\n{log[-2000:]}", pdf)
+            for job in batch}
 
 
 def _source(job: str) -> str:
@@ -144,9 +189,10 @@ def compiled(tmp_path_factory, request):
     return result
 
 
-def _pdflatex(folder: Path, job: str):
-    command = ["pdflatex", "-halt-on-error", "-interaction=nonstopmode", "-no-shell-escape", f"{job}.tex"]
-    result = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=120)
+def _pdflatex(folder: Path, job: str, halt_on_error=True):
+    command = ["pdflatex", *(["-halt-on-error"] if halt_on_error else []), "-interaction=nonstopmode",
+               "-no-shell-escape", f"{job}.tex"]
+    result = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=600)
     log = (folder / f"{job}.log").read_text(encoding="latin-1")
     return result.returncode, log, folder / f"{job}.pdf"
 
@@ -197,8 +243,7 @@ def test_width_estimate_matches_tex(compiled):
 
 @needs_tex
 @pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm (poppler-utils) is not installed")
-@pytest.mark.parametrize("job", ["puma560-slides-steps", "imported-icub_arm_urdf_names-slides",
-                                 "imported-long_decimals-slides"])
+@pytest.mark.parametrize("job", RENDERED)
 def test_slides_render_with_everything_inside_the_page(compiled, tmp_path, job):
     import matplotlib.image
 
@@ -399,23 +444,21 @@ def test_golden_files_hold_the_textbook_forms():
 
 # ---------------------------------------------------------------- the command
 
-def test_cli_writes_the_same_text_to_a_file(tmp_path, capsys):
-    assert main(["latex", "planar2r", "--document", "article"]) == 0
-    printed = capsys.readouterr().out
+def test_cli_writes_the_same_text_to_a_file(tmp_path):
+    printed = run_dhsym("latex", "planar2r", "--document", "article").ok()
     target = tmp_path / "arm.tex"
-    assert main(["latex", "planar2r", "--document", "article", "-o", str(target)]) == 0
-    assert capsys.readouterr().out == ""
+    assert run_dhsym("latex", "planar2r", "--document", "article", "-o", target).ok() == ""
     assert target.read_text(encoding="utf-8") == printed
     assert [p.name for p in tmp_path.iterdir()] == ["arm.tex"]  # no temporary file left behind
 
 
-def test_cli_failures_leave_no_partial_file(tmp_path, capsys, monkeypatch):
+def test_cli_failures_leave_no_partial_file(tmp_path, monkeypatch):
     target = tmp_path / "slides.tex"
-    assert main(["latex", "puma560", "--from", "9", "-o", str(target)]) == 2
-    error = capsys.readouterr().err
-    assert error.count("\n") == 1 and "--from: no frame 9 in this robot; frames are 0, 1, 2, 3, 4, 5, 6" in error
-    assert main(["latex", "puma560", "--from", "2", "--to", "2", "-o", str(target)]) == 2
-    assert "same frame" in capsys.readouterr().err
+    status, _, error = run_dhsym("latex", "puma560", "--from", "9", "-o", target)
+    assert status == 2 and error.count("\n") == 1
+    assert "--from: no frame 9 in this robot; frames are 0, 1, 2, 3, 4, 5, 6" in error
+    status, _, error = run_dhsym("latex", "puma560", "--from", "2", "--to", "2", "-o", target)
+    assert status == 2 and "same frame" in error
     assert not target.exists()
 
     target.write_text("the lecturer's old slides")
@@ -424,16 +467,14 @@ def test_cli_failures_leave_no_partial_file(tmp_path, capsys, monkeypatch):
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr(os, "replace", broken_rename)
-    assert main(["latex", "puma560", "-o", str(target)]) == 2
-    assert "No space left on device" in capsys.readouterr().err
+    status, _, error = run_dhsym("latex", "puma560", "-o", target)
+    assert status == 2 and "No space left on device" in error
     assert target.read_text() == "the lecturer's old slides"
     assert [p.name for p in tmp_path.iterdir()] == ["slides.tex"]
 
 
-def test_cli_from_to_and_inverse(capsys):
-    assert main(["latex", "puma560", "--document", "snippet", "--from", "3", "--to", "6"]) == 0
-    forward = capsys.readouterr().out
+def test_cli_from_to_and_inverse():
+    forward = run_dhsym("latex", "puma560", "--document", "snippet", "--from", "3", "--to", "6").ok()
     assert "% Result: ${}^{3}T_{6}$" in forward and "{}^{0}T_{1}" not in forward.split("% Link")[1]
-    assert main(["latex", "puma560", "--document", "snippet", "--from", "6", "--to", "3"]) == 0
-    backward = capsys.readouterr().out
+    backward = run_dhsym("latex", "puma560", "--document", "snippet", "--from", "6", "--to", "3").ok()
     assert "{}^{6}T_{5} =" in backward and "% Result: ${}^{6}T_{3}$" in backward

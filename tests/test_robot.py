@@ -6,11 +6,11 @@ import json
 
 import pytest
 import sympy
+from cli_runner import run_dhsym
 from hypothesis import HealthCheck, given, settings
 from strategies import robots
 
 import dhsym
-from dhsym.cli import app
 from dhsym.core.robot import Robot
 from dhsym.errors import UserError
 from dhsym.geometry.convert import to_convention
@@ -35,9 +35,7 @@ notes: mounted on a stand
 
 
 def run(capsys, *argv) -> tuple[int, str, str]:
-    status = app.main(list(argv))
-    out, err = capsys.readouterr()
-    return status, out, err
+    return tuple(run_dhsym(*argv))
 
 
 @pytest.fixture

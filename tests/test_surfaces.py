@@ -6,9 +6,9 @@ import json
 import re
 
 import sympy
+from cli_runner import run_dhsym
 from robots import NUMBERED_WRIST as WRIST
 
-from dhsym.cli import main
 from dhsym.core.chain import Chain, DHRow
 from dhsym.io.library import load
 from dhsym.io.robotfile import load_robot_text
@@ -19,11 +19,6 @@ from dhsym.latex.results import ARTICLE_TEXT_WIDTH_PT
 from dhsym.latex.width import math_width
 from dhsym.printing.printers import LatexPrinter, TextPrinter
 from dhsym.printing.render import text_legend
-
-
-def _run(capsys, *argv) -> str:
-    assert main(list(argv)) == 0
-    return capsys.readouterr().out
 
 
 def _aligned_lines(latex: str) -> list[str]:
@@ -47,17 +42,17 @@ def test_notebook_display_stacks_matrix_elements_and_legend_in_one_array():
     assert order == [layout.element_name(r, c) for c in range(4) for r in range(3)]  # Craig's order
 
 
-def test_fk_latex_fits_an_article_by_default_and_another_width_on_request(capsys):
-    iiwa = _run(capsys, "fk", "iiwa7", "--format", "latex")
+def test_fk_latex_fits_an_article_by_default_and_another_width_on_request():
+    iiwa = run_dhsym("fk", "iiwa7", "--format", "latex").ok()
     assert "r_{11} & r_{12} & r_{13} & p_{x}" in iiwa and "\\begin{align*}" in iiwa
     page = layout.Page(ARTICLE_TEXT_WIDTH_PT, 10.0)
     lines = _aligned_lines(iiwa)
     assert len(lines) > 12 and all(math_width(line, display=True) <= page.width for line in lines)
     assert "where\n\\begin{align*}\nc_{1} &= \\cos{\\theta_{1}} & s_{1} &= \\sin{\\theta_{1}}" in iiwa
-    wide = _run(capsys, "fk", "puma560", "--format", "latex", "--text-width", "1500")
+    wide = run_dhsym("fk", "puma560", "--format", "latex", "--text-width", "1500").ok()
     assert "r_{11}" not in wide and wide.count("\\begin{bmatrix}") == 1
-    assert main(["fk", "puma560", "--format", "latex", "--text-width", "12"]) == 2
-    assert "--text-width: the text width must be between 100 and 2000 pt" in capsys.readouterr().err
+    status, _, err = run_dhsym("fk", "puma560", "--format", "latex", "--text-width", "12")
+    assert status == 2 and "--text-width: the text width must be between 100 and 2000 pt" in err
 
 
 def test_a_long_fraction_or_root_opens_so_that_its_inside_breaks():
@@ -96,35 +91,35 @@ def test_two_chains_in_one_notebook_do_not_share_c1():
     assert "c_{\\phi 1} &= \\cos{\\phi_{1}}" in leg_display and "c_{1}" not in leg_display
 
 
-def test_json_text_and_latex_legends_list_the_same_abbreviations(capsys):
+def test_json_text_and_latex_legends_list_the_same_abbreviations():
     for name in ("puma560", "scara", "finger_rrr"):
-        data = json.loads(_run(capsys, "fk", name, "--format", "json"))
-        text = _run(capsys, "fk", name, "--ascii").split("\nwhere ")[1]
+        data = json.loads(run_dhsym("fk", name, "--format", "json").ok())
+        text = run_dhsym("fk", name, "--ascii").ok().split("\nwhere ")[1]
         labels = re.findall(r"(\S+) = (?:cos|sin)", text)
         assert list(data["abbreviations"]) == labels
-        latex = _run(capsys, "fk", name, "--format", "latex").split("where")[1]
+        latex = run_dhsym("fk", name, "--format", "latex").ok().split("where")[1]
         assert len(re.findall(r"&= \\(?:cos|sin)", latex)) == len(labels)
 
 
 # ---------------------------------------------------------------- first frame number
 
-def test_first_frame_numbers_every_output(capsys, tmp_path):
+def test_first_frame_numbers_every_output(tmp_path):
     robot = tmp_path / "wrist.yaml"
     robot.write_text(WRIST, encoding="utf-8")
-    assert "Wrist numbered as in the lecture: ³T₆" in _run(capsys, "fk", str(robot))
-    links = _run(capsys, "links", str(robot), "--ascii")
+    assert "Wrist numbered as in the lecture: ³T₆" in run_dhsym("fk", str(robot)).ok()
+    links = run_dhsym("links", str(robot), "--ascii").ok()
     assert re.findall(r": (\dT\d)", links) == ["3T4", "4T5", "5T6"] and "c4 = cos theta4" in links
-    assert "Wrist numbered as in the lecture: ⁴T₆" in _run(capsys, "fk", str(robot), "--from", "4")
-    data = json.loads(_run(capsys, "fk", str(robot), "--from", "6", "--to", "3", "--format", "json"))
+    assert "Wrist numbered as in the lecture: ⁴T₆" in run_dhsym("fk", str(robot), "--from", "4").ok()
+    data = json.loads(run_dhsym("fk", str(robot), "--from", "6", "--to", "3", "--format", "json").ok())
     assert (data["from"], data["to"]) == (6, 3)
-    assert "{}^{3}T_{6} =" in _run(capsys, "fk", str(robot), "--format", "latex")
-    slides = _run(capsys, "latex", str(robot), "--steps")
+    assert "{}^{3}T_{6} =" in run_dhsym("fk", str(robot), "--format", "latex").ok()
+    slides = run_dhsym("latex", str(robot), "--steps").ok()
     assert "Result: ${}^{3}T_{6}$" in slides and "{}^{0}T" not in slides
-    assert main(["fk", str(robot), "--from", "0"]) == 2
-    assert "no frame 0 in this robot; frames are 3, 4, 5, 6" in capsys.readouterr().err
+    status, _, err = run_dhsym("fk", str(robot), "--from", "0")
+    assert status == 2 and "no frame 0 in this robot; frames are 3, 4, 5, 6" in err
 
 
-def test_first_frame_numbers_the_labels_of_angles_without_subscripts(capsys, tmp_path):
+def test_first_frame_numbers_the_labels_of_angles_without_subscripts(tmp_path):
     """Euler-style angles α, β, γ have no joint numbers of their own: the labels count from the
     first joint, c4 c5 c6 for frames 3..6, as the lecture writes the wrist."""
     robot = tmp_path / "euler.yaml"
@@ -132,11 +127,11 @@ def test_first_frame_numbers_the_labels_of_angles_without_subscripts(capsys, tmp
                      "  - {joint: R, alpha: -pi/2, a: 0, d: 0, theta: alpha}\n"
                      "  - {joint: R, alpha: pi/2, a: 0, d: 0, theta: beta}\n"
                      "  - {joint: R, alpha: 0, a: 0, d: d_6, theta: gamma}\n", encoding="utf-8")
-    text = _run(capsys, "fk", str(robot))
+    text = run_dhsym("fk", str(robot)).ok()
     assert "c4 c5 c6 − s4 s6" in text and "where c4 = cos α, s4 = sin α, c5 = cos β" in text
-    data = json.loads(_run(capsys, "fk", str(robot), "--format", "json"))
+    data = json.loads(run_dhsym("fk", str(robot), "--format", "json").ok())
     assert list(data["abbreviations"])[:2] == ["c4", "s4"]
-    assert "c_{4} c_{5} c_{6}" in _run(capsys, "fk", str(robot), "--format", "latex")
+    assert "c_{4} c_{5} c_{6}" in run_dhsym("fk", str(robot), "--format", "latex").ok()
 
 
 def test_first_frame_in_notebooks_and_pictures():

@@ -12,8 +12,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_runner import run_dhsym
 
-from dhsym.cli import app as cli
 from dhsym.io.robotfile import load_robot_file
 from dhsym.io.urdfimport import import_urdf
 
@@ -118,13 +118,12 @@ def test_the_python_api_gives_the_urdf_kinematics(label, path, base, tip, conven
 
 @pytest.mark.parametrize("convention", ["standard", "modified"])
 @pytest.mark.parametrize("label, path, base, tip", list(_cases()))
-def test_dhsym_import_writes_a_file_with_the_urdf_kinematics(label, path, base, tip, convention, tmp_path, capsys):
+def test_dhsym_import_writes_a_file_with_the_urdf_kinematics(label, path, base, tip, convention, tmp_path):
     out = tmp_path / f"{label}.yaml"
     argv = ["import", str(path), "--convention", convention, "-o", str(out)]
     argv += ["--base", base] if base else []
     argv += ["--tip", tip] if tip else []
-    status = cli.main(argv)
-    stdout, stderr = capsys.readouterr()
+    status, stdout, stderr = run_dhsym(*argv)
     assert (status, stdout) == (0, ""), stderr
     assert all(line.startswith("dhsym: warning: ") for line in stderr.splitlines())
     chain = load_robot_file(out)

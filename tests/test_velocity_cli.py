@@ -1,14 +1,13 @@
 """`dhsym jacobian` and `dhsym latex --jacobian`: what a user sees, JSON that reads back,
 errors in one line, and documents that compile without overfull boxes."""
 import json
-import os
 import shutil
 import subprocess
-import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 import sympy
+from cli_runner import run_dhsym as run
 
 from dhsym import Chain, DHRow
 from dhsym.checking.verify import check, numeric_error
@@ -19,14 +18,9 @@ from dhsym.velocity import jacobian
 OVERFULL_TOLERANCE_PT = 1.0
 
 
-def run(*args):
-    return subprocess.run([sys.executable, "-m", "dhsym.cli", *args], capture_output=True, text=True,
-                          env=dict(os.environ), timeout=120)
-
-
 def test_puma_in_frame_3_is_craigs_jacobian_with_its_singularities():
     result = run("jacobian", "puma560", "--frame", "3")
-    assert result.returncode == 0 and result.stderr == ""
+    assert result.status == 0 and result.stderr == ""
     out = result.stdout
     assert "Jacobian ³J of the origin of frame 6, in frame 3" in out
     assert "−d3 c23" in out and "a2 c2 + a3 c23 − d4 s23" in out and "a3 + a2 c3" in out
@@ -73,7 +67,7 @@ def test_steps_print_the_propagation_link_by_link():
 
 def test_a_frame_that_does_not_exist_is_one_line_and_status_2():
     result = run("jacobian", "puma560", "--frame", "9")
-    assert result.returncode == 2 and result.stdout == ""
+    assert result.status == 2 and result.stdout == ""
     assert result.stderr.count("\n") == 1 and "no frame 9" in result.stderr
 
 
@@ -142,12 +136,12 @@ def general_chain_file(tmp_path, links: int):
 def test_a_jacobian_too_large_to_print_is_refused_by_its_estimate_naming_a_frame_that_fits(tmp_path):
     path = general_chain_file(tmp_path, 12)
     result = run("jacobian", str(path))
-    assert (result.returncode, result.stdout) == (2, "")
+    assert (result.status, result.stdout) == (2, "")
     assert result.stderr == (f"dhsym: error: {path}: the Jacobian of frame 12 in frame 0 would take about 19.2 "
                              "million characters, too large to print or read; express it in a frame nearer the "
                              "point with --frame (--frame 5 fits)\n")
     latex = run("latex", str(path), "--to", "3", "--jacobian")
-    assert latex.returncode == 2 and "the Jacobian of frame 12 in frame 0 would take" in latex.stderr
+    assert latex.status == 2 and "the Jacobian of frame 12 in frame 0 would take" in latex.stderr
 
 
 def test_a_general_six_link_jacobian_in_a_middle_frame_is_built():

@@ -8,10 +8,10 @@ import random
 import numpy as np
 import pytest
 import sympy
+from cli_runner import run_dhsym
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from dhsym.cli import app as cli
 from dhsym.core.chain import Chain, DHRow
 from dhsym.core.numbers import decimal_text
 from dhsym.core.robot import Robot
@@ -155,11 +155,11 @@ def test_a_file_over_1_mib_is_refused_naming_the_limit():
 
 # --- The CLI: exit 2 and one line, never exit 70.
 
-def test_import_of_a_chain_over_24_joints_is_exit_2(tmp_path, capsys):
+def test_import_of_a_chain_over_24_joints_is_exit_2(tmp_path):
     path = tmp_path / "long.urdf"
     path.write_text(serial_urdf([("revolute", "0 0 0.1", "0 0 0", "0 0 1")] * 25))
-    assert cli.main(["import", str(path)]) == 2
-    out, err = capsys.readouterr()
+    status, out, err = run_dhsym("import", path)
+    assert status == 2
     # refused from the count, before any work (branch urdf), with a tip that fits
     assert out == "" and err == ("dhsym: error: the path link0 → link25 has 25 movable joints, more than the 24 a DH "
                                  "table of dhsym holds; choose a nearer tip (--tip link24) or a later base (--base)\n")
@@ -167,13 +167,13 @@ def test_import_of_a_chain_over_24_joints_is_exit_2(tmp_path, capsys):
 
 @pytest.mark.parametrize("convention", ["standard", "modified"])
 @pytest.mark.parametrize("axis", ["0 0.6 0.8", "0.123 0.456 0.789"])
-def test_an_off_grid_urdf_axis_imports_with_decimals_and_the_urdf_kinematics(axis, convention, tmp_path, capsys):
+def test_an_off_grid_urdf_axis_imports_with_decimals_and_the_urdf_kinematics(axis, convention, tmp_path):
     joints = [("revolute", "0 0 0.1", "0 0 0", "0 0 1"), ("revolute", "0.2 0 0.1", "0 0 0", axis),
               ("prismatic", "0.1 0.2 0", "0 0 0", "0 0 1"), ("fixed", "0 0 0.1", "0 0 0", None)]
     text = serial_urdf(joints)
     path, out_file = tmp_path / "arm.urdf", tmp_path / "arm.yaml"
     path.write_text(text)
-    assert cli.main(["import", str(path), "--convention", convention, "-o", str(out_file)]) == 0
+    run_dhsym("import", path, "--convention", convention, "-o", out_file).ok()
     written = out_file.read_text()
     table = written.split("notes:")[0]
     assert "atan" not in table and "sqrt" not in table and "/" not in table.replace("pi/", "")
@@ -187,19 +187,17 @@ def test_an_off_grid_urdf_axis_imports_with_decimals_and_the_urdf_kinematics(axi
         assert np.allclose(fk, urdf_fk(text, q, "link0", "link4"), atol=1e-12)
 
 
-def test_an_axes_file_shows_decimals_in_its_table_and_imports(tmp_path, capsys):
+def test_an_axes_file_shows_decimals_in_its_table_and_imports(tmp_path):
     path = tmp_path / "arm.yaml"
     path.write_text("convention: standard\naxes:\n  - {joint: R, point: [0, 0, 0], direction: [0, 0, 1]}\n"
                     "  - {joint: R, point: [0.3, 0, 0], direction: [0, 0.6, 0.8]}\ntool: [{Tx: 0.5}]\n")
-    assert cli.main(["table", str(path)]) == 0
-    out = capsys.readouterr().out
+    out = run_dhsym("table", path).ok()
     assert "−0.643501108793284" in out and "/" not in out.split("\n", 3)[3]
-    assert cli.main(["import", str(path), "--convention", "modified"]) == 0
-    written = capsys.readouterr().out
+    written = run_dhsym("import", path, "--convention", "modified").ok()
     assert "alpha: -0.643501108793284" in written and "alpha_1 -0.643501108793284 (exactly -atan(3/4))" in written
 
 
-def test_an_axes_file_written_exactly_keeps_exact_lengths(tmp_path, capsys):
+def test_an_axes_file_written_exactly_keeps_exact_lengths(tmp_path):
     path = tmp_path / "arm.yaml"
     path.write_text("convention: standard\naxes:\n  - {joint: R, point: [0, 0, 0], direction: [0, 0, 1]}\n"
                     "  - {joint: R, point: [l_1, 0, 0], direction: [0, 1, 1]}\n  - {joint: R, point: [l_1, 1, 0], "
@@ -284,7 +282,10 @@ def poe_fk(axes, tool, values):
     return product_of_exponentials(Screws(sympy.Matrix(rows).T, tool), values)
 
 
-@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# 12 geometries a run (each takes seconds: exact frame assignment, then FK evaluated both ways): CI
+# draws the same 12 every time (derandomized), each local run 12 new ones; the cases fixed by hand
+# above cover every kind of value.
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(geometries())
 def test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics(geometry):
     axes, tool, convention, decimals, symbolic = geometry
@@ -344,13 +345,12 @@ KR210 = [("revolute", "-0.00262 0.00097586 0.33099", "0 0 0", "0 0 1"),  # KUKA 
 
 
 @pytest.mark.parametrize("convention", ["standard", "modified"])
-def test_the_kuka_kr210_imports_with_its_atan_offset_noted(convention, tmp_path, capsys):
+def test_the_kuka_kr210_imports_with_its_atan_offset_noted(convention, tmp_path):
     text = serial_urdf(KR210, name="kuka_kr210")
     path = tmp_path / "kr210.urdf"
     path.write_text(text)
-    assert cli.main(["import", str(path), "--convention", convention]) == 0
-    written, err = capsys.readouterr()
-    assert err == ""
+    status, written, err = run_dhsym("import", path, "--convention", convention)
+    assert (status, err) == (0, "")
     assert "theta: q_2 + 1.57071753409164" in written and "a: -1.24990000387987" in written
     chain = load_robot_text(written, "kr210.yaml")
     assert "theta_2 offset 1.57071753409164 (exactly atan(1249900000/98483))" in chain.notes

@@ -3,7 +3,7 @@ own forward kinematics by yourdfpy, independent of dhsym's reading and frame ass
 import io
 
 import numpy as np
-import yourdfpy
+import pytest
 
 
 def serial_urdf(joints, name="test_arm", mesh=None) -> str:
@@ -21,7 +21,9 @@ def serial_urdf(joints, name="test_arm", mesh=None) -> str:
 
 
 def urdf_fk(text: str, values, base: str, tip: str) -> np.ndarray:
-    """base → tip at the given values of the movable joints, by yourdfpy."""
+    """base → tip at the given values of the movable joints, by yourdfpy (the test skips without it)."""
+    yourdfpy = pytest.importorskip("yourdfpy", reason="yourdfpy computes the URDF's own kinematics "
+                                   "(requirements-dev.txt)")
     robot = yourdfpy.URDF.load(io.BytesIO(text.encode()), build_scene_graph=True, load_meshes=False)
     robot.update_cfg(np.array(values, dtype=float))
     return robot.get_transform(frame_to=tip, frame_from=base)
