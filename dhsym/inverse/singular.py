@@ -15,8 +15,7 @@ from __future__ import annotations
 
 import sympy
 
-from ..core.simplify import collect_by_trig
-from ..velocity.determinant import as_written, determinant, factored
+from ..velocity.determinant import as_written, determinant, factored, joint_factors
 from ..velocity.geometry import wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
 
@@ -48,14 +47,4 @@ def wrist_factors(chain) -> list:
     centre, body = wrist_centre(chain), chain.last_frame
     wrist = [angular_part(chain, j, axis_frame(chain, 5), centre, body) for j in (4, 5, 6)]
     value = as_written(factored(factored(sympy.Matrix(wrist).T.det(method="berkowitz"))), chain.numbers)
-    variables = set(chain.joint_variables)
-    factors = []
-    for factor in sympy.Mul.make_args(value):
-        base = factor.base if factor.is_Pow else factor
-        if base.free_symbols & variables:
-            base = -base if base.could_extract_minus_sign() else base
-            if base not in factors:
-                factors.append(collect_by_trig(base, frozenset(variables)))
-    last_joint = {v: k for k, v in enumerate(chain.joint_variables)}
-    factors.sort(key=lambda f: -max(last_joint[v] for v in f.free_symbols & variables))
-    return factors
+    return joint_factors(value, chain)

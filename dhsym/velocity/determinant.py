@@ -168,6 +168,12 @@ def _wrist_partitioned(chain, centre, robot) -> Determinant:
 
 def _result(chain, det, block: str, note: str) -> Determinant:
     value = as_written(factored(det), chain.numbers)
+    return Determinant(value, block, joint_factors(value, chain), note)
+
+
+def joint_factors(value, chain) -> list:
+    """The distinct factors of `value` that hold joint variables, sign-normalised and collected, the
+    one with the latest joint first (how the singularities are listed)."""
     variables = set(chain.joint_variables)
     factors = []
     for factor in sympy.Mul.make_args(value):
@@ -178,7 +184,7 @@ def _result(chain, det, block: str, note: str) -> Determinant:
                 factors.append(collect_by_trig(base, frozenset(variables)))
     last_joint = {v: k for k, v in enumerate(chain.joint_variables)}
     factors.sort(key=lambda f: -max(last_joint[v] for v in f.free_symbols & variables))
-    return Determinant(value, block, factors, note)
+    return factors
 
 
 def as_written(value: sympy.Expr, numbers) -> sympy.Expr:
