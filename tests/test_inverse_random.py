@@ -58,7 +58,9 @@ def pieper_arms(draw):
     base = draw(st.sampled_from([[], [Step("Tz", sympy.Rational(1, 4))], [Step("Rz", HALF), Step("Tx", length())]]))
     tool = draw(st.sampled_from([[], [Step("Tz", length())],
                                  [Step("Rx", sympy.pi), Step("Tz", sympy.Rational(1, 10))]]))
-    chain = Robot(Chain(arm + wrist, "standard", base=base, tool=tool), name=f"random {family} arm", sample=sample)
+    plain = Chain(arm + wrist, "standard", base=base, tool=tool)
+    used = {symbol: value for symbol, value in sample.items() if symbol in plain.symbols}  # drawn, maybe not chosen
+    chain = Robot(plain, name=f"random {family} arm", sample=used)
     return to_convention(chain, draw(st.sampled_from(["standard", "modified"])))
 
 

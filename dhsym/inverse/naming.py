@@ -96,6 +96,12 @@ def _geometry(solution, evaluate):
     if chain.n < 4 or any(row.joint != "R" for row in chain.rows[:2]):
         return None
     centre = wrist_centre(chain)
+    # The words are about the arm. Behind a wrist centre the wrist's joints cannot move any axis or
+    # point the words use, so only the arm's joints are computed (the wrist's formulas are most of
+    # the work of compiling a solution); without one every joint is.
+    needed = solution.joint_variables[:chain.n - 3] if centre is not None else solution.joint_variables
+    skipped = [v for v in solution.joint_variables if v not in needed]
+    asked = _keeping(solution, set(needed))
     rng = random.Random(16)
     found: list = [None] * len(solution.branches)
     configurations, targets = [], []
@@ -104,17 +110,34 @@ def _geometry(solution, evaluate):
         rotation, origin = poses(chain, values)[chain.last_frame]
         configurations.append(values)
         targets.append([[*rotation[r], origin[r]] for r in range(3)] + [[0.0, 0.0, 0.0, 1.0]])
-    for values, branches in zip(configurations, evaluate(solution, targets)):
+    for values, branches in zip(configurations, evaluate(asked, targets, {v: 0.0 for v in skipped})):
         for number, joints in enumerate(branches):
-            if any(math.isnan(x) for x in joints):
+            found_values = {v: float(x) for v, x in zip(solution.joint_variables, joints) if v in needed}
+            if any(math.isnan(x) for x in found_values.values()):
                 continue
-            label = _labels(chain, {**values, **dict(zip(solution.joint_variables, map(float, joints)))}, centre)
+            label = _labels(chain, {**values, **found_values}, centre)
             if label is None:
                 return None
             if found[number] is None:
                 found[number] = label
             found[number] = {role: word if found[number][role] == word else None for role, word in label.items()}
     return [label or {"shoulder": None, "elbow": None} for label in found]
+
+
+def _keeping(solution, joints: set):
+    """`solution` with each branch assigning only `joints` (and the values they are computed from);
+    the other joint variables become parameters, so that a branch's joints are computed whole."""
+    if joints == set(solution.joint_variables):
+        return solution
+    branches = []
+    for branch in solution.branches:
+        kept = set(joints)
+        for name, value in reversed(branch.assignments):  # a kept value keeps what it is computed from
+            if name in kept:
+                kept |= value.free_symbols
+        branches.append(Branch(branch.name, tuple((n, v) for n, v in branch.assignments if n in kept)))
+    others = tuple(v for v in solution.joint_variables if v not in joints)
+    return replace(solution, branches=tuple(branches), free=tuple(solution.free) + others)
 
 
 def _values(chain, rng: random.Random) -> dict:
