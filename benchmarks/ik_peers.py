@@ -2,8 +2,10 @@
 same run, as ratios of CPU time (the issue asks for 10x faster than the Robotics Toolbox's
 closed-form solver and 100x faster than IKBT).
 
-- dhsym: `dhsym.inverse.solve` on the built-in puma560, cold (a fresh chain, empty SymPy cache),
-  the least CPU time of RUNS runs (on a shared machine one run may wait for others).
+- dhsym: `robot.ik()` on the built-in puma560 (`dhsym.inverse.api.inverse_kinematics`: the
+  derivation, decimals as written and the branch names checked against the arm, all that
+  `dhsym ik` works out), cold (a fresh robot, empty SymPy cache), the least CPU time of RUNS runs
+  (on a shared machine one run may wait for others).
 - Robotics Toolbox for Python 1.5.0: `Puma560().analytic_ik()` (symbolic derivation, Pieper's
   method, with python-flint). It is installed with its `[ik]` extra into its own venv
   (build/peers/rtb, never the project's) and run in a subprocess of that venv; where it cannot be
@@ -29,8 +31,8 @@ import sympy
 from sympy.core.cache import clear_cache
 
 import dhsym
+from dhsym.inverse.api import inverse_kinematics
 from dhsym.inverse.solution import target_matrix
-from dhsym.inverse.solve import solve
 
 ROOT = Path(__file__).resolve().parent.parent
 RUNS = 3  # each side's least CPU time of this many cold runs (the peer's in fresh processes)
@@ -58,7 +60,7 @@ def dhsym_puma() -> float:
     times = []
     for _ in range(RUNS):
         chain = dhsym.load("puma560")  # a fresh chain: nothing of an earlier run is kept
-        times.append(cpu_of(lambda chain=chain: solve(chain)))
+        times.append(cpu_of(lambda chain=chain: inverse_kinematics(chain)))
     return min(times)
 
 

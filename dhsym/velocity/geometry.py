@@ -39,9 +39,20 @@ def sample_values(chain, rng: random.Random, sample=None) -> dict:
     return values
 
 
+_EVALUATORS: dict = {}  # (chain, its constants' values) -> NumericChain: many poses of one arm set it up once
+EVALUATORS_KEPT = 32
+
+
 def poses(chain, values: dict) -> dict:
     """Frame -> (rotation rows, origin) in the first frame, for numbers `values` of every symbol."""
-    numeric = NumericChain(chain, values)
+    variables = set(chain.joint_variables)
+    key = (id(chain), tuple(sorted((s.name, values[s]) for s in values if s not in variables)))
+    held = _EVALUATORS.get(key)
+    if held is None or held[0] is not chain:  # an id can be reused once its chain is gone
+        if len(_EVALUATORS) >= EVALUATORS_KEPT:
+            _EVALUATORS.clear()
+        held = _EVALUATORS[key] = (chain, NumericChain(chain, values))
+    numeric = held[1]
     return {frame: ([row[:3] for row in pose[:3]], [row[3] for row in pose[:3]])
             for frame, pose in numeric.poses([values[v] for v in chain.joint_variables])}
 
