@@ -40,6 +40,11 @@ SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_t
               "test_documents_with_the_derivation_compile_and_fit", "test_too_many_yaml_values_are_refused",
               "test_every_robot_command_reads_the_robot_file_from_standard_input",
               "test_case_in_process[xacro_doubling_macro]", "test_case_in_process[cli_fk_3000_tool_steps]",
+              "test_every_frame_is_the_exact_product_evaluated", "test_the_end_pose_is_the_forward_kinematics",
+              "test_json_reads_back_equal_to_the_exact_solution",
+              "test_text_latex_and_python_write_the_decimals_of_the_file",
+              "test_evaluate_is_the_generated_module_with_nan_where_a_branch_does_not_exist",
+              "test_check_and_too_large_advice_use_the_printed_numbers",
               # dhsym started as a real process (the rest of these files runs in process)
               "test_demo_output", "test_same_output_under_any_hash_seed", "test_a_full_disk_is_an_error_not_a_bug",
               "test_a_closed_standard_output_or_pipe_is_not_a_bug",
