@@ -82,7 +82,7 @@ def test_tool_frame_is_the_default_end():
 
 @pytest.mark.parametrize("args, message", [
     (("fk", "nope"), "dhsym: error: unknown robot 'nope'; built-in robots are: "),
-    (("fk", "planar2r", "--to", "9"), "dhsym: error: no frame 9 in this robot; frames are 0, 1, 2"),
+    (("fk", "planar2r", "--to", "9"), "dhsym: error: --to: no frame 9 in this robot; frames are 0, 1, 2"),
     (("fk",), "dhsym: error: the following arguments are required: ROBOT"),
     (("fk", "missing.yaml"), "dhsym: error: missing.yaml: cannot read file"),
 ])

@@ -68,7 +68,7 @@ def test_steps_print_the_propagation_link_by_link():
 def test_a_frame_that_does_not_exist_is_one_line_and_status_2():
     result = run("jacobian", "puma560", "--frame", "9")
     assert result.status == 2 and result.stdout == ""
-    assert result.stderr.count("\n") == 1 and "no frame 9" in result.stderr
+    assert result.stderr.count("\n") == 1 and "--frame: no frame 9" in result.stderr
 
 
 def test_latex_format_is_math_for_a_document():

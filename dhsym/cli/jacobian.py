@@ -21,7 +21,7 @@ from .limits import (
     refuse_long_entries,
     refuse_steps_if_too_large,
 )
-from .options import format_options, robot_options
+from .options import chosen_frame, format_options, robot_options
 
 
 def add_parsers(commands) -> None:
@@ -39,6 +39,8 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str:
+    for text, option in ((args.frame, "--frame"), (args.point, "--point")):
+        chosen_frame(robot, text, option, None)  # a frame the robot lacks is named with its option
     own_frame, own_point = resolve_frames(robot, args.frame, args.point)  # the chain's frames 0..n
     refuse_long_entries(robot)
     refuse_jacobian_if_too_large(robot, own_frame, own_point,

@@ -14,7 +14,7 @@ import json
 from ..latex.results import ARTICLE_TEXT_WIDTH_PT, results_latex, table_latex
 from ..printing import render
 from .limits import LATEX_MAX_NODES, MAX_NODES, refuse_if_too_large
-from .options import format_options, frame_options, robot_options
+from .options import chosen_frame, format_options, frame_options, robot_options
 
 
 def add_parsers(commands) -> None:
@@ -79,8 +79,8 @@ def run_links(robot, args) -> str:
 
 def run_fk(robot, args) -> str:
     chain = robot.chain
-    start = chain.frames[0] if args.start is None else robot.chain_frame(args.start)
-    end = chain.frames[-1] if args.end is None else robot.chain_frame(args.end)
+    start = chosen_frame(robot, args.start, "--from", chain.frames[0])
+    end = chosen_frame(robot, args.end, "--to", chain.frames[-1])
     refuse_if_too_large(robot, start, end, args.raw, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
     with robot.numbered():
         matrix = chain.transform(start, end, raw=args.raw)

@@ -75,6 +75,25 @@ def frame_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else the last)")
 
 
+def chosen_frame(robot, text, option: str, default):
+    """The chain's frame that `option` names by its printed number (`default` when not given); a
+    frame the robot does not have is an error that names the option.
+
+    >>> from dhsym.io.library import load
+    >>> chosen_frame(load("spherical_wrist"), "4", "--from", 0)
+    1
+    >>> chosen_frame(load("spherical_wrist"), "0", "--from", 0)
+    Traceback (most recent call last):
+    dhsym.errors.UserError: --from: no frame 0 in this robot; frames are 3, 4, 5, 6
+    """
+    if text is None:
+        return default
+    try:
+        return robot.chain_frame(text)
+    except UserError as error:
+        raise UserError(f"{option}: {error.message}") from None
+
+
 def seconds(text: str) -> float:
     """A positive number of seconds, for --timeout."""
     try:
