@@ -96,7 +96,7 @@ def module_text(solution, command: str = "") -> str:
     chain = solution.chain
     joints = list(solution.joint_variables)
     names, constants = _names(solution)
-    code = _NumpyCode(names, getattr(chain, "numbers", None))
+    code = _NumpyCode(names, chain.numbers)
     sample = {str(symbol): value for symbol, value in chain.sample.items()}
     keywords = [f"{names[s.name]}={_default(sample[s.name])}" for s in constants if s.name in sample]
     keywords += [names[s.name] for s in constants if s.name not in sample]

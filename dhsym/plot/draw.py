@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 import sympy
 
+from ..core.robot import as_robot
 from ..core.vectors import cross
 from ..errors import UserError
 from ..io.output import write_atomic
@@ -52,7 +53,7 @@ def draw(chain, values=None, ax=None, planar=None, show_frames=True, triad_scale
     >>> draw(load("planar3r"), {"theta_2": "30deg"}, ax=Figure()).name
     'rectilinear'
     """
-    name = getattr(chain, "name", "")  # a Robot's; a plain Chain has none
+    name = as_robot(chain).name
     if title is None and name:
         title = name + "\n" + _joint_line(chain, values)
     return draw_closed([(chain, values, LINK_COLOUR, None)], ax=ax, planar=planar, show_frames=show_frames,
@@ -87,7 +88,7 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
         triads = _Triads(triad_scale or TRIAD_FRACTION * size, size)
         for picture, prefix, (chain, *_) in zip(skeletons, _prefixes([label for *_, label in items]), items,
                                                 strict=True):
-            offset = getattr(chain, "frame_offset", 0) if frame_offset is None else frame_offset
+            offset = as_robot(chain).frame_offset if frame_offset is None else frame_offset
             for frame, pose in picture.poses:
                 triads.add(prefix + _frame_name(frame, offset), pose)
         arrows = triads.draw(ax, flat)

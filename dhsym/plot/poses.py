@@ -16,7 +16,7 @@ import sympy
 
 from ..core.chain import Chain
 from ..core.numeric import NumericChain, origin
-from ..core.robot import as_chain
+from ..core.robot import as_chain, as_robot
 from ..errors import UserError
 from ..io.expr import parse_expression
 
@@ -41,7 +41,7 @@ def resolve_values(chain, values=None) -> dict:
     >>> sorted((s.name, v) for s, v in resolve_values(load("planar2r"), {"theta_1": "90deg"}).items())
     [('a_1', 0.5), ('a_2', 0.4), ('theta_1', 1.5707963267948966), ('theta_2', 0.0)]
     """
-    sample = {str(symbol): value for symbol, value in getattr(chain, "sample", {}).items()}  # a Robot's
+    sample = {str(symbol): value for symbol, value in as_robot(chain).sample.items()}
     chain = _checked(chain)
     symbols = {s.name: s for s in chain.symbols}
     given = {}

@@ -14,6 +14,7 @@ import math
 import random
 
 from ..core.numeric import NumericChain
+from ..core.robot import as_chain, as_robot
 from ..core.vectors import cross, dot
 from .jacobian import axis_frame
 
@@ -27,7 +28,7 @@ TOLERANCE = 1e-9
 def sample_values(chain, rng: random.Random, sample=None) -> dict:
     """Joint variables uniform in (−π, π); constants from `sample` (default: the robot's, when
     `chain` is a Robot), else in (0.5, 1.5)."""
-    sample = getattr(chain, "sample", {}) if sample is None else sample
+    sample = as_robot(chain).sample if sample is None else sample
     values = {}
     for symbol in sorted(chain.symbols, key=str):
         if symbol in chain.joint_variables:
@@ -75,8 +76,8 @@ def distance_to_axis(point, line) -> float:
 def wrist_centre(chain, trials: int = 3, sample=None):
     """The last frame whose origin lies on the axes of the last three joints (all revolute) in
     every configuration tried, or None: the point where a spherical wrist's axes meet."""
-    sample = getattr(chain, "sample", {}) if sample is None else sample
-    chain = getattr(chain, "chain", chain)  # a Robot's own chain: frames 0..n
+    sample = as_robot(chain).sample if sample is None else sample
+    chain = as_chain(chain)  # frames 0..n
     n = chain.n
     if n < 6 or any(row.joint != "R" for row in chain.rows[-3:]):
         return None
