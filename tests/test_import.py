@@ -155,6 +155,12 @@ def test_a_file_written_by_xacro_imports_without_a_word(tmp_path):
     assert run_dhsym("import", path)[::2] == (0, "")
 
 
+def test_a_default_namespace_is_read_as_none_as_ros_reads_it(tmp_path):
+    plain = run_dhsym("import", two_joints(tmp_path))
+    declared = run_dhsym("import", two_joints(tmp_path, name="ns.urdf", namespace=' xmlns="http://www.ros.org"'))
+    assert declared[0] == 0 and declared[1].replace("ns.urdf", "arm.urdf") == plain[1]
+
+
 def test_the_python_api_does_what_the_command_does(tmp_path):
     from dhsym.io.urdfimport import import_urdf
 

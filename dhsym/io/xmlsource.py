@@ -6,7 +6,8 @@ expand without bound), and so is anything that still needs xacro (an element or 
 xacro namespace, a `${…}` or `$(…)` substitution). A bare `xmlns:xacro` declaration, which
 every file that xacro wrote still carries, is fine, and so is a substitution where it changes
 nothing (`refuse_substitutions` is told where: a URDF's meshes, say). lxml parses with entities, DTDs and network
-access off. Input must be a regular file of at most 2 MiB: a named pipe or a device is refused
+access off. A default namespace (`<robot xmlns="…">`) is read as none, as ROS's parser does.
+Input must be a regular file of at most 2 MiB: a named pipe or a device is refused
 before it is opened, so that reading never blocks.
 
 >>> source = parse_xml_text('<robot name="a">\\n  <link name="b"/></robot>'.encode("utf-16"), "a.urdf")
@@ -153,7 +154,20 @@ def parse_xml_text(data: bytes, filename: str) -> XmlSource:
             from None
     if root.getroottree().docinfo.doctype:
         raise UserError("DOCTYPE declarations are not allowed in a URDF file", Location(filename, 1, 1))
+    _drop_default_namespace(root)
     return XmlSource(root, text, filename)
+
+
+def _drop_default_namespace(root) -> None:
+    """Read `<robot xmlns="…">` as `<robot>`: ROS's own URDF parser ignores namespaces, so files
+    that declare a default one are published and used; elements of other namespaces stay apart."""
+    default = root.nsmap.get(None)
+    if default is None:
+        return
+    prefix = "{" + default + "}"
+    for element in root.iter():
+        if isinstance(element.tag, str) and element.tag.startswith(prefix):
+            element.tag = element.tag[len(prefix):]
 
 
 def _refuse_xacro(blanked: str, filename: str) -> None:
