@@ -1,33 +1,41 @@
 """Branch names that say what is true of the arm. The solver names a branch by the sign of each
-square root (or ± of an atan2) it chose (dhsym.inverse.branches). Here each choice gets the word
-that the arm's geometry gives it: the word must hold, at every one of twelve poses, for every
-branch that has that choice, and the other choice must give the opposite word. The words
-(measured in dhsym.inverse.sides; "up" is the direction of axis 1):
+square root (or of an atan2's pair) it chose, and the joint's place in the arm (dhsym.inverse.
+branches). Here each choice gets the word that the arm's geometry gives it: a word is given when
+it holds at every one of twelve poses for every branch (the same word at each pose where it can be
+measured), and the two branches that differ in that choice only get opposite words. The words
+are measured in dhsym.inverse.sides, "up" being the direction of axis 1:
 
-- shoulder right / left: seen from above, the arm's plane (normal to axis 2) lies right / left of
-  the line from axis 1 to the wrist (a person's right or left arm: the PUMA's, the Stanford arm's);
-- shoulder front / back: the wrist on the side of axis 1 where axis 2 is (a shoulder offset, as
-  an IRB 140's), or, when axes 1 and 2 meet, on the side that frame 1's x axis points to (where
-  the upper arm points at θ2 = 0); else over the back;
-- elbow up / down: the elbow above / below the line from the shoulder (on axis 2) to the wrist, in
-  the arm's plane. Only where the shoulder's choice fixes on which side of the shoulder the wrist
-  lies: for the UR5 (no wrist centre) the point of axis 4 lies in front of the shoulder or behind
-  it whatever the roots, and its elbow's side of the line changes within a branch: its name says
-  the root, "elbow +√";
-- elbow up / down of a planar arm (Spong's, drawn with x0 right, y0 up): seen from +z0, the elbow
-  left (up) / right (down) of the line from joint 1 to the wrist point; Spong's +√ of θ2 is
-  elbow down, and the two agree at every pose;
-- lefty / righty, a SCARA (a planar arm with a slide along its axes): seen from above, the elbow
-  left / right of the line from axis 1 to the wrist's axis;
-- slide forward / back: along a slide, the wrist on the side of the slide's crossing with the
-  revolute axis before it that the slide's axis points to (dᵢ > 0 with the usual frames), or behind:
-  the Stanford arm's d3, the cylindrical arm's reach (there the root is θ1's);
-- wrist not flipped / flipped: (z_a × z_c) · z_b > 0 for the directions of the axes before, of and
-  after the wrist's joint b (axes 4, 5, 6): turning from axis 4 to axis 6 is a positive turn about
-  axis 5. Craig's flipped twin (θ4 + π, −θ5, θ6 + π) reverses axis 5 and keeps axes 4 and 6, so the
-  twins always get opposite words.
+- shoulder right / left: seen from above, the arm's plane (normal to axis 2, through the wrist)
+  lies right / left of the line from axis 1 to the wrist, as a person's right or left arm does:
+  the PUMA's, the Stanford arm's, the UR5's (its wrist: where axes 5 and 6 meet);
+- shoulder front / back, where axis 2 crosses the line from axis 1 to the wrist (no offset along
+  axis 2): the wrist on the side of axis 1 where axis 2 is (an offset a1, as an IRB 140's or the
+  Salisbury finger's), else, axes 1 and 2 meeting, on the side that frame 1's x axis points to (the
+  inline arm, the spatial 3R); else over the back. The Rhino-like five-axis arm's choice of θ1 puts
+  its end point, not its wrist, in front or behind: that is its word;
+- elbow up / down: the elbow (on the axis of the choice's joint, parallel to axis 2) above / below
+  the line from the shoulder (on axis 2) to the wrist, in the arm's plane: the PUMA's, the inline
+  arm's, the spatial 3R's. It holds only where the shoulder's choice also fixes on which side of
+  the shoulder the wrist lies. For the UR5 (its wrist: the point of axis 4 in the plane of axes
+  2, 3, 4), the Rhino-like arm and the finger (its shoulder off axis 1) the wrist can lie ahead of
+  the shoulder or behind it within one branch, and with it the elbow's side of the line: at some of
+  the twelve poses the word would be wrong, so their names say the root, "elbow +√";
+- elbow up / down of a planar arm, Spong's, drawn with x0 right and y0 up: seen from +z0, the
+  elbow left (up) / right (down) of the line from joint 1 to the wrist point (the next revolute
+  axis, else the end); Spong's +√ of the elbow's cosine law is elbow down, and the two agree at
+  every pose;
+- righty / lefty, a SCARA (a planar arm with a slide along its axes), as industry says: seen from
+  above, the elbow right / left of the line from axis 1 to the wrist's axis;
+- slide forward / back: along a slide (the Stanford arm's d3; the cylindrical arm's d3, whose sign
+  the choice of θ1 decides), the wrist on the side of the slide's crossing with the revolute axis
+  before it that the slide's axis points to (d3 > 0 with the usual frames), or behind;
+- wrist not flipped / flipped: seen from the tip of u5 (the direction of the wrist's middle axis),
+  axis 6 is turned from axis 4 counter-clockwise / clockwise: (u4 × u6)·u5 > 0 / < 0. Craig's
+  flipped twin (θ4 + π, −θ5, θ6 + π) reverses u5 and keeps u4 and u6 (the same pose), so the twins
+  always get opposite words; for the PUMA "not flipped" is θ5's +√, as in Craig.
 
-Where no word holds the name says the root instead: "shoulder +√", "elbow −√".
+Where no word holds the name says the root: "shoulder +√", "elbow −√". Every word printed is
+defined once in the method line (DEFINITIONS).
 
 >>> import dhsym
 >>> [branch.name for branch in dhsym.load("puma560").ik().branches][:2]
@@ -67,9 +75,8 @@ DEFINITIONS = {
              "{planar_wrist}",
     "slide": "slide forward/back: along the slide (axis {slide}), the {slide_wrist} on the side of its crossing with "
              "axis {slide_from} that the axis points to, or behind",
-    "flip": "wrist not flipped/flipped: seen along axis {b}, axis {c} is turned from axis {a} counter-clockwise/"
-            "clockwise ((u{a} × u{c})·u{b} > 0/< 0, u the axes' directions; Craig's flipped twin θ{a} + π, −θ{b}, "
-            "θ{c} + π reverses u{b})",
+    "flip": "wrist not flipped/flipped: seen from the tip of axis {b}'s direction u{b}, axis {c} is turned from "
+            "axis {a} counter-clockwise/clockwise (u{a} × u{c} along +u{b}/−u{b})",
 }
 
 
@@ -129,13 +136,17 @@ def _parts(name: str) -> list:
 
 
 def _root_joint(solution, parts, k):
-    """The number (1..n) of the joint whose formula holds choice k: the first joint assigned
-    differently in two branches that differ in choice k only."""
+    """The number (1..n) of the joint whose formula holds choice k: the first joint whose value
+    differs, by its formula or by a value it is computed from, in two branches that differ in
+    choice k only."""
     for one, other in _twins(parts, k)[:1]:
         second = solution.branches[other].values()
+        differs: set = set()
         for name, value in solution.branches[one].assignments:
-            if name in solution.joint_variables and second.get(name) != value:
-                return solution.chain.joint_variables.index(name) + 1
+            if second.get(name) != value or value.free_symbols & differs:
+                differs.add(name)
+                if name in solution.joint_variables:
+                    return solution.chain.joint_variables.index(name) + 1
     return None
 
 

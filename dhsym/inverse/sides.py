@@ -54,9 +54,11 @@ class Arm:
             return frames[self.centre][1], "wrist centre"
         if chain.n >= 5 and _parallel(axis_line(chain, 2, frames)[1], axis_line(chain, 4, frames)[1]):
             for j in range(min(chain.n, 6), 4, -1):
-                point, _ = axis_line(chain, j, frames)
-                if distance_to_axis(point, axis_line(chain, j - 1, frames)) < TOLERANCE:
-                    return point, f"wrist (where axes {j - 1} and {j} meet)"
+                line, before = axis_line(chain, j, frames), axis_line(chain, j - 1, frames)
+                if not _parallel(line[1], before[1]):
+                    point = _nearest(line, before)
+                    if distance_to_axis(point, before) < TOLERANCE:
+                        return point, f"wrist (where axes {j - 1} and {j} meet)"
         return frames[chain.last_frame][1], "end point (the target's origin)"
 
     def elbow_wrist(self, frames, joint):
@@ -190,12 +192,9 @@ def _forward(arm, frames, joint):
     axes = arm.slide_axes(frames, joint)
     if axes is None:
         return None
-    (p, d), (q, e) = axis_line(arm.chain, axes[0], frames), axis_line(arm.chain, axes[1], frames)
-    w = minus(q, p)  # the point of the slide's line nearest the other axis: p + t d
-    cosine = dot(d, e)
-    t = (dot(w, d) - dot(w, e) * cosine) / (1 - cosine * cosine)
-    foot = [a + t * b for a, b in zip(p, d)]
-    return dot(minus(arm.slide_point(frames)[0], foot), d)
+    slide = axis_line(arm.chain, axes[0], frames)
+    foot = _nearest(slide, axis_line(arm.chain, axes[1], frames))
+    return dot(minus(arm.slide_point(frames)[0], foot), slide[1])
 
 
 def _unflipped(arm, frames, joint):
@@ -233,6 +232,15 @@ MEASURES = {"right": Measure("shoulder", ("right", "left"), _right),
             "lefty": Measure("", ("lefty", "righty"), _planar_only(True)),
             "slide": Measure("slide", ("forward", "back"), _forward),
             "flip": Measure("wrist", ("not flipped", "flipped"), _unflipped)}
+
+
+def _nearest(line, other) -> list:
+    """The point of `line` nearest the line `other` (not parallel to it): p + t d."""
+    (p, d), (q, e) = line, other
+    w = minus(q, p)
+    cosine = dot(d, e)
+    t = (dot(w, d) - dot(w, e) * cosine) / (1 - cosine * cosine)
+    return [a + t * b for a, b in zip(p, d)]
 
 
 def _flat(vector, up) -> list:
