@@ -16,10 +16,15 @@ are measured in dhsym.inverse.sides, "up" being the direction of axis 1:
 - elbow up / down: the elbow (on the axis of the choice's joint, parallel to axis 2) above / below
   the line from the shoulder (on axis 2) to the wrist, in the arm's plane: the PUMA's, the inline
   arm's, the spatial 3R's. It holds only where the shoulder's choice also fixes on which side of
-  the shoulder the wrist lies. For the UR5 (its wrist: the point of axis 4 in the plane of axes
-  2, 3, 4), the Rhino-like arm and the finger (its shoulder off axis 1) the wrist can lie ahead of
-  the shoulder or behind it within one branch, and with it the elbow's side of the line: at some of
-  the twelve poses the word would be wrong, so their names say the root, "elbow +√";
+  the shoulder the wrist lies. With a shoulder offset (the finger, an IRB 140, a KR 6) the wrist
+  can lie between axis 1 and the shoulder, where the line goes backward and "above" turns into
+  "below" within a branch; there the line is drawn going the way the wrist lies from axis 1 (which
+  the shoulder's choice fixes): the elbow left / right of it, seen with axis 1 up and the wrist to
+  its right, which is above / below wherever the wrist is further out than the shoulder. For the
+  UR5 (its wrist: the point of axis 4 in the plane of axes 2, 3, 4) and the Rhino-like arm even
+  the side of axis 1 the wrist lies on changes within a branch (no choice of theirs places that
+  point on one side of axis 1): at some of the twelve poses the word would be wrong, so their
+  names say the root, "elbow +√";
 - elbow up / down of a planar arm, Spong's, drawn with x0 right and y0 up: seen from +z0, the
   elbow left (up) / right (down) of the line from joint 1 to the wrist point (the next revolute
   axis, else the end); Spong's +√ of the elbow's cosine law is elbow down, and the two agree at
@@ -69,6 +74,9 @@ DEFINITIONS = {
     "ahead_end": "shoulder front/back: the end point (the target's origin) on the side of axis {one} that frame "
                  "{one}'s x axis points to, or over the back",
     "up": "elbow up/down: the elbow above/below the line from the shoulder to the {elbow_wrist}",
+    "up_out": "elbow up/down: drawn in the arm's plane with axis {one} up and the {elbow_wrist} right of it, the "
+              "elbow left/right of the line from the shoulder to the {elbow_wrist} (above/below it where the "
+              "{elbow_wrist} is further out than the shoulder)",
     "planar": "elbow up/down: seen from +z0 (x0 right, y0 up), the elbow left/right of the line from joint {one} to "
               "the {planar_wrist} (Spong's +√ of the elbow is down)",
     "lefty": "righty/lefty: seen from above (axis {one} up), the elbow right/left of the line from axis {one} to the "
@@ -181,7 +189,8 @@ def _measured(solution, arm, parts, joints) -> list:
 
 def _candidates(role: str) -> tuple:
     """The words tried for a choice of `role`, in order."""
-    return {"shoulder": ("right", "front", "ahead", "slide", "ahead_end"), "elbow": ("lefty", "planar", "up", "slide"),
+    return {"shoulder": ("right", "front", "ahead", "slide", "ahead_end"),
+            "elbow": ("lefty", "planar", "up", "up_out", "slide"),
             "wrist": ("flip",), "slide": ("slide",)}[role]
 
 

@@ -156,24 +156,30 @@ def _ahead(end: bool):
     return measure
 
 
-def _up(arm, frames, joint):
-    """The elbow (on the axis of `joint`, parallel to axis 2) above the line from the shoulder to
-    the wrist in the arm's plane: the line's upper side is the one towards axis 1's direction."""
-    chain = arm.chain
-    up, shoulder, across = _shoulder(arm, frames)
-    if across is None or joint < 3 or chain.rows[joint - 1].joint != "R":
-        return None
-    elbow, third = axis_line(chain, joint, frames)
-    if not _parallel(across, third):
-        return None
-    reach, bend = (minus(point, shoulder) for point in (arm.elbow_wrist(frames, joint)[0], elbow))
-    reach, bend = ([x - dot(across, v) * a for x, a in zip(v, across)] for v in (reach, bend))
-    flat = _flat(reach, up)
-    length = _length(flat)
-    if length < TOLERANCE:
-        return 0.0  # the wrist straight above the shoulder: neither
-    forward = [x / length for x in flat]
-    return dot(bend, up) * dot(reach, forward) - dot(reach, up) * dot(bend, forward)
+def _up(outward: bool):
+    """The elbow (on the axis of `joint`, parallel to axis 2) on the upper side of the line from the
+    shoulder to the wrist in the arm's plane, the line drawn going forward: the way the wrist lies
+    from the shoulder, or (`outward`) from axis 1. The two differ only when the wrist lies between
+    axis 1 and a shoulder off it."""
+    def measure(arm, frames, joint):
+        chain = arm.chain
+        up, shoulder, across = _shoulder(arm, frames)
+        if across is None or joint < 3 or chain.rows[joint - 1].joint != "R":
+            return None
+        elbow, third = axis_line(chain, joint, frames)
+        if not _parallel(across, third):
+            return None
+        wrist = arm.elbow_wrist(frames, joint)[0]
+        start = axis_line(chain, 1, frames)[0] if outward else shoulder
+        reach, bend, out = (minus(a, b) for a, b in ((wrist, shoulder), (elbow, shoulder), (wrist, start)))
+        reach, bend, out = ([x - dot(across, v) * a for x, a in zip(v, across)] for v in (reach, bend, out))
+        flat = _flat(out, up)
+        length = _length(flat)
+        if length < TOLERANCE:
+            return 0.0  # the wrist straight above the start: neither
+        forward = [x / length for x in flat]
+        return dot(bend, up) * dot(reach, forward) - dot(reach, up) * dot(bend, forward)
+    return measure
 
 
 def _left(arm, frames, joint):
@@ -227,7 +233,8 @@ MEASURES = {"right": Measure("shoulder", ("right", "left"), _right),
             "front": Measure("shoulder", ("front", "back"), _front),
             "ahead": Measure("shoulder", ("front", "back"), _ahead(False)),
             "ahead_end": Measure("shoulder", ("front", "back"), _ahead(True)),
-            "up": Measure("elbow", ("up", "down"), _up),
+            "up": Measure("elbow", ("up", "down"), _up(False)),
+            "up_out": Measure("elbow", ("up", "down"), _up(True)),
             "planar": Measure("elbow", ("up", "down"), _planar_only(False)),
             "lefty": Measure("", ("lefty", "righty"), _planar_only(True)),
             "slide": Measure("slide", ("forward", "back"), _forward),
