@@ -37,6 +37,7 @@ WORDS = {
     "inline6": {("shoulder front", "shoulder back"), ("elbow up", "elbow down"), FLIP},
     "spatial3r": {("shoulder front", "shoulder back"), ("elbow up", "elbow down")},
     "finger_rrr": {("shoulder front", "shoulder back"), ("elbow up", "elbow down")},
+    "iiwa7": {("shoulder front", "shoulder back"), ("elbow +√", "elbow −√"), FLIP},  # with --free theta_3
     "irb140": {("shoulder front", "shoulder back"), ("elbow up", "elbow down"), FLIP},  # imported from rtb-data
     "asokan_dh_example": {("shoulder front", "shoulder back"), ("elbow +√", "elbow −√")},
     "cylindrical_wrist": {("slide forward", "slide back"), FLIP},
@@ -117,7 +118,7 @@ def _truths(kind: str, frames: Frames, q) -> dict:
     if kind in ("puma560", "stanford", "ur5"):  # the arm's plane right or left of the line from axis 1 to the wrist
         s, across = axis(2)
         truths["shoulder left"] = np.cross(wrist - s, across * (across @ (wrist - s))) @ up
-    if kind in ("inline6", "spatial3r", "asokan_dh_example"):  # axes 1 and 2 meet: frame 1's x axis says front
+    if kind in ("inline6", "spatial3r", "asokan_dh_example", "iiwa7"):  # axes 1 and 2 meet: frame 1's x axis says front
         point = end if kind == "asokan_dh_example" else wrist
         truths["shoulder front"] = _flat(poses[1][:3, 0], up) @ _flat(point - base, up)
     if kind in ("finger_rrr", "irb140"):  # axis 2 off axis 1: its side is the front
@@ -140,12 +141,14 @@ def _truths(kind: str, frames: Frames, q) -> dict:
         slide = [j for j, row in enumerate(chain.rows, 1) if row.joint == "P"][-1]
         truths["slide forward"] = q[slide - 1]  # the slide's frame starts where it crosses the axis before it
     if FLIP in WORDS[kind]:
-        b = 2 if n == 3 else 5
+        b = n - 1  # the wrist's middle axis
         truths["wrist not flipped"] = np.cross(axis(b - 1)[1], axis(b + 1)[1]) @ axis(b)[1]
     return {word: None if abs(value) < TINY else bool(value > 0) for word, value in truths.items()}
 
 
-def _check(kind, chain, result, rng, count=6):
+def _check(kind, chain, result, rng, count=6, free=()):
+    """Every branch's name says one word of each of the arm's pairs, the words the geometry gives
+    at `count` random poses; `free`: joints given to evaluate, as --free values are."""
     constants = sample_constants(chain)
     frames = Frames(chain, constants)
     names = [branch.name for branch in result.branches]
@@ -157,9 +160,13 @@ def _check(kind, chain, result, rng, count=6):
     checked = 0
     for q in random_joints(chain, rng, count):
         pose = frames.at(q)[-1]
-        for branch, joints in zip(names, result.evaluate(pose)):
-            if np.isnan(joints).any():
+        names_of = [v.name for v in chain.joint_variables]
+        given = {name: q[names_of.index(name)] for name in free}
+        for branch, found in zip(names, result.evaluate(pose, **given)):
+            if np.isnan(found).any():
                 continue
+            joints = np.array(q, dtype=float)  # the free joints as given, the others as found
+            joints[[names_of.index(v.name) for v in result.joint_variables]] = found
             reached = frames.at(joints)[-1]  # the branch reaches the pose (an arm of < 6 joints: its point)
             assert np.allclose(reached, pose, atol=1e-8) if chain.n >= 6 else np.allclose(reached[:3, 3], pose[:3, 3])
             for first, truth in _truths(kind, frames, joints).items():
@@ -172,10 +179,15 @@ def _check(kind, chain, result, rng, count=6):
     assert checked > 0
 
 
-@pytest.mark.parametrize("name", sorted(set(WORDS) - {"irb140"}))
+@pytest.mark.parametrize("name", sorted(set(WORDS) - {"irb140", "iiwa7"}))
 def test_every_word_of_every_branch_is_what_the_arm_does(name):
     chain = load(name)
     _check(name, chain, chain.ik(), np.random.default_rng(12))
+
+
+def test_a_redundant_arm_with_a_free_joint_has_its_words_checked_too():
+    chain = load("iiwa7")
+    _check("iiwa7", chain, chain.ik(free=["theta_3"]), np.random.default_rng(7), free=["theta_3"])
 
 
 def test_the_pumas_eight_branches_are_every_combination_of_the_three_choices():

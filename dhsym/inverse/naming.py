@@ -97,9 +97,10 @@ def checked_names(solution):
     joints = [_root_joint(solution, parts, k) for k in range(len(parts[0]))]
     chosen = [None] * len(joints)
     arm = Arm(as_chain(chain), wrist_centre(chain), chain.sample)
-    if None not in joints:
+    if any(joints):
         measured = _measured(solution, arm, parts, joints)
-        chosen = [_first_holding(measured, parts, k, role) for k, (role, _) in enumerate(parts[0])]
+        chosen = [_first_holding(measured, parts, k, role) if joints[k] else None
+                  for k, (role, _) in enumerate(parts[0])]
     symbols = [chain.joint_variables[j - 1] if j else None for j in joints]
     texts = _names(parts, chosen, symbols)
     if len(set(texts)) < len(texts):  # cannot happen when each word tells twins apart; say the roots then
@@ -166,7 +167,7 @@ def _measured(solution, arm, parts, joints) -> list:
     # with θ6: so only the arm's joints and the wrist's middle one are computed (the wrist's formulas
     # are the longest); without a centre every joint is.
     if arm.centre is not None:
-        wrist = set(range(chain.n - 2, chain.n + 1)) - {arm.wrist_middle(j) for j in joints if j >= chain.n - 2}
+        wrist = set(range(chain.n - 2, chain.n + 1)) - {arm.wrist_middle(j) for j in joints if j and j >= chain.n - 2}
         needed = [v for j, v in enumerate(chain.joint_variables, 1) if j not in wrist and v not in solution.free]
     else:
         needed = [v for v in chain.joint_variables if v not in solution.free]
@@ -174,7 +175,7 @@ def _measured(solution, arm, parts, joints) -> list:
     branch_values = BranchValues(solution, needed)
     rng = random.Random(16)
     measured: list = [[] for _ in solution.branches]
-    keys = [(key, k) for k, (role, _) in enumerate(parts[0]) for key in _candidates(role)]
+    keys = [(key, k) for k, (role, _) in enumerate(parts[0]) if joints[k] for key in _candidates(role)]
     for _ in range(POSES):
         values = _values(chain, solution.chain.sample, rng)
         rotation, origin = poses(chain, values)[chain.last_frame]
