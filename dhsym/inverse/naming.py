@@ -96,7 +96,7 @@ def checked_names(solution):
     chain = solution.chain
     joints = [_root_joint(solution, parts, k) for k in range(len(parts[0]))]
     chosen = [None] * len(joints)
-    arm = Arm(as_chain(chain), wrist_centre(chain), chain.sample)
+    arm = Arm(as_chain(chain), wrist_centre(chain), chain.sample, getattr(chain, "frame_offset", 0))
     if any(joints):
         measured = _measured(solution, arm, parts, joints)
         chosen = [_first_holding(measured, parts, k, role) if joints[k] else None
@@ -108,8 +108,7 @@ def checked_names(solution):
         texts = _names(parts, chosen, symbols)
     meanings = []
     for k, choice in enumerate(chosen):
-        offset = getattr(chain, "frame_offset", 0)
-        text = DEFINITIONS[choice[0]].format(**arm.names(choice[0], joints[k], offset)) if choice else ROOT_DEFINITION
+        text = DEFINITIONS[choice[0]].format(**arm.names(joints[k])) if choice else ROOT_DEFINITION
         if text not in meanings:
             meanings.append(text)
     branches = tuple(Branch(text, branch.assignments) for text, branch in zip(texts, solution.branches))
@@ -180,7 +179,8 @@ def _measured(solution, arm, parts, joints) -> list:
         values = _values(chain, solution.chain.sample, rng)
         rotation, origin = poses(chain, values)[chain.last_frame]
         target = [[*rotation[r], origin[r]] for r in range(3)]
-        for number, found in enumerate(branch_values(target, values)):
+        constants = {s: x for s, x in values.items() if s not in needed}  # the pose's own joints stay unknown
+        for number, found in enumerate(branch_values(target, constants)):
             if found is None:
                 continue
             frames = poses(chain, {**values, **zero, **{v: found[v] for v in needed}})

@@ -36,8 +36,8 @@ class Arm:
     frame (velocity.geometry.wrist_centre) or None; whether it is planar (every revolute axis
     parallel to axis 1) and a SCARA (planar, with a slide along those axes)."""
 
-    def __init__(self, chain, centre=None, sample=None):
-        self.chain, self.centre = chain, centre
+    def __init__(self, chain, centre=None, sample=None, offset: int = 0):
+        self.chain, self.centre, self.offset = chain, centre, offset  # axes printed as offset + 1, …
         self.sample = poses(chain, sample_values(chain, random.Random(3), sample or {}))
         first = axis_line(chain, 1, self.sample)[1]
         parallel = [_parallel(first, axis_line(chain, j, self.sample)[1]) for j in range(1, chain.n + 1)]
@@ -58,16 +58,16 @@ class Arm:
                 if not _parallel(line[1], before[1]):
                     point = _nearest(line, before)
                     if distance_to_axis(point, before) < TOLERANCE:
-                        return point, f"wrist (where axes {j - 1} and {j} meet)"
+                        return point, f"wrist (where axes {j - 1 + self.offset} and {j + self.offset} meet)"
         return frames[chain.last_frame][1], "end point (the target's origin)"
 
     def elbow_wrist(self, frames, joint):
         """(the point the elbow's words use, its name): the wrist centre; else a point on the next
-        axis when it is parallel to the elbow's (the UR5's axis 4); else the shoulder's point."""
+        axis when it is parallel to the elbow's (the UR5's axis 4); else the shoulder words' point."""
         chain = self.chain
         if self.centre is None and joint < chain.n and \
                 _parallel(axis_line(chain, joint, frames)[1], axis_line(chain, joint + 1, frames)[1]):
-            return axis_line(chain, joint + 1, frames)[0], f"point of axis {joint + 1} in the arm's plane"
+            return axis_line(chain, joint + 1, frames)[0], f"point of axis {joint + 1 + self.offset} in the arm's plane"
         return self.wrist(frames)
 
     def planar_wrist(self, frames, joint):
@@ -75,7 +75,7 @@ class Arm:
         chain = self.chain
         for j in range(joint + 1, chain.n + 1):
             if chain.rows[j - 1].joint == "R":
-                return axis_line(chain, j, frames)[0], f"wrist point (axis {j})"
+                return axis_line(chain, j, frames)[0], f"wrist point (axis {j + self.offset})"
         return frames[chain.last_frame][1], "end point"
 
     def slide_axes(self, frames, joint):
@@ -94,11 +94,10 @@ class Arm:
         n = self.chain.n
         return n - 1 if joint >= n - 2 else 2 if joint <= 3 else joint
 
-    def names(self, key: str, joint: int, offset: int = 0) -> dict:
-        """What the definition of `key` says its points and axes are, for the choice held by `joint`;
-        axes numbered from `offset` + 1 (a robot file's first_frame)."""
+    def names(self, joint: int) -> dict:
+        """What a definition says its points and axes are, for the choice held by `joint`."""
         slide = self.slide_axes(self.sample, joint) or (0, 0)
-        middle = self.wrist_middle(joint)
+        middle, offset = self.wrist_middle(joint), self.offset
         return {"wrist": self.wrist(self.sample)[1], "elbow_wrist": self.elbow_wrist(self.sample, joint)[1],
                 "planar_wrist": self.planar_wrist(self.sample, joint)[1], "slide": slide[0] + offset,
                 "slide_from": slide[1] + offset, "slide_wrist": self.slide_point(self.sample)[1],
