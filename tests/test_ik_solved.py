@@ -90,8 +90,8 @@ def test_the_puma_derivation_compiles_and_fits(tmp_path, kind):
 
 
 def test_branch_names_that_say_the_root_compile_as_frame_titles(tmp_path):
-    status, out, _ = run_dhsym("latex", "spatial3r", "--ik", "--document", "slides")
-    assert status == 0 and "Branch 4: shoulder $-\\surd$, elbow $-\\surd$" in out
+    status, out, _ = run_dhsym("latex", "asokan_dh_example", "--ik", "--document", "slides")
+    assert status == 0 and "Branch 4: shoulder back, elbow $-\\surd$" in out
     assert _pdflatex(tmp_path, "slides", out) == (0, [])
 
 

@@ -66,7 +66,7 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     solving, written = with_written_symbols(robot, numbers)
     solution = solve(solving, free=variables)
     solution = as_written(solution, robot, numbers) if written else solution
-    return InverseKinematics(checked_names(solution, evaluate))
+    return InverseKinematics(checked_names(solution))
 
 
 class InverseKinematics:

@@ -2,7 +2,9 @@
 arm names it: the first joint is the shoulder, the rest of the arm the elbow, the wrist's
 joints the wrist. The + root is called right / down / not flipped, the − root left / up /
 flipped (the names of the planar elbow's +√ and −√ in Spong's book); a slide's roots are
-"extended" and "reversed".
+"forward" and "back". These are the solver's names by sign; dhsym.inverse.naming replaces
+each with the word the arm's geometry gives that root (which may be the other one, or another
+pair: front/back, lefty/righty, forward/back), or with "+√" / "−√" where no word holds.
 
 >>> import sympy
 >>> t1, t3 = sympy.symbols("theta_1 theta_3")
@@ -14,7 +16,7 @@ flipped (the names of the planar elbow's +√ and −√ in Spong's book); a sli
 from __future__ import annotations
 
 WORDS = {"shoulder": ("right", "left"), "elbow": ("down", "up"), "wrist": ("not flipped", "flipped"),
-         "slide": ("extended", "reversed")}
+         "slide": ("forward", "back")}
 
 
 def branch_name(choices, first_joint, wrist_joints) -> str:

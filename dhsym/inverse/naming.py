@@ -1,208 +1,248 @@
 """Branch names that say what is true of the arm. The solver names a branch by the sign of each
-square root it chose (dhsym.inverse.branches): + is "shoulder right", "elbow down". For a planar
-arm that is the book's own definition (Spong's elbow down and up, by the sign of the root). For a
-spatial arm whose shoulder is joints 1 and 2 (axes crossing at right angles) and whose elbow is
-joint 3 (parallel to joint 2), the words are checked against the geometry a textbook draws, with
-z0 pointing up, at twelve poses:
+square root (or of an atan2's pair) it chose, and the joint's place in the arm (dhsym.inverse.
+branches). Here each choice gets the word that the arm's geometry gives it: a word is given when
+it holds at every one of twelve poses for every branch (the same word at each pose where it can be
+measured), and the two branches that differ in that choice only get opposite words. The words
+are measured in dhsym.inverse.sides, "up" being the direction of axis 1:
 
-- shoulder right / left: seen from above, the plane in which the arm swings (normal to axis 2,
-  through the wrist centre) lies to the right / left of the line from axis 1 to the wrist centre,
-  as a person's right or left arm does (the PUMA's two shoulder configurations; for an arm with no
-  wrist centre whose axis 4 is parallel to axis 2, as the UR5's, the point where axes 5 and 6
-  meet stands for it);
-- elbow up / down: the elbow (on axis 3) above / below the line from the shoulder (on axis 2) to
-  the wrist centre, in that plane; said only of an arm with a wrist centre whose axes 1 and 2
-  meet, where the shoulder's root fixes on which side of the shoulder the wrist centre lies (else
-  the elbow's side of that line changes with the pose within one branch).
+- shoulder right / left: seen from above, the arm's plane (normal to axis 2, through the wrist)
+  lies right / left of the line from axis 1 to the wrist, as a person's right or left arm does:
+  the PUMA's, the Stanford arm's, the UR5's (its wrist: where axes 5 and 6 meet);
+- shoulder front / back, where axis 2 crosses the line from axis 1 to the wrist (no offset along
+  axis 2): the wrist on the side of axis 1 where axis 2 is (an offset a1, as an IRB 140's or the
+  Salisbury finger's), else, axes 1 and 2 meeting, on the side that frame 1's x axis points to (the
+  inline arm, the spatial 3R); else over the back. The Rhino-like five-axis arm's choice of θ1 puts
+  its end point, not its wrist, in front or behind: that is its word;
+- elbow up / down: the elbow (on the axis of the choice's joint, parallel to axis 2) above / below
+  the line from the shoulder (on axis 2) to the wrist, in the arm's plane: the PUMA's, the inline
+  arm's, the spatial 3R's. It holds only where the shoulder's choice also fixes on which side of
+  the shoulder the wrist lies. With a shoulder offset (the finger, an IRB 140, a KR 6) the wrist
+  can lie between axis 1 and the shoulder, where the line goes backward and "above" turns into
+  "below" within a branch; there the line is drawn going the way the wrist lies from axis 1 (which
+  the shoulder's choice fixes): the elbow left / right of it, seen with axis 1 up and the wrist to
+  its right, which is above / below wherever the wrist is further out than the shoulder. For the
+  UR5 (its wrist: the point of axis 4 in the plane of axes 2, 3, 4) and the Rhino-like arm even
+  the side of axis 1 the wrist lies on changes within a branch (no choice of theirs places that
+  point on one side of axis 1): at some of the twelve poses the word would be wrong, so their
+  names say the root, "elbow +√";
+- elbow up / down of a planar arm, Spong's, drawn with x0 right and y0 up: seen from +z0, the
+  elbow left (up) / right (down) of the line from joint 1 to the wrist point (the next revolute
+  axis, else the end); Spong's +√ of the elbow's cosine law is elbow down, and the two agree at
+  every pose;
+- righty / lefty, a SCARA (a planar arm with a slide along its axes), as industry says: seen from
+  above, the elbow right / left of the line from axis 1 to the wrist's axis;
+- slide forward / back: along a slide (the Stanford arm's d3; the cylindrical arm's d3, whose sign
+  the choice of θ1 decides), the wrist on the side of the slide's crossing with the revolute axis
+  before it that the slide's axis points to (d3 > 0 with the usual frames), or behind;
+- wrist not flipped / flipped: seen from the tip of u5 (the direction of the wrist's middle axis),
+  axis 6 is turned from axis 4 counter-clockwise / clockwise: (u4 × u6)·u5 > 0 / < 0. Craig's
+  flipped twin (θ4 + π, −θ5, θ6 + π) reverses u5 and keeps u4 and u6 (the same pose), so the twins
+  always get opposite words; for the PUMA "not flipped" is θ5's +√, as in Craig.
 
-- shoulder front / back, for an arm whose plane passes through axis 1 but whose axis 2 lies off
-  axis 1 (a shoulder offset a1, as an IRB 140's): the wrist centre on the side of axis 1 where
-  axis 2 is, or reached over the back.
-
-Where the words hold they are given by that geometry; where they cannot be checked (the arm is not
-of that shape, or its plane and axis 2 pass through axis 1) the name says the root instead:
-"shoulder +√", "elbow −√".
+Where no word holds the name says the root: "shoulder +√", "elbow −√". Every word printed is
+defined once in the method line (DEFINITIONS).
 
 >>> import dhsym
 >>> [branch.name for branch in dhsym.load("puma560").ik().branches][:2]
 ['shoulder left, elbow up, wrist not flipped', 'shoulder left, elbow up, wrist flipped']
+>>> [branch.name for branch in dhsym.load("scara").ik().branches]
+['righty', 'lefty']
 """
 from __future__ import annotations
 
 import math
 import random
-import re
 from dataclasses import replace
 
-from ..velocity.geometry import axis_line, distance_to_axis, dot, minus, poses, wrist_centre
-from ..velocity.jacobian import cross
+from ..core.robot import as_chain
+from ..velocity.geometry import poses, wrist_centre
 from .branches import WORDS
+from .pointwise import BranchValues
+from .sides import MEASURES, Arm
 from .solution import Branch
 
 POSES = 12  # the words must hold at every one of these poses
-TOLERANCE = 1e-7
-_ROLE = re.compile(r"\b(shoulder|elbow)( \([^)]*\))? (right|left|up|down)\b")
-DEFINITIONS = {"right": "shoulder right/left: seen from above (z0 up), the arm's plane lies right/left of the line "
-                        "from axis 1 to the {wrist}",
-               "front": "shoulder front/back: the {wrist} on the side of axis 1 where axis 2 is, or on the other",
-               "up": "elbow up/down: the elbow above/below the line from the shoulder to the {wrist}"}
+CHECKED_AT_LEAST = 3  # poses at which every branch must be measured for a word to be given
+ROOT = ("+√", "−√")
+ROOT_DEFINITION = "+√/−√: the sign chosen in that joint's formula, where no word about the arm holds at every pose"
+DEFINITIONS = {
+    "right": "shoulder right/left: seen from above (axis {one} up), the arm's plane lies right/left of the line "
+             "from axis {one} to the {wrist}",
+    "front": "shoulder front/back: the {wrist} on the side of axis {one} where axis {two} is, or on the other",
+    "ahead": "shoulder front/back: the {wrist} on the side of axis {one} that frame {one}'s x axis points to, or "
+             "over the back",
+    "ahead_end": "shoulder front/back: the end point (the target's origin) on the side of axis {one} that frame "
+                 "{one}'s x axis points to, or over the back",
+    "up": "elbow up/down: the elbow above/below the line from the shoulder to the {elbow_wrist}",
+    "up_out": "elbow up/down: drawn in the arm's plane with axis {one} up and the {elbow_wrist} right of it, the "
+              "elbow left/right of the line from the shoulder to the {elbow_wrist} (above/below it where the "
+              "{elbow_wrist} is further out than the shoulder)",
+    "planar": "elbow up/down: seen from +z0 (x0 right, y0 up), the elbow left/right of the line from joint {one} to "
+              "the {planar_wrist} (Spong's +√ of the elbow is down)",
+    "lefty": "righty/lefty: seen from above (axis {one} up), the elbow right/left of the line from axis {one} to the "
+             "{planar_wrist}",
+    "slide": "slide forward/back: along the slide (axis {slide}), the {slide_wrist} on the side of its crossing with "
+             "axis {slide_from} that the axis points to, or behind",
+    "flip": "wrist not flipped/flipped: seen from the tip of axis {b}'s direction u{b}, axis {c} is turned from "
+            "axis {a} counter-clockwise/clockwise (u{a} × u{c} along +u{b}/−u{b})",
+}
 
 
-def checked_names(solution, evaluate):
-    """`solution` with its shoulder and elbow words checked (see the module docstring); `evaluate`
-    gives every branch's joint values at a pose (dhsym.inverse.evaluate)."""
-    if not any(_ROLE.search(branch.name) for branch in solution.branches):
-        return solution
+def checked_names(solution):
+    """`solution` with each branch's words checked against the arm (see the module docstring)."""
+    parts = [_parts(branch.name) for branch in solution.branches]
+    if not parts or not parts[0] or any(len(p) != len(parts[0]) for p in parts):
+        return solution  # "the only solution"
     chain = solution.chain
-    if _planar(chain):
-        return solution  # the book's names: the sign of the root
-    labels = _geometry(solution, evaluate) if not solution.free else None
+    joints = [_root_joint(solution, parts, k) for k in range(len(parts[0]))]
+    chosen = [None] * len(joints)
+    arm = Arm(as_chain(chain), wrist_centre(chain), chain.sample, getattr(chain, "frame_offset", 0))
+    if any(joints):
+        measured = _measured(solution, arm, parts, joints)
+        chosen = [_first_holding(measured, parts, k, role) if joints[k] else None
+                  for k, (role, _) in enumerate(parts[0])]
+    symbols = [chain.joint_variables[j - 1] if j else None for j in joints]
+    texts = _names(parts, chosen, symbols)
+    if len(set(texts)) < len(texts):  # cannot happen when each word tells twins apart; say the roots then
+        chosen = [None] * len(joints)
+        texts = _names(parts, chosen, symbols)
+    meanings = []
+    for k, choice in enumerate(chosen):
+        text = DEFINITIONS[choice[0]].format(**arm.names(joints[k])) if choice else ROOT_DEFINITION
+        if text not in meanings:
+            meanings.append(text)
+    branches = tuple(Branch(text, branch.assignments) for text, branch in zip(texts, solution.branches))
+    return replace(solution, branches=branches, method=f"{solution.method}; branch names: {'; '.join(meanings)}")
+
+
+def _names(parts, chosen, symbols) -> list[str]:
+    """Each branch's name: the word measured for each choice that has one, else the root's sign."""
     names = []
-    for number, branch in enumerate(solution.branches):
-        label = labels[number] if labels else None
-        names.append(_ROLE.sub(lambda m, label=label: _word(m, label), branch.name))
-    if len(set(names)) < len(names):  # the geometry did not tell the branches apart: say the roots
-        names = [_ROLE.sub(lambda m: _word(m, None), branch.name) for branch in solution.branches]
-    said = {word for label in labels or () for word in label.values()}
-    branches = tuple(Branch(name, branch.assignments) for name, branch in zip(names, solution.branches))
-    wrist = "wrist centre" if wrist_centre(chain) is not None else "wrist (where axes 5 and 6 meet)"
-    meanings = [text.format(wrist=wrist) for key, text in DEFINITIONS.items()
-                if key in said or {"right": "left", "front": "back", "up": "down"}[key] in said]
-    method = f"{solution.method}; branch names: {'; '.join(meanings)}" if meanings else solution.method
-    return replace(solution, branches=branches, method=method)
+    for number, signs in enumerate(parts):
+        said = []
+        for k, (role, positive) in enumerate(signs):
+            if chosen[k]:
+                key, words = chosen[k]
+                said.append((MEASURES[key].role, symbols[k], MEASURES[key].words[words[number]]))
+            else:
+                said.append((role, symbols[k], ROOT[0 if positive else 1]))
+        names.append(_text(said))
+    return names
 
 
-def _word(match, label) -> str:
-    role, joint, word = match.group(1), match.group(2) or "", match.group(3)
-    if label and label.get(role):
-        return f"{role}{joint} {label[role]}"
-    sign = "+" if word == WORDS[role][0] else "−"
-    return f"{role}{joint} {sign}√"
+def _parts(name: str) -> list:
+    """[(role, True for the first word of WORDS[role])] of a name branch_name wrote."""
+    parts = []
+    for part in name.split(", "):
+        role, _, word = part.partition(" ")
+        if role not in WORDS:
+            return []
+        if word.startswith("("):
+            word = word.partition(") ")[2]
+        parts.append((role, word == WORDS[role][0]))
+    return parts
 
 
-def _planar(chain) -> bool:
-    """Whether every revolute axis is parallel to the first (a planar arm, a SCARA)."""
-    rng = random.Random(3)
-    frames = poses(chain, _values(chain, rng))
-    first = axis_line(chain, 1, frames)[1]
-    return all(_length(cross(first, axis_line(chain, j, frames)[1])) < TOLERANCE
-               for j, row in enumerate(chain.rows, 1) if row.joint == "R")
+def _root_joint(solution, parts, k):
+    """The number (1..n) of the joint whose formula holds choice k: the first joint whose value
+    differs, by its formula or by a value it is computed from, in two branches that differ in
+    choice k only."""
+    for one, other in _twins(parts, k)[:1]:
+        second = solution.branches[other].values()
+        differs: set = set()
+        for name, value in solution.branches[one].assignments:
+            if second.get(name) != value or value.free_symbols & differs:
+                differs.add(name)
+                if name in solution.joint_variables:
+                    return solution.chain.joint_variables.index(name) + 1
+    return None
 
 
-def _geometry(solution, evaluate):
-    """[{"shoulder": "left" | "right" | None, "elbow": "up" | "down" | None}] per branch, the same at
-    every pose tried, or None if the arm is not of the shape the words describe."""
-    chain = solution.chain
-    if chain.n < 4 or any(row.joint != "R" for row in chain.rows[:2]):
-        return None
-    centre = wrist_centre(chain)
-    # The words are about the arm. Behind a wrist centre the wrist's joints cannot move any axis or
-    # point the words use, so only the arm's joints are computed (the wrist's formulas are most of
-    # the work of compiling a solution); without one every joint is.
-    needed = solution.joint_variables[:chain.n - 3] if centre is not None else solution.joint_variables
-    skipped = [v for v in solution.joint_variables if v not in needed]
-    asked = _keeping(solution, set(needed))
+def _measured(solution, arm, parts, joints) -> list:
+    """[branch][pose] -> {(measure, k): value} at POSES poses."""
+    chain = arm.chain  # frames 0..n
+    # Behind a wrist centre the wrist's joints move no axis or point the words use but the wrist's
+    # own, and (u4 × u6)·u5 does not change with θ4 (it turns axes 5 and 6 together about axis 4) nor
+    # with θ6: so only the arm's joints and the wrist's middle one are computed (the wrist's formulas
+    # are the longest); without a centre every joint is.
+    if arm.centre is not None:
+        wrist = set(range(chain.n - 2, chain.n + 1)) - {arm.wrist_middle(j) for j in joints if j and j >= chain.n - 2}
+        needed = [v for j, v in enumerate(chain.joint_variables, 1) if j not in wrist and v not in solution.free]
+    else:
+        needed = [v for v in chain.joint_variables if v not in solution.free]
+    zero = {v: 0.0 for v in chain.joint_variables if v not in needed and v not in solution.free}
+    branch_values = BranchValues(solution, needed)
     rng = random.Random(16)
-    found: list = [None] * len(solution.branches)
-    configurations, targets = [], []
+    measured: list = [[] for _ in solution.branches]
+    keys = [(key, k) for k, (role, _) in enumerate(parts[0]) if joints[k] for key in _candidates(role)]
     for _ in range(POSES):
-        values = _values(chain, rng)
+        values = _values(chain, solution.chain.sample, rng)
         rotation, origin = poses(chain, values)[chain.last_frame]
-        configurations.append(values)
-        targets.append([[*rotation[r], origin[r]] for r in range(3)] + [[0.0, 0.0, 0.0, 1.0]])
-    for values, branches in zip(configurations, evaluate(asked, targets, {v: 0.0 for v in skipped})):
-        for number, joints in enumerate(branches):
-            found_values = {v: float(x) for v, x in zip(solution.joint_variables, joints) if v in needed}
-            if any(math.isnan(x) for x in found_values.values()):
+        target = [[*rotation[r], origin[r]] for r in range(3)]
+        constants = {s: x for s, x in values.items() if s not in needed}  # the pose's own joints stay unknown
+        for number, found in enumerate(branch_values(target, constants)):
+            if found is None:
                 continue
-            label = _labels(chain, {**values, **found_values}, centre)
-            if label is None:
-                return None
-            if found[number] is None:
-                found[number] = label
-            found[number] = {role: word if found[number][role] == word else None for role, word in label.items()}
-    return [label or {"shoulder": None, "elbow": None} for label in found]
+            frames = poses(chain, {**values, **zero, **{v: found[v] for v in needed}})
+            measured[number].append({(key, k): MEASURES[key].measure(arm, frames, joints[k]) for key, k in keys})
+    return measured
 
 
-def _keeping(solution, joints: set):
-    """`solution` with each branch assigning only `joints` (and the values they are computed from);
-    the other joint variables become parameters, so that a branch's joints are computed whole."""
-    if joints == set(solution.joint_variables):
-        return solution
-    branches = []
-    for branch in solution.branches:
-        kept = set(joints)
-        for name, value in reversed(branch.assignments):  # a kept value keeps what it is computed from
-            if name in kept:
-                kept |= value.free_symbols
-        branches.append(Branch(branch.name, tuple((n, v) for n, v in branch.assignments if n in kept)))
-    others = tuple(v for v in solution.joint_variables if v not in joints)
-    return replace(solution, branches=tuple(branches), free=tuple(solution.free) + others)
+def _candidates(role: str) -> tuple:
+    """The words tried for a choice of `role`, in order."""
+    return {"shoulder": ("right", "front", "ahead", "slide", "ahead_end"),
+            "elbow": ("lefty", "planar", "up", "up_out", "slide"),
+            "wrist": ("flip",), "slide": ("slide",)}[role]
 
 
-def _values(chain, rng: random.Random) -> dict:
+def _first_holding(measured, parts, k, role):
+    """(measure key, [the word's index (0, 1) per branch]) of the first measure whose sign is the
+    same at every pose of each branch and opposite in two branches that differ in choice k only;
+    None if no measure holds."""
+    for key in _candidates(role):
+        tolerance, words = MEASURES[key].tolerance, []
+        for values in measured:
+            seen = [v > 0 for v in (at[(key, k)] for at in values) if v is not None and abs(v) > tolerance]
+            if len(set(seen)) != 1 or len(seen) < CHECKED_AT_LEAST:
+                break
+            words.append(0 if seen[0] else 1)
+        else:
+            if all(words[one] != words[other] for one, other in _twins(parts, k)):
+                return key, words
+    return None
+
+
+def _twins(parts, k):
+    """The pairs of branches (numbers) that differ in choice k only."""
+    return [(one, other) for one, signs in enumerate(parts) for other, others in enumerate(parts)
+            if all((a == b) == (i != k) for i, (a, b) in enumerate(zip(signs, others)))]
+
+
+def _text(said) -> str:
+    """'role word, ...' with the joint named where two choices share a role."""
+    counts = {}
+    for role, _, _ in said:
+        counts[role] = counts.get(role, 0) + 1
+    parts = []
+    for role, joint, word in said:
+        if not role:
+            parts.append(word)
+        elif counts[role] > 1:
+            parts.append(f"{role} ({joint}) {word}")
+        else:
+            parts.append(f"{role} {word}")
+    return ", ".join(parts)
+
+
+def _values(chain, sample: dict, rng: random.Random) -> dict:
     """Joint angles uniform in (−π, π), slides in (0.5, 1.5), constants from the robot's sample (else
     in (0.5, 1.5)), drawn in the order of the names: the same numbers in every run."""
     values = {}
     for symbol in sorted(chain.symbols, key=lambda s: s.name):
-        if symbol in chain.sample:
-            values[symbol] = float(chain.sample[symbol])
+        if symbol in sample:
+            values[symbol] = float(sample[symbol])
         elif symbol in chain.joint_variables and chain.rows[chain.joint_variables.index(symbol)].joint == "R":
             values[symbol] = rng.uniform(-math.pi, math.pi)
         else:
             values[symbol] = rng.uniform(0.5, 1.5)
     return values
-
-
-def _labels(chain, values: dict, centre):
-    """The shoulder's and the elbow's words at one configuration, or None if the arm's shape does not fit."""
-    frames = poses(chain, values)
-    base, up = axis_line(chain, 1, frames)
-    shoulder, across = axis_line(chain, 2, frames)
-    elbow, third = axis_line(chain, 3, frames)
-    if abs(dot(up, across)) > TOLERANCE:
-        return None
-    normal = cross(up, across)
-    crossing = abs(dot(minus(shoulder, base), normal)) < TOLERANCE * _length(normal)  # axes 1 and 2 meet
-    # the elbow's side of the line to the wrist is fixed by the roots only when the shoulder's root fixes
-    # which way the wrist centre lies from the shoulder: axes 1 and 2 meet, and the arm has a wrist centre
-    has_elbow = (chain.rows[2].joint == "R" and _length(cross(across, third)) < TOLERANCE and crossing
-                 and centre is not None)
-    if centre is not None:
-        wrist = frames[centre][1]
-    else:
-        point, fourth = axis_line(chain, 4, frames)
-        if _length(cross(across, fourth)) > TOLERANCE:
-            return None
-        wrist = point
-        for j in range(min(chain.n, 6), 4, -1):  # where axes 5 and 6 meet (the UR5's), else axes 4 and 5
-            candidate, _ = axis_line(chain, j, frames)
-            if distance_to_axis(candidate, axis_line(chain, j - 1, frames)) < TOLERANCE:
-                wrist = candidate
-                break
-    reach, bend = minus(wrist, shoulder), minus(elbow, shoulder)
-    offset = [dot(across, reach) * a for a in across]  # the arm's plane, from the shoulder, along axis 2
-    flat = [r - dot(up, reach) * u for r, u in zip(reach, up)]
-    side = dot(cross(flat, offset), up)
-    in_plane = minus(reach, offset)
-    bend = [b - dot(across, bend) * a for b, a in zip(bend, across)]
-    length = _length([r - dot(up, in_plane) * u for r, u in zip(in_plane, up)])
-    if length < TOLERANCE:
-        return {"shoulder": None, "elbow": None}
-    forward = [(r - dot(up, in_plane) * u) / length for r, u in zip(in_plane, up)]
-    height = dot(bend, up) * dot(in_plane, forward) - dot(in_plane, up) * dot(bend, forward)
-    if abs(side) < TOLERANCE:  # no offset along axis 2: the wrist in front of the shoulder or behind it
-        apart = minus(shoulder, base)
-        apart = [a - dot(up, apart) * u for a, u in zip(apart, up)]
-        away = minus(wrist, base)
-        ahead = dot(apart, [a - dot(up, away) * u for a, u in zip(away, up)])
-        side = 0.0 if _length(apart) < TOLERANCE or abs(ahead) < TOLERANCE else (-1.0 if ahead > 0 else 1.0)
-        words = ("front", "back")
-    else:
-        words = ("right", "left")
-    return {"shoulder": None if abs(side) < TOLERANCE else (words[0] if side < 0 else words[1]),
-            "elbow": None if abs(height) < TOLERANCE or not has_elbow else ("up" if height > 0 else "down")}
-
-
-def _length(vector) -> float:
-    return math.sqrt(sum(x * x for x in vector))
