@@ -25,7 +25,7 @@ from __future__ import annotations
 from ..core.robot import as_robot
 from ..errors import UserError
 from .codegen import module_text
-from .evaluate import evaluate
+from .evaluate import evaluate, evaluate_few
 from .naming import checked_names
 from .solve import solve
 from .written import as_written, with_written_symbols
@@ -66,7 +66,7 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     solving, written = with_written_symbols(robot, numbers)
     solution = solve(solving, free=variables)
     solution = as_written(solution, robot, numbers) if written else solution
-    return InverseKinematics(checked_names(solution, evaluate))
+    return InverseKinematics(checked_names(solution, evaluate_few))  # a dozen poses: plain floats, no compiling
 
 
 class InverseKinematics:
