@@ -24,6 +24,7 @@ derivation serves every branch.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 from itertools import combinations
 
@@ -37,6 +38,7 @@ from .solution import Step
 from .witness import number_at
 
 WITNESS_ZERO = 1e-8
+SILENT_ZERO = 1e-11  # a and b before division by the robot's lengths: zero by far, rounding apart
 FORMS_PER_UNKNOWN = 8  # the shortest equations per unknown whose sub-problem form is worked out
 PAIR_CANDIDATES = 4  # the shortest equations per unknown that are tried in pairs
 
@@ -71,7 +73,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
-    for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works):
+    for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works, _silence):
         memo.clear()  # kept within one search only: memory stays bounded across many
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
@@ -146,6 +148,8 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
             for kind, *_, equation, shape in items:
                 if kind != level or len(worked[angle]) >= FORMS_PER_UNKNOWN:
                     continue
+                if shape[1] not in prismatic and _silent(equation.expr, shape, witness):
+                    continue  # its form, worked out, would say nothing: not worked out
                 candidate = _candidate(equation, shape, constants)
                 if candidate is not None and not _says_nothing(candidate, prismatic, witness):
                     worked[angle].append(candidate)
@@ -209,6 +213,39 @@ def _says_nothing(candidate, prismatic, witness) -> bool:
     return _vanishes(candidate.form[0], witness) and _vanishes(candidate.form[1], witness)
 
 
+def _silent(expr, shape, witness) -> bool:
+    """Whether an equation a cos ψ + b sin ψ = c in the angle ψ of `shape` has a = b = 0 at the
+    witness pose, read off three of its values (ψ = 0, π/2, π: a = (f(0) − f(π))/2 and
+    b = f(π/2) − (f(0) + f(π))/2), far below the threshold that `_says_nothing` applies to the
+    worked-out form (its a and b are these divided by a product of the robot's lengths): such an
+    equation gives no candidate either way, and its form, most of a round's work, is not needed.
+    An equation that is not of that form has no form at all, so passing it over changes nothing."""
+    if not witness:
+        return False
+    key = (expr, shape)
+    if key not in _silence:
+        _silence[key] = _coefficients_vanish(expr, shape, witness)
+    return _silence[key]
+
+
+def _coefficients_vanish(expr, shape, witness) -> bool:
+    angle, variable = shape
+    coefficient = angle.coeff(variable) if angle != variable else 1
+    rest = number_at(angle - coefficient * variable, witness) if angle != variable else 0.0
+    if rest is None:
+        return False
+    values = []
+    for psi in (0.0, math.pi / 2, math.pi):
+        numbers = dict(witness)
+        numbers[variable] = (psi - rest) / float(coefficient)
+        value = number_at(expr, numbers)
+        if value is None:
+            return False
+        values.append(value)
+    a, b = (values[0] - values[2]) / 2, values[1] - (values[0] + values[2]) / 2
+    return abs(a) < SILENT_ZERO and abs(b) < SILENT_ZERO
+
+
 def _pair_works(first, second, witness) -> bool:
     """A pair determines the angle: its determinant is not zero, nor are both its solutions' numerators."""
     (a1, b1, k1), (a2, b2, k2) = first, second
@@ -253,6 +290,7 @@ _shapes: dict = {}
 _sizes: dict = {}  # equation -> tree sizes of its chain side and of the whole
 _signs: dict = {}  # pair of forms -> the sign of its determinant (None: either)
 _works: dict = {}  # pair of forms -> whether it determines the angle at the witness pose
+_silence: dict = {}  # (equation, shape) -> whether its coefficients vanish at the witness pose
 
 
 def _form_length(form) -> int:
