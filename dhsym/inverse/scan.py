@@ -24,7 +24,6 @@ derivation serves every branch.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 from itertools import combinations
 
@@ -32,13 +31,12 @@ import sympy
 
 from ..core.size import length, tree_size
 from ..errors import UserError
-from . import algebra
+from . import algebra, lookups
 from . import subproblems as sp
 from .solution import Step
 from .witness import number_at
 
 WITNESS_ZERO = 1e-8
-SILENT_ZERO = 1e-11  # a and b before division by the robot's lengths: zero by far, rounding apart
 FORMS_PER_UNKNOWN = 8  # the shortest equations per unknown whose sub-problem form is worked out
 PAIR_CANDIDATES = 4  # the shortest equations per unknown that are tried in pairs
 
@@ -73,8 +71,9 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
-    for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works, _silence):
+    for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works):
         memo.clear()  # kept within one search only: memory stays bounded across many
+    lookups.clear()
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
@@ -125,8 +124,9 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     order = list(prefer) + [k for k in ("position", "orientation", "mixed") if k not in prefer]
     kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
     groups: dict = {}
+    unknown = set(remaining)
     for equation in pool:
-        held = equation.expr.free_symbols
+        held = lookups.free_symbols(equation.expr)
         key = (equation.expr, tuple(v for v in remaining if v in held))
         if key not in _shapes:  # rounds look at the same equations again; their structure is kept
             _shapes[key] = _shape(equation, remaining, prismatic)
@@ -134,7 +134,7 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
         if shape is not None:
             # first the equations where the unknown is on the chain's side alone, with the shortest
             # chain side: there the coefficients of cos and sin are the chain's constants
-            on_target_side = bool(equation.lhs.free_symbols & set(remaining))
+            on_target_side = bool(lookups.free_symbols(equation.lhs) & unknown)
             if equation not in _sizes:
                 _sizes[equation] = (tree_size(equation.rhs), tree_size(equation.expr))
             groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side, *_sizes[equation],
@@ -148,7 +148,7 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
             for kind, *_, equation, shape in items:
                 if kind != level or len(worked[angle]) >= FORMS_PER_UNKNOWN:
                     continue
-                if shape[1] not in prismatic and _silent(equation.expr, shape, witness):
+                if shape[1] not in prismatic and lookups.silent(equation.expr, shape, witness):
                     continue  # its form, worked out, would say nothing: not worked out
                 candidate = _candidate(equation, shape, constants)
                 if candidate is not None and not _says_nothing(candidate, prismatic, witness):
@@ -213,39 +213,6 @@ def _says_nothing(candidate, prismatic, witness) -> bool:
     return _vanishes(candidate.form[0], witness) and _vanishes(candidate.form[1], witness)
 
 
-def _silent(expr, shape, witness) -> bool:
-    """Whether an equation a cos ψ + b sin ψ = c in the angle ψ of `shape` has a = b = 0 at the
-    witness pose, read off three of its values (ψ = 0, π/2, π: a = (f(0) − f(π))/2 and
-    b = f(π/2) − (f(0) + f(π))/2), far below the threshold that `_says_nothing` applies to the
-    worked-out form (its a and b are these divided by a product of the robot's lengths): such an
-    equation gives no candidate either way, and its form, most of a round's work, is not needed.
-    An equation that is not of that form has no form at all, so passing it over changes nothing."""
-    if not witness:
-        return False
-    key = (expr, shape)
-    if key not in _silence:
-        _silence[key] = _coefficients_vanish(expr, shape, witness)
-    return _silence[key]
-
-
-def _coefficients_vanish(expr, shape, witness) -> bool:
-    angle, variable = shape
-    coefficient = angle.coeff(variable) if angle != variable else 1
-    rest = number_at(angle - coefficient * variable, witness) if angle != variable else 0.0
-    if rest is None:
-        return False
-    values = []
-    for psi in (0.0, math.pi / 2, math.pi):
-        numbers = dict(witness)
-        numbers[variable] = (psi - rest) / float(coefficient)
-        value = number_at(expr, numbers)
-        if value is None:
-            return False
-        values.append(value)
-    a, b = (values[0] - values[2]) / 2, values[1] - (values[0] + values[2]) / 2
-    return abs(a) < SILENT_ZERO and abs(b) < SILENT_ZERO
-
-
 def _pair_works(first, second, witness) -> bool:
     """A pair determines the angle: its determinant is not zero, nor are both its solutions' numerators."""
     (a1, b1, k1), (a2, b2, k2) = first, second
@@ -259,12 +226,12 @@ def _shape(equation, remaining, prismatic):
     """(the unknown or sum of angles it enters through, the unknown it determines), when the
     equation holds one unknown (or one sum of angles); else None. Structure only, no algebra."""
     expr = equation.expr
-    unknown = expr.free_symbols & set(remaining)
+    unknown = lookups.free_symbols(expr) & set(remaining)
     if not unknown:
         return None
     if unknown & prismatic:
         return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
-    angles = {f.args[0] for f in expr.atoms(sympy.cos, sympy.sin) if f.args[0].free_symbols & unknown}
+    angles = {f.args[0] for f in lookups.trig_atoms(expr) if lookups.free_symbols(f.args[0]) & unknown}
     if len(angles) == 1:
         (angle,) = angles
         variable = _last(angle, unknown, remaining)
@@ -290,7 +257,6 @@ _shapes: dict = {}
 _sizes: dict = {}  # equation -> tree sizes of its chain side and of the whole
 _signs: dict = {}  # pair of forms -> the sign of its determinant (None: either)
 _works: dict = {}  # pair of forms -> whether it determines the angle at the witness pose
-_silence: dict = {}  # (equation, shape) -> whether its coefficients vanish at the witness pose
 
 
 def _form_length(form) -> int:
@@ -315,8 +281,7 @@ def _form(expr, angle, variable, constants):
         psi = sympy.Dummy("psi")
         replaced = expr.xreplace({sympy.cos(angle): sympy.cos(psi), sympy.sin(angle): sympy.sin(psi)})
         return sp.trig_linear(replaced, psi, constants)
-    if expr.atoms(sympy.cos, sympy.sin) and any(variable in f.free_symbols
-                                                for f in expr.atoms(sympy.cos, sympy.sin)):
+    if any(variable in lookups.free_symbols(f) for f in lookups.trig_atoms(expr)):
         return sp.trig_linear(expr, variable, constants)
     form = sp.polynomial(expr, variable)
     return tuple(form) if form is not None and form[0] != 0 else None
@@ -417,11 +382,17 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     return sp.one_equation(a, b, c, sigma, shape)
 
 
+def _negated(x):
+    """−x over one denominator, common factors out (a plain sum of monomials is that already)."""
+    negated = algebra.expand(-x)
+    return negated if algebra.plain_sum(negated) else sympy.factor_terms(sympy.together(negated))
+
+
 def _variants(a, b, c, sigma):
     """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
     atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
     placeholder = sympy.Dummy("c")
     for sign in (1, -1):
-        sa, sb, sc = (x if sign == 1 else sympy.factor_terms(sympy.together(algebra.expand(-x))) for x in (a, b, c))
+        sa, sb, sc = (x if sign == 1 else _negated(x) for x in (a, b, c))
         for shape in ("A", "B"):
             yield sa, sb, sc, shape, sp.one_equation(sa, sb, placeholder, sigma, shape)
