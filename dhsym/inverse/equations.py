@@ -129,6 +129,7 @@ def transform_equations(chain, target: sympy.Matrix, position: bool, start=None,
     expanded_after = {j: [[convert(after[m, c]) for c in range(columns)] for m in range(3)]
                       for j, after in afters.items()}
     tip_lengths = {}
+    written: dict = {}  # a multiplied-out element -> its expression
     equations = []
     for a, i in enumerate(frames):
         if a == len(frames) - 1:
@@ -143,7 +144,9 @@ def transform_equations(chain, target: sympy.Matrix, position: bool, start=None,
             for r in range(3):
                 for c in range(columns):
                     seen = sum((before[r][m] * after[m][c] for m in range(3)), before[r][3] if c == 3 else 0)
-                    equations.append(Equation(made(seen), chain_side[r, c], _kind(c, j == last),
+                    if seen not in written:  # the same element recurs in other pairs of frames: written once
+                        written[seen] = made(seen)
+                    equations.append(Equation(written[seen], chain_side[r, c], _kind(c, j == last),
                                               f"element ({r + 1}, {c + 1}) of {where}", where))
             if position:
                 tip = afters[j][:3, 3]

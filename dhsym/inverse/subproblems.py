@@ -80,7 +80,10 @@ def _divided(value, factor):
     """value / factor over one denominator ((K − a2²)/(2 a2), not K/(2 a2) − a2/2)."""
     if factor in (1, -1):
         return factor * value
-    return sympy.factor_terms(sympy.together(algebra.expand(value / factor)))
+    divided = algebra.expand(value / factor)
+    if algebra.plain_sum(divided):  # a and b, which the factor divides: nothing to put over one denominator
+        return divided
+    return sympy.factor_terms(sympy.together(divided))
 
 
 def _common_constant(a, b, constants) -> sympy.Expr:
