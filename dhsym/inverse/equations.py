@@ -63,16 +63,17 @@ def squared_length(steps, variables, point=ZERO, point_length=0, memo: dict | No
     return collect_by_trig(algebra.expand(total) if ring is None else ring.expand(total), variables)
 
 
-def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None) -> tuple[sympy.Matrix, sympy.Expr]:
+def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None,
+          memo: dict | None = None) -> tuple[sympy.Matrix, sympy.Expr]:
     """The point (known in frame `known_in`, the first by default) seen from `frame`, and its
-    squared distance from that frame's origin."""
+    squared distance from that frame's origin (`memo` as for `squared_length`)."""
     chain = as_chain(chain)
     known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
     inverse = chain.transform(frame, known_in)
     seen = inverse[:3, :3] * point + inverse[:3, 3]
     return seen.applyfunc(lambda e: collect_by_trig(algebra.expand(e), frozenset(variables))), \
-        squared_length(chain.steps(frame, known_in), variables, point, point_length)
+        squared_length(chain.steps(frame, known_in), variables, point, point_length, memo)
 
 
 def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matrix, holder,
@@ -87,12 +88,13 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
     equations = []
     local_length = sympy.expand(sum(x ** 2 for x in local))
     ends = sorted([frames.index(known_in), frames.index(holder)])
+    memo: dict = {}  # contracted tails of steps: the frames' paths share them
     for frame in frames[ends[0]:ends[1] + 1]:
-        seen, seen_length = moved(chain, frame, point, point_length, known_in)
+        seen, seen_length = moved(chain, frame, point, point_length, known_in, memo)
         chain_side = chain.transform(frame, holder)
         there = chain_side[:3, :3] * local + chain_side[:3, 3]
         there = there.applyfunc(lambda e: collect_by_trig(algebra.expand(e), frozenset(variables)))
-        there_length = squared_length(chain.steps(frame, holder), variables, local, local_length)
+        there_length = squared_length(chain.steps(frame, holder), variables, local, local_length, memo)
         name = _frame_name(robot, frame)
         for axis in range(3):
             equations.append(Equation(seen[axis], there[axis], "position",
