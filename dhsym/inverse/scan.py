@@ -100,7 +100,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
             coefficient = angle.coeff(variable)
             expression = algebra.expand((phi - (angle - coefficient * variable)) / coefficient)
             pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
-                    for e in pool]
+                    if variable in lookups.free_symbols(e.lhs) | lookups.free_symbols(e.rhs) else e
+                    for e in pool]  # the rest stay as they are
             pending.append((variable, expression))
         remaining.remove(variable)
         ready = True
