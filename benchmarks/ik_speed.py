@@ -77,7 +77,7 @@ def general_6r():
     rows = [dhsym.DHRow.revolute(t[k], d=sympy.Symbol(f"d_{k + 1}", real=True),
                                  a=sympy.Symbol(f"a_{k + 1}", real=True),
                                  alpha=sympy.Symbol(f"alpha_{k + 1}", real=True)) for k in range(6)]
-    return dhsym.Chain(rows, "standard", name="general 6R")
+    return dhsym.Robot(dhsym.Chain(rows, "standard"), name="general 6R")
 
 
 def report(name: str) -> None:
