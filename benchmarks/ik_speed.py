@@ -9,8 +9,9 @@ forward kinematics, and how fast a chain with no closed form is refused.
    cost of FK. The ratio is also given per branch (the PUMA has 8, the UR5 8).
 3. Refusal time of a general 6R (symbolic twists): decided from the axes, before any algebra.
 
-4. With --all: the derivation time (CPU, least of 3 cold runs) of every built-in robot that has a
-   closed form.
+4. With --all: the time (CPU, least of 3 cold runs) of every built-in robot that has a closed
+   form: the derivation (`solve`) and `robot.ik()` as a whole (decimals as written, branch names
+   checked against the arm: all that `dhsym ik` works out).
 
 Run: python benchmarks/ik_speed.py [--all]
 """
@@ -26,6 +27,7 @@ from sympy.core.cache import clear_cache
 
 import dhsym
 from dhsym.errors import UserError
+from dhsym.inverse.api import inverse_kinematics
 from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.solve import solve
 from dhsym.io.library import builtin_names
@@ -75,7 +77,7 @@ def general_6r():
     rows = [dhsym.DHRow.revolute(t[k], d=sympy.Symbol(f"d_{k + 1}", real=True),
                                  a=sympy.Symbol(f"a_{k + 1}", real=True),
                                  alpha=sympy.Symbol(f"alpha_{k + 1}", real=True)) for k in range(6)]
-    return dhsym.Chain(rows, "standard", name="general 6R")
+    return dhsym.Robot(dhsym.Chain(rows, "standard"), name="general 6R")
 
 
 def report(name: str) -> None:
@@ -94,23 +96,24 @@ def report(name: str) -> None:
           f"ratio {ik_time / fk_time:.1f} (per branch {ik_time / fk_time / branches:.2f})")
 
 
-def derivation_cpu(name: str, runs: int = 3) -> float:
+def derivation_cpu(name: str, runs: int = 3, work=solve) -> float:
     """The least CPU time of `runs` cold derivations (a fresh chain, an empty SymPy cache)."""
     times = []
     for _ in range(runs):
         clear_cache()
         chain = dhsym.load(name)
         start = time.process_time()
-        solve(chain)
+        work(chain)
         times.append(time.process_time() - start)
     return min(times)
 
 
 def every_robot() -> None:
-    print("derivation, CPU seconds (least of 3 cold runs):")
+    print("CPU seconds (least of 3 cold runs): solve, robot.ik()")
     for name in builtin_names():
         try:
-            print(f"  {name:22s} {derivation_cpu(name):.2f}", flush=True)
+            print(f"  {name:22s} {derivation_cpu(name):.2f}  {derivation_cpu(name, work=inverse_kinematics):.2f}",
+                  flush=True)
         except UserError as error:
             print(f"  {name:22s} refused: {error}")
 

@@ -17,6 +17,7 @@ True
 """
 from __future__ import annotations
 
+import math
 from itertools import product
 
 import sympy
@@ -87,6 +88,47 @@ def expand(expr) -> sympy.Expr:
             return sympy.Add(*[t * divisor for t in sympy.Add.make_args(rest.as_expr())])
     poly = _polynomial(expr)
     return sympy.expand(expr) if poly is None else poly.as_expr()
+
+
+def factor_terms(expr) -> sympy.Expr:
+    """`sympy.factor_terms(expr)`, answered at once for a sum that it leaves as it is (see `plain_sum`).
+
+    >>> x, y = sympy.symbols("x y")
+    >>> factor_terms(2*x*y + 4*x), factor_terms(x*y - 2*sympy.cos(y))
+    (2*x*(y + 2), x*y - 2*cos(y))
+    """
+    return expr if plain_sum(expr) else sympy.factor_terms(expr)
+
+
+def plain_sum(expr) -> bool:
+    """Whether `expr` is a sum of monomials (integer coefficients, whole powers of symbols and
+    cos/sin of symbols) with nothing for factor_terms or together to take out: the coefficients'
+    gcd is 1, not every sign is minus, and no symbol or cos/sin is in every term. Such a sum is
+    what both give back, and telling it costs a walk over the terms, not their gcd.
+
+    >>> x, y = sympy.symbols("x y")
+    >>> plain_sum(x*y + 2*sympy.sin(x)), plain_sum(x*y + x), plain_sum(-x - y), plain_sum(2*x + 4*y)
+    (True, False, False, False)
+    """
+    if not expr.is_Add:
+        return False
+    divisor, positive, common = 0, False, None
+    for term in expr.args:
+        coefficient, rest = term.as_coeff_Mul()
+        if not coefficient.is_Integer:
+            return False
+        divisor = math.gcd(divisor, abs(int(coefficient)))
+        positive = positive or coefficient > 0
+        bases = set()
+        for factor in sympy.Mul.make_args(rest) if rest != 1 else ():
+            base, exponent = (factor.base, factor.exp) if factor.is_Pow else (factor, 1)
+            if not (exponent == 1 or (getattr(exponent, "is_Integer", False) and exponent > 0)):
+                return False
+            if not (base.is_Symbol or (isinstance(base, (sympy.cos, sympy.sin)) and base.args[0].is_Symbol)):
+                return False
+            bases.add(base)
+        common = bases if common is None else common & bases
+    return divisor == 1 and positive and not common
 
 
 def _polynomial(expr):

@@ -63,16 +63,17 @@ def squared_length(steps, variables, point=ZERO, point_length=0, memo: dict | No
     return collect_by_trig(algebra.expand(total) if ring is None else ring.expand(total), variables)
 
 
-def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None) -> tuple[sympy.Matrix, sympy.Expr]:
+def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None,
+          memo: dict | None = None) -> tuple[sympy.Matrix, sympy.Expr]:
     """The point (known in frame `known_in`, the first by default) seen from `frame`, and its
-    squared distance from that frame's origin."""
+    squared distance from that frame's origin (`memo` as for `squared_length`)."""
     chain = as_chain(chain)
     known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
     inverse = chain.transform(frame, known_in)
     seen = inverse[:3, :3] * point + inverse[:3, 3]
     return seen.applyfunc(lambda e: collect_by_trig(algebra.expand(e), frozenset(variables))), \
-        squared_length(chain.steps(frame, known_in), variables, point, point_length)
+        squared_length(chain.steps(frame, known_in), variables, point, point_length, memo)
 
 
 def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matrix, holder,
@@ -87,12 +88,13 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
     equations = []
     local_length = sympy.expand(sum(x ** 2 for x in local))
     ends = sorted([frames.index(known_in), frames.index(holder)])
+    memo: dict = {}  # contracted tails of steps: the frames' paths share them
     for frame in frames[ends[0]:ends[1] + 1]:
-        seen, seen_length = moved(chain, frame, point, point_length, known_in)
+        seen, seen_length = moved(chain, frame, point, point_length, known_in, memo)
         chain_side = chain.transform(frame, holder)
         there = chain_side[:3, :3] * local + chain_side[:3, 3]
         there = there.applyfunc(lambda e: collect_by_trig(algebra.expand(e), frozenset(variables)))
-        there_length = squared_length(chain.steps(frame, holder), variables, local, local_length)
+        there_length = squared_length(chain.steps(frame, holder), variables, local, local_length, memo)
         name = _frame_name(robot, frame)
         for axis in range(3):
             equations.append(Equation(seen[axis], there[axis], "position",
@@ -129,6 +131,7 @@ def transform_equations(chain, target: sympy.Matrix, position: bool, start=None,
     expanded_after = {j: [[convert(after[m, c]) for c in range(columns)] for m in range(3)]
                       for j, after in afters.items()}
     tip_lengths = {}
+    written: dict = {}  # a multiplied-out element -> its expression
     equations = []
     for a, i in enumerate(frames):
         if a == len(frames) - 1:
@@ -143,7 +146,9 @@ def transform_equations(chain, target: sympy.Matrix, position: bool, start=None,
             for r in range(3):
                 for c in range(columns):
                     seen = sum((before[r][m] * after[m][c] for m in range(3)), before[r][3] if c == 3 else 0)
-                    equations.append(Equation(made(seen), chain_side[r, c], _kind(c, j == last),
+                    if seen not in written:  # the same element recurs in other pairs of frames: written once
+                        written[seen] = made(seen)
+                    equations.append(Equation(written[seen], chain_side[r, c], _kind(c, j == last),
                                               f"element ({r + 1}, {c + 1}) of {where}", where))
             if position:
                 tip = afters[j][:3, 3]

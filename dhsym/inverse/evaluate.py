@@ -43,8 +43,12 @@ def _program(solution):
             _compiled.clear()
         namespace: dict = {}
         exec(compile(module_text(solution), f"<ik of {solution.chain.name}>", "exec"), namespace)  # our own text
-        keywords = keyword_names(solution)
-        sample = {str(symbol) for symbol in solution.chain.sample}
-        required = [name for name in keywords if name not in sample]
-        _compiled[key] = namespace["ik"], keywords, required
+        _compiled[key] = (namespace["ik"], *_constants(solution))
     return _compiled[key]
+
+
+def _constants(solution):
+    """({constant name: keyword of the module's ik()}, the names that have no default)."""
+    keywords = keyword_names(solution)
+    sample = {str(symbol) for symbol in solution.chain.sample}
+    return keywords, [name for name in keywords if name not in sample]

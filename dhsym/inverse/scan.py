@@ -31,7 +31,7 @@ import sympy
 
 from ..core.size import length, tree_size
 from ..errors import UserError
-from . import algebra
+from . import algebra, lookups
 from . import subproblems as sp
 from .solution import Step
 from .witness import number_at
@@ -73,6 +73,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     witness = {} if witness is None else witness
     for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works):
         memo.clear()  # kept within one search only: memory stays bounded across many
+    lookups.clear()
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
@@ -99,7 +100,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
             coefficient = angle.coeff(variable)
             expression = algebra.expand((phi - (angle - coefficient * variable)) / coefficient)
             pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
-                    for e in pool]
+                    if variable in lookups.free_symbols(e.lhs) | lookups.free_symbols(e.rhs) else e
+                    for e in pool]  # the rest stay as they are
             pending.append((variable, expression))
         remaining.remove(variable)
         ready = True
@@ -123,8 +125,9 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     order = list(prefer) + [k for k in ("position", "orientation", "mixed") if k not in prefer]
     kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
     groups: dict = {}
+    unknown = set(remaining)
     for equation in pool:
-        held = equation.expr.free_symbols
+        held = lookups.free_symbols(equation.expr)
         key = (equation.expr, tuple(v for v in remaining if v in held))
         if key not in _shapes:  # rounds look at the same equations again; their structure is kept
             _shapes[key] = _shape(equation, remaining, prismatic)
@@ -132,7 +135,7 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
         if shape is not None:
             # first the equations where the unknown is on the chain's side alone, with the shortest
             # chain side: there the coefficients of cos and sin are the chain's constants
-            on_target_side = bool(equation.lhs.free_symbols & set(remaining))
+            on_target_side = bool(lookups.free_symbols(equation.lhs) & unknown)
             if equation not in _sizes:
                 _sizes[equation] = (tree_size(equation.rhs), tree_size(equation.expr))
             groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side, *_sizes[equation],
@@ -146,6 +149,8 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
             for kind, *_, equation, shape in items:
                 if kind != level or len(worked[angle]) >= FORMS_PER_UNKNOWN:
                     continue
+                if shape[1] not in prismatic and lookups.silent(equation.expr, shape, witness):
+                    continue  # its form, worked out, would say nothing: not worked out
                 candidate = _candidate(equation, shape, constants)
                 if candidate is not None and not _says_nothing(candidate, prismatic, witness):
                     worked[angle].append(candidate)
@@ -222,12 +227,12 @@ def _shape(equation, remaining, prismatic):
     """(the unknown or sum of angles it enters through, the unknown it determines), when the
     equation holds one unknown (or one sum of angles); else None. Structure only, no algebra."""
     expr = equation.expr
-    unknown = expr.free_symbols & set(remaining)
+    unknown = lookups.free_symbols(expr) & set(remaining)
     if not unknown:
         return None
     if unknown & prismatic:
         return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
-    angles = {f.args[0] for f in expr.atoms(sympy.cos, sympy.sin) if f.args[0].free_symbols & unknown}
+    angles = {f.args[0] for f in lookups.trig_atoms(expr) if lookups.free_symbols(f.args[0]) & unknown}
     if len(angles) == 1:
         (angle,) = angles
         variable = _last(angle, unknown, remaining)
@@ -277,8 +282,7 @@ def _form(expr, angle, variable, constants):
         psi = sympy.Dummy("psi")
         replaced = expr.xreplace({sympy.cos(angle): sympy.cos(psi), sympy.sin(angle): sympy.sin(psi)})
         return sp.trig_linear(replaced, psi, constants)
-    if expr.atoms(sympy.cos, sympy.sin) and any(variable in f.free_symbols
-                                                for f in expr.atoms(sympy.cos, sympy.sin)):
+    if any(variable in lookups.free_symbols(f) for f in lookups.trig_atoms(expr)):
         return sp.trig_linear(expr, variable, constants)
     form = sp.polynomial(expr, variable)
     return tuple(form) if form is not None and form[0] != 0 else None
@@ -379,11 +383,17 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     return sp.one_equation(a, b, c, sigma, shape)
 
 
+def _negated(x):
+    """−x over one denominator, common factors out (a plain sum of monomials is that already)."""
+    negated = algebra.expand(-x)
+    return negated if algebra.plain_sum(negated) else sympy.factor_terms(sympy.together(negated))
+
+
 def _variants(a, b, c, sigma):
     """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
     atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
     placeholder = sympy.Dummy("c")
     for sign in (1, -1):
-        sa, sb, sc = (x if sign == 1 else sympy.factor_terms(sympy.together(algebra.expand(-x))) for x in (a, b, c))
+        sa, sb, sc = (x if sign == 1 else _negated(x) for x in (a, b, c))
         for shape in ("A", "B"):
             yield sa, sb, sc, shape, sp.one_equation(sa, sb, placeholder, sigma, shape)

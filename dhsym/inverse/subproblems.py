@@ -69,7 +69,7 @@ def trig_linear(expr: sympy.Expr, variable: sympy.Symbol, constants=frozenset())
     if a.has(c_, s_) or b.has(c_, s_) or (a == 0 and b == 0):
         return None
     factor = _common_constant(a, b, constants)  # from the expanded terms, before they are factored
-    a, b = sympy.factor_terms(a), sympy.factor_terms(b)
+    a, b = algebra.factor_terms(a), algebra.factor_terms(b)
     c = -(rest + parts.get(sympy.S.One, sympy.Integer(0)))
     if (b == 0 or a == 0) and factor in (a + b, -a - b):  # cos θ = D, sin θ = D
         return sympy.Integer(b == 0), sympy.Integer(a == 0), _divided(c, a if b == 0 else b)
@@ -80,7 +80,10 @@ def _divided(value, factor):
     """value / factor over one denominator ((K − a2²)/(2 a2), not K/(2 a2) − a2/2)."""
     if factor in (1, -1):
         return factor * value
-    return sympy.factor_terms(sympy.together(algebra.expand(value / factor)))
+    divided = algebra.expand(value / factor)
+    if algebra.plain_sum(divided):  # a and b, which the factor divides: nothing to put over one denominator
+        return divided
+    return sympy.factor_terms(sympy.together(divided))
 
 
 def _common_constant(a, b, constants) -> sympy.Expr:
@@ -212,7 +215,7 @@ def determinant_sign(first, second) -> int | None:
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:
     """The shorter of the expression and its factored form."""
-    candidates = [expr, sympy.factor_terms(expr), sympy.factor_terms(algebra.expand(expr))]
+    candidates = [expr, algebra.factor_terms(expr), algebra.factor_terms(algebra.expand(expr))]
     return min(candidates, key=length)
 
 
