@@ -170,3 +170,21 @@ def pythagoras(expr: sympy.Expr) -> sympy.Expr:
             if length(reduced) < shortest:
                 best, shortest = reduced, length(reduced)
     return best
+
+
+def shorter_with(expr, known: dict):
+    """`expr` with the `known` values (polynomials) written in where that makes it shorter, as the
+    SCARA's slide d3 = −(pz + d4) cancels from the law of cosines, leaving Spong's D; a name
+    inside a function (the angle of c23) is kept.
+
+    >>> px, pz, d3, d4 = sympy.symbols("px pz d3 d4", real=True)
+    >>> shorter_with(px**2 + pz**2 - d3**2 - 2*d3*d4 - d4**2, {d3: -(pz + d4)})
+    px**2
+    """
+    inside = set().union(*(f.free_symbols for f in expr.atoms(sympy.Function)))  # an angle stays an angle
+    used = {name: value for name, value in known.items() if name in expr.free_symbols - inside}
+    if not used:
+        return expr
+    written = sympy.factor_terms(sympy.together(expand(expr.xreplace(used))))
+    return written if length(written) < length(expr) else expr
+

@@ -363,7 +363,8 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
         root = b ** 2 - 4 * a * c if b != 0 else -c / a
         derivation.conditions.append(f"{sympy.factor_terms(root)} >= 0")
         return sp.prismatic(first.form, sigma)
-    a, b, c = first.form
+    slides = {name: value for name, value in derivation.assignments if value.is_polynomial(*value.free_symbols)}
+    a, b, c = (algebra.shorter_with(x, slides) for x in first.form)  # the SCARA's d3 cancels from D
     law = (b == 0 or a == 0)
     shape = "A"
     if not law and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
