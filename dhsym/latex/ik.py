@@ -22,15 +22,8 @@ import re
 
 import sympy
 
-from ..printing.ik import (
-    RELATIONS,
-    latex_name,
-    latex_printer,
-    sentence_parts,
-    solution_names,
-    target_title,
-    variable_list,
-)
+from ..printing.ik import latex_name, latex_printer, target_title, variable_list
+from ..printing.ik_sentences import relation, sentence_parts, solution_names
 from .display import Latex
 from .layout import (
     ALIGNED_EXTRA,
@@ -148,14 +141,14 @@ def latex_sentence(text: str, names, printer) -> str:
     out = []
     for part in sentence_parts(text, names):
         if part[0] == "relation":
-            out.append(f"${printer.doprint(part[1])}{RELATIONS['latex'][part[2]]}{printer.doprint(part[3])}$")
+            out.append(f"${relation(part, printer, 'latex')}$")
             continue
         position = 0
         for start, end, expression in part[2]:
             out += [prose(part[1][position:start]), f"${printer.doprint(expression)}$"]
             position = end
         out.append(prose(part[1][position:]))
-    return "".join(out)
+    return "".join(out).replace("$ = $", " = ")  # r_{32} = -1 as one formula
 
 
 def prose(text: str) -> str:

@@ -17,17 +17,14 @@ starts with the target's terms, positive ones first.
 """
 from __future__ import annotations
 
-import re
-
 import sympy
 from sympy.printing.precedence import PRECEDENCE, precedence
 
 from ..core.robot import as_robot
-from ..errors import UserError
 from ..inverse.solution import TARGET_NAMES
 from ..inverse.written import Written
-from ..io.expr import parse_expression, real_symbol
 from . import render
+from .ik_sentences import solution_names, text_sentence, wrap_sentence
 from .notation import GREEK_NAMES, display_name
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
@@ -146,97 +143,6 @@ def _one_group(text: str) -> bool:
     return depth == 0
 
 
-_RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
-_TERM = r"(?:(?:sin|cos)\([^()]*\)|[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(]))"
-_MATH_RUN = re.compile(rf"(?<![\w.]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5)
-RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
-             "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
-
-
-def sentence_parts(text: str, names) -> list:
-    """A solver's sentence ("1 - D**2 >= 0 (else …)", "a_3 = 0 and d_4 = 0: theta_3 is not
-    determined") as parts to print: ("relation", lhs, operator, rhs) for each relation it starts
-    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, math) for
-    the rest, where `math` lists (start, end, expression) for the names, sums of names and sines
-    and cosines of them that the words mention (theta_2 + theta_3, sin(theta_5)), each printed
-    as math. A sentence that starts with no relation stays words.
-
-    >>> sentence_parts("1 - D**2 >= 0 (else no branch)", ["D"])[0]
-    ('relation', 1 - D**2, '>=', 0)
-    >>> sentence_parts("only theta_4 + theta_6 is determined; the factor sin(theta_5)", ["theta_4", "theta_5",
-    ...                "theta_6"])[0][2]
-    [(5, 22, theta_4 + theta_6), (49, 61, sin(theta_5))]
-    """
-    cuts = [len(text)] + [m.start() for m in re.finditer(r": | \(", text)]
-    for cut in sorted(set(cuts)):
-        relations = _relations(text[:cut])
-        if relations:
-            rest = text[cut:]
-            return relations + ([("words", rest, _mentioned(rest, names))] if rest else [])
-    return [("words", text, _mentioned(text, names))]
-
-
-def _relations(math: str) -> list:
-    """[("relation", lhs, operator, rhs), ("words", " and ", []), …] for `math`, or [] if it is not
-    a conjunction of relations the safe parser reads."""
-    parts = []
-    for clause in math.split(" and "):
-        match = _RELATION.match(clause.strip())
-        try:
-            sides = [parse_expression(match.group(1)), parse_expression(match.group(3))] if match else None
-        except UserError:
-            sides = None
-        if sides is None:
-            return []
-        if parts:
-            parts.append(("words", " and ", []))
-        parts.append(("relation", sides[0], match.group(2), sides[1]))
-    return parts
-
-
-def _mentioned(text: str, names) -> list:
-    """(start, end, expression) for each run of math in `text` that names only the chain's and the
-    solution's names: a name, a sum of them, sin or cos of them."""
-    wanted, found = set(names), []
-    for match in _MATH_RUN.finditer(text):
-        used = {m.group(0) for m in re.finditer(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?", match.group(0))}
-        if not used - {"sin", "cos"} or not used - {"sin", "cos"} <= wanted:
-            continue
-        try:
-            expression = parse_expression(match.group(0))
-        except UserError:
-            continue
-        found.append((match.start(), match.end(), expression.xreplace({s: real_symbol(s.name)
-                                                                         for s in expression.free_symbols})))
-    return found
-
-
-def solution_names(solution) -> list[str]:
-    """The names a solver's sentence may mention: the chain's symbols, the definitions', the target's."""
-    return ([s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
-            + list(TARGET_NAMES))
-
-
-def text_sentence(text: str, names, printer) -> str:
-    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5 = 0: only θ4 + θ6 is determined'."""
-    out = []
-    for part in sentence_parts(text, names):
-        if part[0] == "relation":
-            out.append(printer.doprint(part[1]) + RELATIONS["text"][part[2]] + printer.doprint(part[3]))
-        else:
-            out.append(_math_printed(part[1], part[2], printer))
-    return "".join(out)
-
-
-def _math_printed(text: str, math, printer) -> str:
-    """`text` with each run of math in `math` as the printer writes it: sin(theta_5) -> s5."""
-    out, position = [], 0
-    for start, end, expression in math:
-        out += [text[position:start], printer.doprint(expression)]
-        position = end
-    return "".join(out) + text[position:]
-
-
 def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
     return IKTextPrinter(chain_settings(chain), ascii=ascii)
 
@@ -280,7 +186,7 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
         blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
     for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
         if lines:
-            blocks.append(f"{title}:\n" + "\n".join(render.wrap("  " + text_sentence(line, names, printer), width,
+            blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + text_sentence(line, names, printer), width,
                                                                   "    ") for line in lines))
     legend = render.text_legend(printer, width)
     text = "\n\n".join(blocks + ([legend] if legend else []))
