@@ -39,10 +39,51 @@ class _InverseNotation:
     def _setup(self):
         super()._setup()
         joint_key, factor_key = self.notation.term_key, self.notation.factor_key
+        self._negative: dict = {}  # whether a term prints with a minus: asked again and again while sorting
         # instance attributes: the printers ask the notation for the order of terms and factors
-        self.notation.term_key = lambda term: (not _has_target(term), term.could_extract_minus_sign(),
-                                               joint_key(term))
+        self.notation.term_key = lambda term: (not _has_target(term), self._prints_negative(term), joint_key(term))
         self.notation.factor_key = lambda factor: (not _is_written(factor), factor_key(factor))
+
+    def _signed(self, term) -> tuple[bool, str]:
+        """(is negative, text of its magnitude), the sign decided by how the terms print, not by
+        how SymPy stores them: −(A + B) whose A and B each print with a minus reads A + B, and
+        −(a − b) reads b − a. A minus before a bracket of positive terms stays when the bracket
+        holds no other, −(r13 c1 + r23 s1), and goes to each term when it does, as Craig writes
+        θ23: −(d4 − a2 s3)(px c1 + py s1) − pz(a3 + a2 c3), not −[(d4 − a2 s3)(…) + pz(…)]."""
+        if not term.is_Mul:
+            return super()._signed(term)
+        negative, coefficient, factors = self._sign_parts(term)
+        if coefficient == 1 and len(factors) == 1 and factors[0].is_Add:
+            total = factors[0]
+            if not negative:
+                return False, self._print(total)
+            spread = -total
+            if not self._leads_negative(spread):
+                return False, self._print(spread)
+            if any(f.is_Add for t in total.args for f in sympy.Mul.make_args(t)):
+                return True, self._print(spread)[len(self.minus.strip()):]
+        return negative, self._product(coefficient, factors)
+
+    def _sign_parts(self, term):
+        """(negative, |coefficient|, factors) of a product, each bracket turned to start with a plus."""
+        coefficient, rest = term.as_coeff_Mul()
+        negative, factors = bool(coefficient.is_negative), []
+        for factor in sympy.Mul.make_args(rest):
+            if factor.is_Add and self._leads_negative(factor):
+                factor, negative = -factor, not negative
+            factors.append(factor)
+        return negative, abs(coefficient), factors
+
+    def _leads_negative(self, total) -> bool:
+        """Whether a sum, printed in its order, starts with a minus."""
+        return self._prints_negative(min(total.args, key=self.notation.term_key))
+
+    def _prints_negative(self, term) -> bool:
+        if not term.is_Mul:
+            return term.could_extract_minus_sign()
+        if term not in self._negative:
+            self._negative[term] = self._sign_parts(term)[0]
+        return self._negative[term]
 
     def _print_Written(self, expr):
         """A number as the robot file wrote it (see dhsym.inverse.written): 0.0823."""
