@@ -17,6 +17,8 @@ starts with the target's terms, positive ones first.
 """
 from __future__ import annotations
 
+import re
+
 import sympy
 from sympy.printing.precedence import PRECEDENCE, precedence
 
@@ -25,7 +27,7 @@ from ..inverse.solution import TARGET_NAMES
 from ..inverse.written import Written
 from . import render
 from .ik_sentences import solution_names, text_sentence, wrap_sentence
-from .notation import GREEK_NAMES, display_name
+from .notation import GREEK_NAMES, Abbreviation, display_name
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
 TARGET_LATEX = {name: (f"{name[0]}_{{{name[1:]}}}") for name in TARGET_NAMES}  # r_{11}, p_{x}
@@ -43,6 +45,13 @@ class _InverseNotation:
         # instance attributes: the printers ask the notation for the order of terms and factors
         self.notation.term_key = lambda term: (not _has_target(term), self._prints_negative(term), joint_key(term))
         self.notation.factor_key = lambda factor: (not _is_written(factor), factor_key(factor))
+        angles, joint_abbreviation = self._settings.get("angles", ()), self.notation.abbreviation
+        for angle in angles:
+            self.notation.label[angle] = angle  # for the legend: cφ1 = cos φ1
+        named = {angle: (100 + k,) for k, angle in enumerate(angles)}  # after the joints in the legend
+        self.notation.abbreviation = lambda expr: (
+            (1, NamedAngle(_FUNCTION[type(expr)], ((expr.args[0], 1),), named[expr.args[0]]))
+            if type(expr) in _FUNCTION and expr.args[0] in named else joint_abbreviation(expr))
 
     def _signed(self, term) -> tuple[bool, str]:
         """(is negative, text of its magnitude), the sign decided by how the terms print, not by
@@ -106,6 +115,30 @@ class _InverseNotation:
         return ", ".join(self._print(argument) for argument in expr.args)
 
 
+_FUNCTION = {sympy.cos: "c", sympy.sin: "s"}
+_SUBSCRIPT = re.compile(r"_\{(\w+)\}$")
+
+
+class NamedAngle(Abbreviation):
+    """c or s of an angle the solution names (Craig's planar 3R: φ = θ1 + θ2 + θ3, c_φ, s_φ),
+    labelled with its name as a lettered joint is: cφ1 (LaTeX c_{\\phi 1}, ASCII cphi1).
+
+    >>> phi = sympy.Symbol("phi_1", real=True)
+    >>> [NamedAngle("c", ((phi, 1),)).label(style) for style in ("unicode", "latex", "ascii")]
+    ['cφ1', 'c_{\\\\phi 1}', 'cphi1']
+    """
+
+    @property
+    def wide(self) -> bool:
+        return False  # one name: no commas to explain
+
+    def label(self, style: str) -> str:
+        name = display_name(self.indices[0][0].name, style)
+        if style == "latex":
+            return self.function + "_{" + _SUBSCRIPT.sub(r" \1", name) + "}"  # \phi_{1} -> \phi 1
+        return self.function + name
+
+
 def _is_written(factor) -> bool:
     return isinstance(factor.base if factor.is_Pow else factor, Written)
 
@@ -117,6 +150,7 @@ def _has_target(term) -> bool:
 class IKTextPrinter(_InverseNotation, TextPrinter):
     """Text: atan2(py, px), acos(D), √(1 − D²)."""
 
+    _default_settings = {**TextPrinter._default_settings, "angles": ()}
     _times = " · "
 
     def _print_atan2(self, expr):
@@ -136,6 +170,7 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
 class IKLatexPrinter(_InverseNotation, LatexPrinter):
     r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
 
+    _default_settings = {**LatexPrinter._default_settings, "angles": ()}
     _times = " \\cdot "
 
     def _print_atan2(self, expr):
@@ -184,12 +219,22 @@ def _one_group(text: str) -> bool:
     return depth == 0
 
 
-def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
-    return IKTextPrinter(chain_settings(chain), ascii=ascii)
+def text_printer(chain, ascii: bool = False, angles=()) -> IKTextPrinter:
+    """The text printer of a chain's solution; `angles` (see `named_angles`) print as cφ1, sφ1."""
+    return IKTextPrinter(chain_settings(chain), ascii=ascii, angles=tuple(angles))
 
 
-def latex_printer(chain) -> IKLatexPrinter:
-    return IKLatexPrinter(chain_settings(chain))
+def latex_printer(chain, angles=()) -> IKLatexPrinter:
+    return IKLatexPrinter(chain_settings(chain), angles=tuple(angles))
+
+
+def named_angles(solution) -> tuple:
+    """The angles a solution names and takes the cosine or sine of (φ1 = atan2(r21, r11), then
+    px − l3 cos φ1): a book abbreviates them as it does the joints', c_φ, s_φ."""
+    joints = set(solution.joint_variables)
+    pairs = list(solution.definitions) + [pair for branch in solution.branches for pair in branch.assignments]
+    inside = {trig.args[0] for _, value in pairs for trig in sympy.sympify(value).atoms(sympy.cos, sympy.sin)}
+    return tuple(dict.fromkeys(name for name, _ in pairs if name not in joints and name in inside))
 
 
 def target_title(chain, style: str = "unicode") -> str:
@@ -207,7 +252,7 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
     """The whole solution as text that fits `width`: title, target, method, definitions, each
     branch, when branches exist, the degenerate poses, and the legend of c/s abbreviations."""
     chain = solution.chain
-    printer = text_printer(chain, ascii)
+    printer = text_printer(chain, ascii, named_angles(solution))
     style = "ascii" if ascii else "unicode"
     blocks = [render.wrap(f"{chain.name}: inverse kinematics  ({chain.convention} DH)", width, "  ")]
     target = [[*row] for row in render.ELEMENT_NAMES] + [["0", "0", "0", "1"]]
