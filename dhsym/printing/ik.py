@@ -26,6 +26,7 @@ from ..core.robot import as_robot
 from ..inverse.solution import TARGET_NAMES
 from ..inverse.written import Written
 from . import render
+from .ik_lines import assignments_text
 from .ik_sentences import solution_names, text_sentence, wrap_sentence
 from .notation import GREEK_NAMES, Abbreviation, display_name
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
@@ -52,6 +53,9 @@ class _InverseNotation:
         self.notation.abbreviation = lambda expr: (
             (1, NamedAngle(_FUNCTION[type(expr)], ((expr.args[0], 1),), named[expr.args[0]]))
             if type(expr) in _FUNCTION and expr.args[0] in named else joint_abbreviation(expr))
+
+    def doprint(self, expr):
+        return super().doprint(by_target(expr))
 
     def _signed(self, term) -> tuple[bool, str]:
         """(is negative, text of its magnitude), the sign decided by how the terms print, not by
@@ -137,6 +141,34 @@ class NamedAngle(Abbreviation):
         if style == "latex":
             return self.function + "_{" + _SUBSCRIPT.sub(r" \1", name) + "}"  # \phi_{1} -> \phi 1
         return self.function + name
+
+
+def by_target(expr):
+    """`expr` with each sum linear in the target's elements grouped by them, as Craig prints s6
+    of the PUMA: −r11(c1 c23 s4 − s1 c4) − r21(s1 c23 s4 + c1 c4) + r31 s23 s4. A sum with a
+    product or a power of the target's elements (px², px r13) stays as it is.
+
+    >>> r11, r21, a, b = sympy.symbols("r11 r21 a b", real=True)
+    >>> by_target(r11*a - r11*b + r21*a)
+    a*r21 + r11*(a - b)
+    """
+    if not isinstance(expr, sympy.Basic) or expr.is_Atom:
+        return expr
+    args = tuple(by_target(argument) for argument in expr.args)
+    if args != expr.args:
+        expr = expr.func(*args)
+    if not expr.is_Add:
+        return expr
+    groups: dict = {}
+    for term in expr.args:
+        targets = [f for f in sympy.Mul.make_args(term) if f.is_Symbol and f.name in _TARGET]
+        if len(targets) > 1 or _has_target(term / targets[0] if targets else term):
+            return expr  # not linear in the target
+        groups.setdefault(targets[0] if targets else None, []).append(term / targets[0] if targets else term)
+    if all(len(terms) < 2 for key, terms in groups.items() if key is not None):
+        return expr
+    return sympy.Add(*(sympy.Add(*terms) if key is None else key * sympy.Add(*terms)
+                       for key, terms in groups.items()))
 
 
 def _is_written(factor) -> bool:
@@ -296,61 +328,6 @@ def ascii_text(text: str) -> str:
         else:
             out.append(_ASCII.get(ch) or GREEK_NAMES.get(ch) or "?")
     return "".join(out)
-
-
-def assignments_text(assignments, printer, width: int) -> str:
-    """`  θ1 = …` one to a line, a long one broken before a + or − to fit `width`."""
-    names = [printer.doprint(name) for name, _ in assignments]
-    label = max(map(render.display_width, names))
-    lines = []
-    for name, (_, value) in zip(names, assignments, strict=True):
-        prefix = "  " + name + " " * (label - render.display_width(name)) + " = "
-        lines.append(break_value(prefix, printer.doprint(value), width))
-    return "\n".join(lines)
-
-
-def break_value(prefix: str, text: str, width: int) -> str:
-    """`prefix + text` in lines of at most `width` columns where possible: broken before a + or −,
-    or after the comma between the arguments of atan2, at the outermost bracket level that leaves
-    the rest on one line, else the line at least half full; continuation lines are indented past
-    the prefix.
-
-    >>> print(break_value("θ = ", "atan2(a1 s1 + a2 s12, a1 c1 + a2 c12)", 26))
-    θ = atan2(a1 s1 + a2 s12,
-          a1 c1 + a2 c12)
-    """
-    indent = " " * (render.display_width(prefix) + 2)
-    lines, line, rest = [], prefix, text
-    while render.display_width(line + rest) > width:
-        room = width - render.display_width(line)
-        points = _break_points(rest)
-        fitting = [p for p in points if render.display_width(rest[:p[0]]) <= room and p[0] > 0]
-        if not fitting:
-            if not points:
-                break  # one term wider than the line: nothing left to break
-            fitting = points[:1]
-        last = [p for p in fitting if len(indent) + render.display_width(rest[p[0]:].lstrip()) <= width]
-        half = last or [p for p in fitting if render.display_width(rest[:p[0]]) >= room / 2] or fitting
-        outermost = min(depth for _, depth in half)
-        cut = max(position for position, depth in half if depth == outermost)
-        lines.append(line + rest[:cut].rstrip())
-        line, rest = indent, rest[cut:].lstrip()
-    return "\n".join(lines + [line + rest])
-
-
-def _break_points(text: str) -> list[tuple[int, float]]:
-    """(position, bracket depth) where a line may break: before a binary + or −, after a comma."""
-    found, depth = [], 0
-    for position, ch in enumerate(text):
-        if ch in "([{":
-            depth += 1
-        elif ch in ")]}":
-            depth -= 1
-        elif ch == " " and text[position + 1:position + 3] in ("+ ", "− ", "- "):
-            found.append((position, depth))
-        elif ch == "," and text[position + 1:position + 2] == " ":
-            found.append((position + 1, depth - 0.5))  # between arguments: before a sign inside one
-    return found
 
 
 def json_solution(solution) -> dict:
