@@ -103,7 +103,7 @@ def value_rows(label: str, value, printer, page: Page) -> list[tuple[str, float]
     >>> value = sympy.atan2(sum(sympy.symbols("x_1:12")), sum(sympy.symbols("y_1:12")))
     >>> rows = value_rows("\\theta_{1}", value, latex_printer(dhsym.load("planar2r")), PAGES["article"])
     >>> [row[-12:] for row, _ in rows]
-    ['} + x_{9},', '} + y_{9})']
+    ['{8} + x_{9},', '{8} + y_{9})']
     """
     rows = element_rows(label, printer.doprint(value), page)
     if len(rows) == 1 or not isinstance(value, sympy.atan2):
