@@ -49,6 +49,7 @@ def test_every_line_fits_the_width(name, width):
 def test_no_relation_is_cut_between_lines(name):
     lines = _solved(name).text(60).splitlines()
     assert not [line for line in lines if re.search(r" [=≥≤≠]$", line) or re.match(r"\s*[=≥≤≠] ", line)]
+    assert not [line for line in lines if line.endswith(("(modified", "(standard"))]  # the title's convention
 
 
 def test_planar3r_theta1_is_the_textbook_form():
@@ -65,6 +66,7 @@ def test_a_named_angle_prints_as_c_and_s_of_its_name_and_the_legend_says_so():
     latex = snippet(result.solution)
     assert "c_{\\phi 1} &= \\cos{\\phi_{1}}" in latex and "\\cos{\\phi_{1}})" not in latex
     assert "cos(phi_1)" in json.dumps(result.json())  # the JSON keeps the full form
+    assert "c(phi1) = cos phi1" in result.text(ascii=True)  # ASCII labels a lettered angle as a joint's: c(phi2)
 
 
 def test_puma_reads_as_craig_prints_theta23_and_theta6():

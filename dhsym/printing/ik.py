@@ -125,11 +125,11 @@ _SUBSCRIPT = re.compile(r"_\{(\w+)\}$")
 
 class NamedAngle(Abbreviation):
     """c or s of an angle the solution names (Craig's planar 3R: φ = θ1 + θ2 + θ3, c_φ, s_φ),
-    labelled with its name as a lettered joint is: cφ1 (LaTeX c_{\\phi 1}, ASCII cphi1).
+    labelled with its name as a lettered joint is: cφ1 (LaTeX c_{\\phi 1}, ASCII c(phi1)).
 
     >>> phi = sympy.Symbol("phi_1", real=True)
     >>> [NamedAngle("c", ((phi, 1),)).label(style) for style in ("unicode", "latex", "ascii")]
-    ['cφ1', 'c_{\\\\phi 1}', 'cphi1']
+    ['cφ1', 'c_{\\\\phi 1}', 'c(phi1)']
     """
 
     @property
@@ -140,7 +140,7 @@ class NamedAngle(Abbreviation):
         name = display_name(self.indices[0][0].name, style)
         if style == "latex":
             return self.function + "_{" + _SUBSCRIPT.sub(r" \1", name) + "}"  # \phi_{1} -> \phi 1
-        return self.function + name
+        return self.function + (f"({name})" if style == "ascii" else name)  # c(phi1), as a lettered joint
 
 
 def by_target(expr):
@@ -286,7 +286,8 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
     chain = solution.chain
     printer = text_printer(chain, ascii, named_angles(solution))
     style = "ascii" if ascii else "unicode"
-    blocks = [render.wrap(f"{chain.name}: inverse kinematics  ({chain.convention} DH)", width, "  ")]
+    title = f"{chain.name}: inverse kinematics  ({chain.convention}\u00a0DH)"  # "(modified DH)" kept whole
+    blocks = [render.wrap(title, width, "  ").replace("\u00a0", " ")]
     target = [[*row] for row in render.ELEMENT_NAMES] + [["0", "0", "0", "1"]]
     blocks.append(render.wrap(f"Target {target_title(chain, style)}, the pose to reach (what `dhsym fk` prints):",
                               width, "  ") + "\n" + render.aligned_matrix(target, ascii))
