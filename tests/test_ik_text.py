@@ -117,3 +117,9 @@ def test_every_builtin_latex_with_ik_compiles_and_fits(name, tmp_path):
     status, out, err = run_dhsym("ik", name, "--format", "latex", *(["--free", *FREE[name]] if name in FREE else []))
     assert status == 0, err
     assert _pdflatex(tmp_path, f"{name}_snippet", HOST.format(out)) == (0, [])
+
+
+def test_the_wrist_centre_comes_first_in_a_sum_as_the_target_does():
+    words = " ".join(_solved("inline6").text().split())
+    assert "D = (xc² + yc² + zc² − 2 d1 zc + d1² − a2² − d4²)/(2 a2 d4)" in words  # Spong's form, expanded
+    assert "a2 c3(zc − d1)" in words and "d1 − zc" not in words

@@ -22,7 +22,7 @@ import re
 
 import sympy
 
-from ..printing.ik import latex_name, latex_printer, named_angles, target_title, variable_list
+from ..printing.ik import latex_name, latex_printer, named_angles, target_points, target_title, variable_list
 from ..printing.ik_sentences import relation, sentence_parts, solution_names
 from .display import Latex
 from .layout import (
@@ -58,7 +58,7 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
     the intermediate quantities; one section per branch; existence and degenerate poses; the legend.
     `headings` (default: where pages have no frame titles) starts each section with its title."""
     chain = solution.chain
-    printer = latex_printer(chain, named_angles(solution))
+    printer = latex_printer(chain, named_angles(solution), target_points(solution))
     names = [[element_name(r, c) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
     unknowns = [v for v in solution.joint_variables if v not in solution.free]
     problem = [paragraph(f"Given the pose of the last frame, find ${variable_list(unknowns, printer)}$. "

@@ -44,7 +44,9 @@ class _InverseNotation:
         joint_key, factor_key = self.notation.term_key, self.notation.factor_key
         self._negative: dict = {}  # whether a term prints with a minus: asked again and again while sorting
         # instance attributes: the printers ask the notation for the order of terms and factors
-        self.notation.term_key = lambda term: (not _has_target(term), self._prints_negative(term), joint_key(term))
+        first = _TARGET | {point.name for point in self._settings.get("points", ())}  # px, and xc = px − d6 r13
+        self.notation.term_key = lambda term: (not any(s.name in first for s in term.free_symbols),
+                                               self._prints_negative(term), joint_key(term))
         self.notation.factor_key = lambda factor: (not _is_written(factor), factor_key(factor))
         angles, joint_abbreviation = self._settings.get("angles", ()), self.notation.abbreviation
         for angle in angles:
@@ -182,7 +184,7 @@ def _has_target(term) -> bool:
 class IKTextPrinter(_InverseNotation, TextPrinter):
     """Text: atan2(py, px), acos(D), √(1 − D²)."""
 
-    _default_settings = {**TextPrinter._default_settings, "angles": ()}
+    _default_settings = {**TextPrinter._default_settings, "angles": (), "points": ()}
     _times = " · "
 
     def _print_atan2(self, expr):
@@ -202,7 +204,7 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
 class IKLatexPrinter(_InverseNotation, LatexPrinter):
     r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
 
-    _default_settings = {**LatexPrinter._default_settings, "angles": ()}
+    _default_settings = {**LatexPrinter._default_settings, "angles": (), "points": ()}
     _times = " \\cdot "
 
     def _print_atan2(self, expr):
@@ -251,13 +253,24 @@ def _one_group(text: str) -> bool:
     return depth == 0
 
 
-def text_printer(chain, ascii: bool = False, angles=()) -> IKTextPrinter:
-    """The text printer of a chain's solution; `angles` (see `named_angles`) print as cφ1, sφ1."""
-    return IKTextPrinter(chain_settings(chain), ascii=ascii, angles=tuple(angles))
+def text_printer(chain, ascii: bool = False, angles=(), points=()) -> IKTextPrinter:
+    """The text printer of a chain's solution; `angles` (see `named_angles`) print as cφ1, sφ1,
+    and `points` (see `target_points`) come first in a sum, as the target's elements do."""
+    return IKTextPrinter(chain_settings(chain), ascii=ascii, angles=tuple(angles), points=tuple(points))
 
 
-def latex_printer(chain, angles=()) -> IKLatexPrinter:
-    return IKLatexPrinter(chain_settings(chain), angles=tuple(angles))
+def latex_printer(chain, angles=(), points=()) -> IKLatexPrinter:
+    return IKLatexPrinter(chain_settings(chain), angles=tuple(angles), points=tuple(points))
+
+
+def target_points(solution) -> tuple:
+    """The names a solution gives to quantities linear in the target (the wrist centre,
+    xc = px − d6 r13): a book writes them first, as the target's elements, zc − d1 rather than d1 − zc."""
+    def linear(value) -> bool:
+        targets = [s for s in sympy.sympify(value).free_symbols if s.name in _TARGET]
+        form = sympy.Poly(value, *targets) if targets and value.is_polynomial(*targets) else None
+        return form is not None and form.total_degree() == 1
+    return tuple(name for name, value in solution.definitions if linear(value))
 
 
 def named_angles(solution) -> tuple:
@@ -284,7 +297,7 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
     """The whole solution as text that fits `width`: title, target, method, definitions, each
     branch, when branches exist, the degenerate poses, and the legend of c/s abbreviations."""
     chain = solution.chain
-    printer = text_printer(chain, ascii, named_angles(solution))
+    printer = text_printer(chain, ascii, named_angles(solution), target_points(solution))
     style = "ascii" if ascii else "unicode"
     title = f"{chain.name}: inverse kinematics  ({chain.convention}\u00a0DH)"  # "(modified DH)" kept whole
     blocks = [render.wrap(title, width, "  ").replace("\u00a0", " ")]
