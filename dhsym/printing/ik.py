@@ -43,6 +43,7 @@ class _InverseNotation:
         super()._setup()
         joint_key, factor_key = self.notation.term_key, self.notation.factor_key
         self._negative: dict = {}  # whether a term prints with a minus: asked again and again while sorting
+        self._printed: dict = {}
         # instance attributes: the printers ask the notation for the order of terms and factors
         first = _TARGET | {point.name for point in self._settings.get("points", ())}  # px, and xc = px − d6 r13
         self.notation.term_key = lambda term: (not any(s.name in first for s in term.free_symbols),
@@ -57,7 +58,9 @@ class _InverseNotation:
             if type(expr) in _FUNCTION and expr.args[0] in named else joint_abbreviation(expr))
 
     def doprint(self, expr):
-        return super().doprint(by_target(expr))
+        if expr not in self._printed:  # the branches share most of their assignments
+            self._printed[expr] = super().doprint(by_target(expr))
+        return self._printed[expr]
 
     def _signed(self, term) -> tuple[bool, str]:
         """(is negative, text of its magnitude), the sign decided by how the terms print, not by
