@@ -23,7 +23,7 @@ SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_fuzz.py", "te
               "test_urdf_real.py", "test_inverse_random.py", "test_simplify_equals_raw.py",
               # real robots solved in closed form (the fast lane keeps test_ik_cli's hand-written solutions,
               # the subproblems and dhsym.inverse's doctests)
-              "test_inverse_robots.py", "test_ik_solved.py")
+              "test_inverse_robots.py", "test_ik_solved.py", "test_ik_text.py")
 SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_through_subprocess",
               "test_commands_without_pictures_import_no_numpy", "test_transform_times_its_inverse_is_identity",
               "test_every_frame_matches_the_raw_product_numerically",

@@ -22,15 +22,8 @@ import re
 
 import sympy
 
-from ..printing.ik import (
-    RELATIONS,
-    latex_name,
-    latex_printer,
-    sentence_parts,
-    solution_names,
-    target_title,
-    variable_list,
-)
+from ..printing.ik import latex_name, latex_printer, named_angles, target_points, target_title, variable_list
+from ..printing.ik_sentences import relation, sentence_parts, solution_names
 from .display import Latex
 from .layout import (
     ALIGNED_EXTRA,
@@ -65,7 +58,7 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
     the intermediate quantities; one section per branch; existence and degenerate poses; the legend.
     `headings` (default: where pages have no frame titles) starts each section with its title."""
     chain = solution.chain
-    printer = latex_printer(chain)
+    printer = latex_printer(chain, named_angles(solution), target_points(solution))
     names = [[element_name(r, c) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
     unknowns = [v for v in solution.joint_variables if v not in solution.free]
     problem = [paragraph(f"Given the pose of the last frame, find ${variable_list(unknowns, printer)}$. "
@@ -81,11 +74,11 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
     if solution.steps:
         out.append(Section(PART, "Derivation", _step_items(solution.steps, printer, page)))
     if solution.definitions:
-        rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in solution.definitions]
+        rows = [value_rows(latex_name(name), value, printer, page) for name, value in solution.definitions]
         out.append(Section(PART, "Intermediate quantities",
                            [paragraph("Used by every branch:", page), Rows([rows])]))
     for number, branch in enumerate(solution.branches, 1):
-        rows = [element_rows(latex_name(name), printer.doprint(value), page) for name, value in branch.assignments]
+        rows = [value_rows(latex_name(name), value, printer, page) for name, value in branch.assignments]
         out.append(Section(PART, f"Branch {number}: {branch_title(branch.name)}", [Rows([rows])]))
     names = solution_names(solution)
     remarks = [paragraph(f"Condition: {latex_sentence(text, names, printer)}.", page)
@@ -99,6 +92,29 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
         for section in out:
             section.items.insert(0, _heading(section.title, page))
     return out
+
+
+def value_rows(label: str, value, printer, page: Page) -> list[tuple[str, float]]:
+    r"""`label &= value` as lines of an aligned block; an atan2 too wide for one line breaks
+    between its arguments (each broken further if it must), not inside a bracket of the second.
+
+    >>> import dhsym
+    >>> from dhsym.printing.ik import latex_printer
+    >>> value = sympy.atan2(sum(sympy.symbols("x_1:12")), sum(sympy.symbols("y_1:12")))
+    >>> rows = value_rows("\\theta_{1}", value, latex_printer(dhsym.load("planar2r")), PAGES["article"])
+    >>> [row[-12:] for row, _ in rows]
+    ['{8} + x_{9},', '{8} + y_{9})']
+    """
+    rows = element_rows(label, printer.doprint(value), page)
+    if len(rows) == 1 or not isinstance(value, sympy.atan2):
+        return rows
+    y, x = (printer.doprint(argument) for argument in value.args)
+    split = element_rows(label, f"\\mathrm{{atan2}}({y},", page)
+    width = page.width - math_width(label + " =") - ALIGNED_EXTRA - 1.0
+    lines = break_lines(f"{x})", width, width, display=True)
+    split += [(row, row_height([row], array=False))
+              for row in [f"&\\quad {lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]]
+    return split if len(split) <= len(rows) else rows
 
 
 def branch_title(name: str) -> str:
@@ -148,14 +164,14 @@ def latex_sentence(text: str, names, printer) -> str:
     out = []
     for part in sentence_parts(text, names):
         if part[0] == "relation":
-            out.append(f"${printer.doprint(part[1])}{RELATIONS['latex'][part[2]]}{printer.doprint(part[3])}$")
+            out.append(f"${relation(part, printer, 'latex')}$")
             continue
         position = 0
         for start, end, expression in part[2]:
             out += [prose(part[1][position:start]), f"${printer.doprint(expression)}$"]
             position = end
         out.append(prose(part[1][position:]))
-    return "".join(out)
+    return "".join(out).replace("$ = $", " = ")  # r_{32} = -1 as one formula
 
 
 def prose(text: str) -> str:

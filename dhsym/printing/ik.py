@@ -23,12 +23,12 @@ import sympy
 from sympy.printing.precedence import PRECEDENCE, precedence
 
 from ..core.robot import as_robot
-from ..errors import UserError
 from ..inverse.solution import TARGET_NAMES
 from ..inverse.written import Written
-from ..io.expr import parse_expression, real_symbol
 from . import render
-from .notation import GREEK_NAMES, display_name
+from .ik_lines import assignments_text
+from .ik_sentences import solution_names, text_sentence, wrap_sentence
+from .notation import GREEK_NAMES, Abbreviation, display_name
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
 TARGET_LATEX = {name: (f"{name[0]}_{{{name[1:]}}}") for name in TARGET_NAMES}  # r_{11}, p_{x}
@@ -42,10 +42,66 @@ class _InverseNotation:
     def _setup(self):
         super()._setup()
         joint_key, factor_key = self.notation.term_key, self.notation.factor_key
+        self._negative: dict = {}  # whether a term prints with a minus: asked again and again while sorting
+        self._printed: dict = {}
         # instance attributes: the printers ask the notation for the order of terms and factors
-        self.notation.term_key = lambda term: (not _has_target(term), term.could_extract_minus_sign(),
-                                               joint_key(term))
+        first = _TARGET | {point.name for point in self._settings.get("points", ())}  # px, and xc = px − d6 r13
+        self.notation.term_key = lambda term: (not any(s.name in first for s in term.free_symbols),
+                                               self._prints_negative(term), joint_key(term))
         self.notation.factor_key = lambda factor: (not _is_written(factor), factor_key(factor))
+        angles, joint_abbreviation = self._settings.get("angles", ()), self.notation.abbreviation
+        for angle in angles:
+            self.notation.label[angle] = angle  # for the legend: cφ1 = cos φ1
+        named = {angle: (100 + k,) for k, angle in enumerate(angles)}  # after the joints in the legend
+        self.notation.abbreviation = lambda expr: (
+            (1, NamedAngle(_FUNCTION[type(expr)], ((expr.args[0], 1),), named[expr.args[0]]))
+            if type(expr) in _FUNCTION and expr.args[0] in named else joint_abbreviation(expr))
+
+    def doprint(self, expr):
+        if expr not in self._printed:  # the branches share most of their assignments
+            self._printed[expr] = super().doprint(by_target(expr))
+        return self._printed[expr]
+
+    def _signed(self, term) -> tuple[bool, str]:
+        """(is negative, text of its magnitude), the sign decided by how the terms print, not by
+        how SymPy stores them: −(A + B) whose A and B each print with a minus reads A + B, and
+        −(a − b) reads b − a. A minus before a bracket of positive terms stays when the bracket
+        holds no other, −(r13 c1 + r23 s1), and goes to each term when it does, as Craig writes
+        θ23: −(d4 − a2 s3)(px c1 + py s1) − pz(a3 + a2 c3), not −[(d4 − a2 s3)(…) + pz(…)]."""
+        if not term.is_Mul:
+            return super()._signed(term)
+        negative, coefficient, factors = self._sign_parts(term)
+        if coefficient == 1 and len(factors) == 1 and factors[0].is_Add:
+            total = factors[0]
+            if not negative:
+                return False, self._print(total)
+            spread = -total
+            if not self._leads_negative(spread):
+                return False, self._print(spread)
+            if any(f.is_Add for t in total.args for f in sympy.Mul.make_args(t)):
+                return True, self._print(spread)[len(self.minus.strip()):]
+        return negative, self._product(coefficient, factors)
+
+    def _sign_parts(self, term):
+        """(negative, |coefficient|, factors) of a product, each bracket turned to start with a plus."""
+        coefficient, rest = term.as_coeff_Mul()
+        negative, factors = bool(coefficient.is_negative), []
+        for factor in sympy.Mul.make_args(rest):
+            if factor.is_Add and self._leads_negative(factor):
+                factor, negative = -factor, not negative
+            factors.append(factor)
+        return negative, abs(coefficient), factors
+
+    def _leads_negative(self, total) -> bool:
+        """Whether a sum, printed in its order, starts with a minus."""
+        return self._prints_negative(min(total.args, key=self.notation.term_key))
+
+    def _prints_negative(self, term) -> bool:
+        if not term.is_Mul:
+            return term.could_extract_minus_sign()
+        if term not in self._negative:
+            self._negative[term] = self._sign_parts(term)[0]
+        return self._negative[term]
 
     def _print_Written(self, expr):
         """A number as the robot file wrote it (see dhsym.inverse.written): 0.0823."""
@@ -68,6 +124,58 @@ class _InverseNotation:
         return ", ".join(self._print(argument) for argument in expr.args)
 
 
+_FUNCTION = {sympy.cos: "c", sympy.sin: "s"}
+_SUBSCRIPT = re.compile(r"_\{(\w+)\}$")
+
+
+class NamedAngle(Abbreviation):
+    """c or s of an angle the solution names (Craig's planar 3R: φ = θ1 + θ2 + θ3, c_φ, s_φ),
+    labelled with its name as a lettered joint is: cφ1 (LaTeX c_{\\phi 1}, ASCII c(phi1)).
+
+    >>> phi = sympy.Symbol("phi_1", real=True)
+    >>> [NamedAngle("c", ((phi, 1),)).label(style) for style in ("unicode", "latex", "ascii")]
+    ['cφ1', 'c_{\\\\phi 1}', 'c(phi1)']
+    """
+
+    @property
+    def wide(self) -> bool:
+        return False  # one name: no commas to explain
+
+    def label(self, style: str) -> str:
+        name = display_name(self.indices[0][0].name, style)
+        if style == "latex":
+            return self.function + "_{" + _SUBSCRIPT.sub(r" \1", name) + "}"  # \phi_{1} -> \phi 1
+        return self.function + (f"({name})" if style == "ascii" else name)  # c(phi1), as a lettered joint
+
+
+def by_target(expr):
+    """`expr` with each sum linear in the target's elements grouped by them, as Craig prints s6
+    of the PUMA: −r11(c1 c23 s4 − s1 c4) − r21(s1 c23 s4 + c1 c4) + r31 s23 s4. A sum with a
+    product or a power of the target's elements (px², px r13) stays as it is.
+
+    >>> r11, r21, a, b = sympy.symbols("r11 r21 a b", real=True)
+    >>> by_target(r11*a - r11*b + r21*a)
+    a*r21 + r11*(a - b)
+    """
+    if not isinstance(expr, sympy.Basic) or expr.is_Atom:
+        return expr
+    args = tuple(by_target(argument) for argument in expr.args)
+    if args != expr.args:
+        expr = expr.func(*args)
+    if not expr.is_Add:
+        return expr
+    groups: dict = {}
+    for term in expr.args:
+        targets = [f for f in sympy.Mul.make_args(term) if f.is_Symbol and f.name in _TARGET]
+        if len(targets) > 1 or _has_target(term / targets[0] if targets else term):
+            return expr  # not linear in the target
+        groups.setdefault(targets[0] if targets else None, []).append(term / targets[0] if targets else term)
+    if all(len(terms) < 2 for key, terms in groups.items() if key is not None):
+        return expr
+    return sympy.Add(*(sympy.Add(*terms) if key is None else key * sympy.Add(*terms)
+                       for key, terms in groups.items()))
+
+
 def _is_written(factor) -> bool:
     return isinstance(factor.base if factor.is_Pow else factor, Written)
 
@@ -79,6 +187,7 @@ def _has_target(term) -> bool:
 class IKTextPrinter(_InverseNotation, TextPrinter):
     """Text: atan2(py, px), acos(D), √(1 − D²)."""
 
+    _default_settings = {**TextPrinter._default_settings, "angles": (), "points": ()}
     _times = " · "
 
     def _print_atan2(self, expr):
@@ -98,6 +207,7 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
 class IKLatexPrinter(_InverseNotation, LatexPrinter):
     r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
 
+    _default_settings = {**LatexPrinter._default_settings, "angles": (), "points": ()}
     _times = " \\cdot "
 
     def _print_atan2(self, expr):
@@ -146,103 +256,33 @@ def _one_group(text: str) -> bool:
     return depth == 0
 
 
-_RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
-_TERM = r"(?:(?:sin|cos)\([^()]*\)|[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(]))"
-_MATH_RUN = re.compile(rf"(?<![\w.]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5)
-RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
-             "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
+def text_printer(chain, ascii: bool = False, angles=(), points=()) -> IKTextPrinter:
+    """The text printer of a chain's solution; `angles` (see `named_angles`) print as cφ1, sφ1,
+    and `points` (see `target_points`) come first in a sum, as the target's elements do."""
+    return IKTextPrinter(chain_settings(chain), ascii=ascii, angles=tuple(angles), points=tuple(points))
 
 
-def sentence_parts(text: str, names) -> list:
-    """A solver's sentence ("1 - D**2 >= 0 (else …)", "a_3 = 0 and d_4 = 0: theta_3 is not
-    determined") as parts to print: ("relation", lhs, operator, rhs) for each relation it starts
-    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, math) for
-    the rest, where `math` lists (start, end, expression) for the names, sums of names and sines
-    and cosines of them that the words mention (theta_2 + theta_3, sin(theta_5)), each printed
-    as math. A sentence that starts with no relation stays words.
-
-    >>> sentence_parts("1 - D**2 >= 0 (else no branch)", ["D"])[0]
-    ('relation', 1 - D**2, '>=', 0)
-    >>> sentence_parts("only theta_4 + theta_6 is determined; the factor sin(theta_5)", ["theta_4", "theta_5",
-    ...                "theta_6"])[0][2]
-    [(5, 22, theta_4 + theta_6), (49, 61, sin(theta_5))]
-    """
-    cuts = [len(text)] + [m.start() for m in re.finditer(r": | \(", text)]
-    for cut in sorted(set(cuts)):
-        relations = _relations(text[:cut])
-        if relations:
-            rest = text[cut:]
-            return relations + ([("words", rest, _mentioned(rest, names))] if rest else [])
-    return [("words", text, _mentioned(text, names))]
+def latex_printer(chain, angles=(), points=()) -> IKLatexPrinter:
+    return IKLatexPrinter(chain_settings(chain), angles=tuple(angles), points=tuple(points))
 
 
-def _relations(math: str) -> list:
-    """[("relation", lhs, operator, rhs), ("words", " and ", []), …] for `math`, or [] if it is not
-    a conjunction of relations the safe parser reads."""
-    parts = []
-    for clause in math.split(" and "):
-        match = _RELATION.match(clause.strip())
-        try:
-            sides = [parse_expression(match.group(1)), parse_expression(match.group(3))] if match else None
-        except UserError:
-            sides = None
-        if sides is None:
-            return []
-        if parts:
-            parts.append(("words", " and ", []))
-        parts.append(("relation", sides[0], match.group(2), sides[1]))
-    return parts
+def target_points(solution) -> tuple:
+    """The names a solution gives to quantities linear in the target (the wrist centre,
+    xc = px − d6 r13): a book writes them first, as the target's elements, zc − d1 rather than d1 − zc."""
+    def linear(value) -> bool:
+        targets = [s for s in sympy.sympify(value).free_symbols if s.name in _TARGET]
+        form = sympy.Poly(value, *targets) if targets and value.is_polynomial(*targets) else None
+        return form is not None and form.total_degree() == 1
+    return tuple(name for name, value in solution.definitions if linear(value))
 
 
-def _mentioned(text: str, names) -> list:
-    """(start, end, expression) for each run of math in `text` that names only the chain's and the
-    solution's names: a name, a sum of them, sin or cos of them."""
-    wanted, found = set(names), []
-    for match in _MATH_RUN.finditer(text):
-        used = {m.group(0) for m in re.finditer(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?", match.group(0))}
-        if not used - {"sin", "cos"} or not used - {"sin", "cos"} <= wanted:
-            continue
-        try:
-            expression = parse_expression(match.group(0))
-        except UserError:
-            continue
-        found.append((match.start(), match.end(), expression.xreplace({s: real_symbol(s.name)
-                                                                         for s in expression.free_symbols})))
-    return found
-
-
-def solution_names(solution) -> list[str]:
-    """The names a solver's sentence may mention: the chain's symbols, the definitions', the target's."""
-    return ([s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
-            + list(TARGET_NAMES))
-
-
-def text_sentence(text: str, names, printer) -> str:
-    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5 = 0: only θ4 + θ6 is determined'."""
-    out = []
-    for part in sentence_parts(text, names):
-        if part[0] == "relation":
-            out.append(printer.doprint(part[1]) + RELATIONS["text"][part[2]] + printer.doprint(part[3]))
-        else:
-            out.append(_math_printed(part[1], part[2], printer))
-    return "".join(out)
-
-
-def _math_printed(text: str, math, printer) -> str:
-    """`text` with each run of math in `math` as the printer writes it: sin(theta_5) -> s5."""
-    out, position = [], 0
-    for start, end, expression in math:
-        out += [text[position:start], printer.doprint(expression)]
-        position = end
-    return "".join(out) + text[position:]
-
-
-def text_printer(chain, ascii: bool = False) -> IKTextPrinter:
-    return IKTextPrinter(chain_settings(chain), ascii=ascii)
-
-
-def latex_printer(chain) -> IKLatexPrinter:
-    return IKLatexPrinter(chain_settings(chain))
+def named_angles(solution) -> tuple:
+    """The angles a solution names and takes the cosine or sine of (φ1 = atan2(r21, r11), then
+    px − l3 cos φ1): a book abbreviates them as it does the joints', c_φ, s_φ."""
+    joints = set(solution.joint_variables)
+    pairs = list(solution.definitions) + [pair for branch in solution.branches for pair in branch.assignments]
+    inside = {trig.args[0] for _, value in pairs for trig in sympy.sympify(value).atoms(sympy.cos, sympy.sin)}
+    return tuple(dict.fromkeys(name for name, _ in pairs if name not in joints and name in inside))
 
 
 def target_title(chain, style: str = "unicode") -> str:
@@ -260,9 +300,10 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
     """The whole solution as text that fits `width`: title, target, method, definitions, each
     branch, when branches exist, the degenerate poses, and the legend of c/s abbreviations."""
     chain = solution.chain
-    printer = text_printer(chain, ascii)
+    printer = text_printer(chain, ascii, named_angles(solution), target_points(solution))
     style = "ascii" if ascii else "unicode"
-    blocks = [render.wrap(f"{chain.name}: inverse kinematics  ({chain.convention} DH)", width, "  ")]
+    title = f"{chain.name}: inverse kinematics  ({chain.convention}\u00a0DH)"  # "(modified DH)" kept whole
+    blocks = [render.wrap(title, width, "  ").replace("\u00a0", " ")]
     target = [[*row] for row in render.ELEMENT_NAMES] + [["0", "0", "0", "1"]]
     blocks.append(render.wrap(f"Target {target_title(chain, style)}, the pose to reach (what `dhsym fk` prints):",
                               width, "  ") + "\n" + render.aligned_matrix(target, ascii))
@@ -280,7 +321,7 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
         blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
     for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
         if lines:
-            blocks.append(f"{title}:\n" + "\n".join(render.wrap("  " + text_sentence(line, names, printer), width,
+            blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + text_sentence(line, names, printer), width,
                                                                   "    ") for line in lines))
     legend = render.text_legend(printer, width)
     text = "\n\n".join(blocks + ([legend] if legend else []))
@@ -304,61 +345,6 @@ def ascii_text(text: str) -> str:
         else:
             out.append(_ASCII.get(ch) or GREEK_NAMES.get(ch) or "?")
     return "".join(out)
-
-
-def assignments_text(assignments, printer, width: int) -> str:
-    """`  θ1 = …` one to a line, a long one broken before a + or − to fit `width`."""
-    names = [printer.doprint(name) for name, _ in assignments]
-    label = max(map(render.display_width, names))
-    lines = []
-    for name, (_, value) in zip(names, assignments, strict=True):
-        prefix = "  " + name + " " * (label - render.display_width(name)) + " = "
-        lines.append(break_value(prefix, printer.doprint(value), width))
-    return "\n".join(lines)
-
-
-def break_value(prefix: str, text: str, width: int) -> str:
-    """`prefix + text` in lines of at most `width` columns where possible: broken before a + or −,
-    or after the comma between the arguments of atan2, at the outermost bracket level that leaves
-    the rest on one line, else the line at least half full; continuation lines are indented past
-    the prefix.
-
-    >>> print(break_value("θ = ", "atan2(a1 s1 + a2 s12, a1 c1 + a2 c12)", 26))
-    θ = atan2(a1 s1 + a2 s12,
-          a1 c1 + a2 c12)
-    """
-    indent = " " * (render.display_width(prefix) + 2)
-    lines, line, rest = [], prefix, text
-    while render.display_width(line + rest) > width:
-        room = width - render.display_width(line)
-        points = _break_points(rest)
-        fitting = [p for p in points if render.display_width(rest[:p[0]]) <= room and p[0] > 0]
-        if not fitting:
-            if not points:
-                break  # one term wider than the line: nothing left to break
-            fitting = points[:1]
-        last = [p for p in fitting if len(indent) + render.display_width(rest[p[0]:].lstrip()) <= width]
-        half = last or [p for p in fitting if render.display_width(rest[:p[0]]) >= room / 2] or fitting
-        outermost = min(depth for _, depth in half)
-        cut = max(position for position, depth in half if depth == outermost)
-        lines.append(line + rest[:cut].rstrip())
-        line, rest = indent, rest[cut:].lstrip()
-    return "\n".join(lines + [line + rest])
-
-
-def _break_points(text: str) -> list[tuple[int, float]]:
-    """(position, bracket depth) where a line may break: before a binary + or −, after a comma."""
-    found, depth = [], 0
-    for position, ch in enumerate(text):
-        if ch in "([{":
-            depth += 1
-        elif ch in ")]}":
-            depth -= 1
-        elif ch == " " and text[position + 1:position + 3] in ("+ ", "− ", "- "):
-            found.append((position, depth))
-        elif ch == "," and text[position + 1:position + 2] == " ":
-            found.append((position + 1, depth - 0.5))  # between arguments: before a sign inside one
-    return found
 
 
 def json_solution(solution) -> dict:
