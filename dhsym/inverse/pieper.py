@@ -11,13 +11,12 @@ solved by radicals (dhsym.inverse.quartic). θ2 follows from the pair, θ1 from 
 The frames are the chain's own in either convention: the arm's transform is written as
 F·Rz(θ1)·C1·Rz(θ2)·C2·Rz(θ3)·C3 with the constant matrices read off the chain at θ = 0.
 
->>> import dhsym
->>> arm = dhsym.load("puma560")
->>> derivation = pieper(arm, arm.chain.fk()[:3, 3].xreplace({}), *_centre(arm), arm.joint_variables[:3])
-Traceback (most recent call last):
-...
-dhsym.errors.UserError: Pieper's method: the arm's equations are not of the general kind (axes 1 and 2 \
-meet or are parallel), and the sub-problems did not solve them
+The half-angle step: cos θ = 0 times (1 + u²)² is 1 − u⁴, the quartic −u⁴ + 1 (its roots u = ±1 are
+θ = ±π/2; the other two are not real):
+
+>>> c, s = sympy.symbols("c s")
+>>> _half_angle(c, c, s, ())
+[-1, 0, 0, 0, 1]
 """
 from __future__ import annotations
 
@@ -79,6 +78,7 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
                         "pose): not handled")
     definitions, root = ferrari(coefficients, names[8:])
     scale = sympy.sign(det) if det.is_number else det  # det² > 0: the pair's atan2 keeps its quadrant
+    norm = scale * det  # (k1, k2) = norm · Rz(θ2)(f1, f2)
     turned = _turned(sympy.Matrix([f1, f2, h[2]]), c2, s2)
     g = rotation * turned + offset
     derivation.assignments += [(r_c, sum(x ** 2 for x in q)), *definitions, (u, root),
@@ -100,22 +100,20 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
         Step(a4 * u ** 4 + a3 * u ** 3 + a2 * u ** 2 + a1 * u + a0, sympy.Integer(0),
              "a quartic in u = tan(θ3/2), by Ferrari's method", (t3,),
              "θ2 eliminated from the two equations by c2² + s2² = 1"),
-        Step(k1 * c2 + k2 * s2, f1, "atan2 of a pair", (t2,), "the two equations, linear in c2 and s2"),
+        Step(f1 * c2 - f2 * s2, k1 / norm, "atan2 of a pair", (t2,),
+             "the two equations solved for the vector (f1, f2) turned by θ2 (equation 1 of 2)"),
+        Step(f1 * s2 + f2 * c2, k2 / norm, "atan2 of a pair", (t2,), "the same (equation 2 of 2)"),
+        Step(g1 * sympy.cos(t1) - g2 * sympy.sin(t1), q[0], "atan2 of a pair", (t1,),
+             "the x of the wrist centre in axis 1's frame (equation 1 of 2)"),
         Step(g1 * sympy.sin(t1) + g2 * sympy.cos(t1), q[1], "atan2 of a pair", (t1,),
-             "the x and y of the wrist centre in axis 1's frame"),
+             "its y (equation 2 of 2)"),
     ]
     derivation.conditions.append(f"{t3} root k exists where the root {u} of the quartic is real: 4, 2 or none of "
                                  "the four roots are, and a root that is not real is a branch that does not exist")
-    derivation.degenerate += [f"{f1}² + {f2}² = 0: {t2} is not determined (the wrist centre on axis 2)",
-                              f"{g1}² + {g2}² = 0: {t1} is not determined (the wrist centre on axis 1)",
-                              f"{a4} = 0: {t3} = π is a root, which u = tan(θ3/2) does not reach"]
+    derivation.degenerate += [f"{f1 ** 2 + f2 ** 2} = 0: {t2} is not determined (the wrist centre on axis 2)",
+                              f"{g1 ** 2 + g2 ** 2} = 0: {t1} is not determined (the wrist centre on axis 1)",
+                              f"{a4} = 0: {t3} = pi is a root, which u = tan({t3}/2) does not reach"]
     return derivation
-
-
-def branch_prefix(variable, signs) -> str:
-    """"theta_3 root 2" for the quartic's signs (σa, σb) = (+1, −1)."""
-    number = 1 + (2 if signs[0] < 0 else 0) + (1 if signs[1] < 0 else 0)
-    return f"{variable} root {number}"
 
 
 def _turned(vector, c, s) -> sympy.Matrix:
@@ -146,6 +144,8 @@ def _collected(expr, known):
     """A polynomial in the `known` quantities, each coefficient one number or short expression."""
     expanded = sympy.expand(expr)
     heads = [k for k in known if not k.is_number and k.free_symbols]
+    if not heads:
+        return _tidy(expanded)
     try:
         poly = sympy.Poly(expanded, *heads)
     except sympy.PolynomialError:
@@ -168,10 +168,3 @@ def _fresh(names, taken: set) -> list[str]:
         out.append(chosen)
     return out
 
-
-def _centre(robot):
-    """(the wrist centre in the holder frame, the holder) of a six-joint arm: for the doctest."""
-    from .wrist import centre
-
-    holder, local, _ = centre(robot.chain, (4, 5, 6))
-    return local, holder

@@ -76,7 +76,8 @@ def solve(chain, free=()) -> Solution:
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.wrist)} meet at the wrist "
                   "centre; "
                   f"the position of the wrist centre gives {_names(arm)}"
-                  + (" by Pieper's method (a quartic in tan(θ3/2), solved by Ferrari's)" if pieper_used else "")
+                  + (" as Pieper solved them: a quartic in tan(θ3/2), its roots by radicals (Ferrari)"
+                     if pieper_used else "")
                   + f", its orientation {_names(wrist_joints)}")
     elif structure.first_wrist:
         wrist_joints = [chain.joint_variables[j - 1] for j in structure.first_wrist]
