@@ -133,11 +133,12 @@ def _half_angle(expr, c, s, known) -> list:
     each collected in the `known` quantities (r_c and the height)."""
     x, y, u = sympy.Dummy("x"), sympy.Dummy("y"), sympy.Dummy("u")
     poly = sympy.Poly(expr.xreplace({c: x, s: y}), x, y)
-    total = 0
+    total = [sympy.Integer(0)] * 5  # A₀ … A₄: each term's coefficient times small integers, never a product expanded
     for (i, j), coefficient in poly.terms():
-        total += coefficient * (1 - u ** 2) ** i * (2 * u) ** j * (1 + u ** 2) ** (2 - i - j)
-    quartic = sympy.Poly(sympy.expand(total), u)
-    return [_collected(quartic.coeff_monomial(u ** k), known) for k in range(4, -1, -1)]
+        factor = sympy.Poly((1 - u ** 2) ** i * (2 * u) ** j * (1 + u ** 2) ** (2 - i - j), u)
+        for (k,), number in factor.terms():
+            total[k] += number * coefficient
+    return [_collected(total[k], known) for k in range(4, -1, -1)]
 
 
 def _collected(expr, known):
