@@ -214,3 +214,21 @@ def _loaded(path):
     from dhsym.io.library import load
 
     return load(str(path))
+
+
+@pytest.mark.parametrize("convention", ["modified", pytest.param("standard", marks=pytest.mark.slow)])
+def test_a_general_arm_after_a_wrist_at_the_start_is_solved_from_the_end(convention):
+    q = sympy.symbols("q_1:7", real=True)
+    lengths = sympy.symbols("L_1:5", real=True)
+    half, tenth = sympy.pi / 2, sympy.Rational(1, 10)
+    rows = [Row.revolute(q[0], d=3 * tenth, alpha=-half), Row.revolute(q[1], alpha=half),
+            Row.revolute(q[2], d=lengths[0], a=tenth, alpha=sympy.pi / 3),
+            Row.revolute(q[3], d=2 * tenth, a=lengths[1], alpha=sympy.pi / 4),
+            Row.revolute(q[4], a=lengths[2], alpha=half), Row.revolute(q[5], d=lengths[3])]
+    sample = {symbol: sympy.Rational(k + 3, 10) for k, symbol in enumerate(lengths)}
+    chain = to_convention(Robot(Chain(rows, "standard"), name="wrist first", sample=sample), convention)
+    solution = solve(chain)
+    assert "seen from the last frame gives q_4, q_5, q_6 as Pieper solved them: a quartic in tan(θ4/2)" \
+        in solution.method
+    assert solution.branches[0].name == "q_4 root 1, wrist not flipped"
+    check_round_trip(chain, solution, random.Random(4), trials=3)

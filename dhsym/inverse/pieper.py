@@ -33,27 +33,32 @@ NAMES = ("A_4", "A_3", "A_2", "A_1", "A_0", "p", "q", "r", "m", "w", "z", "s")
 
 
 def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivation: Derivation | None = None,
-           taken=frozenset()) -> Derivation:
-    """Add to `derivation` θ1, θ2, θ3 (the variables `arm`) of the joints before the wrist whose
-    centre sits at `local` in frame `holder` and at `point` in the chain's first frame; `taken`:
-    names already in use (the wrist centre's). Raises UserError when the arm is not of the
-    general kind (then a sub-problem applies, or nothing does)."""
+           taken=frozenset(), known_in=None) -> Derivation:
+    """Add to `derivation` θ1, θ2, θ3 (the variables `arm`, counted from the frame `known_in`) of
+    the joints between that frame (the chain's first by default) and the wrist whose centre sits at
+    `local` in frame `holder` and at `point` in `known_in`; `taken`: names already in use (the wrist
+    centre's). For a wrist at the start, `known_in` is the last frame and `arm` is θ6, θ5, θ4: seen
+    from the end, each joint turns the rest of the chain by −θ. Raises UserError when the arm is not
+    of the general kind (then a sub-problem applies, or nothing does)."""
     derivation = Derivation() if derivation is None else derivation
     chain = robot.chain
     numbers = [chain.joint_variables.index(v) + 1 for v in arm]
     if len(arm) != 3 or any(chain.rows[j - 1].joint != "R" for j in numbers):
         raise UserError("Pieper's method needs three revolute joints before the wrist")
+    known_in = chain.first_frame if known_in is None else known_in
+    turn = 1 if known_in == chain.first_frame else -1  # seen from the end, a joint turns the base by −θ
     zero = {v: 0 for v in arm}
     axes = [joint_axis_frame(chain.convention, j) for j in numbers]
     # decimals as exact numbers: the quartic's coefficients are numbers, not products of decimals
     at_zero = lambda i, j: exact(chain.transform(i, j).xreplace(zero)).applyfunc(sympy.expand)  # noqa: E731
-    seen = at_zero(axes[0], chain.first_frame)
+    seen = at_zero(axes[0], known_in)
     q = (seen[:3, :3] * point + seen[:3, 3]).applyfunc(sympy.expand)
     first, second, last = at_zero(axes[0], axes[1]), at_zero(axes[1], axes[2]), at_zero(axes[2], holder)
     t1, t2, t3 = arm
-    c2, s2, c3, s3 = sympy.cos(t2), sympy.sin(t2), sympy.cos(t3), sympy.sin(t3)
+    n1, n2, n3 = (j + robot.frame_offset for j in numbers)  # as the robot numbers its joints
+    c2, s2, c3, s3 = sympy.cos(t2), sympy.sin(turn * t2), sympy.cos(t3), sympy.sin(t3)
     centre = last[:3, :3] * exact(local) + last[:3, 3]
-    h = (second[:3, :3] * _turned(centre, c3, s3) + second[:3, 3]).applyfunc(sympy.expand)
+    h = (second[:3, :3] * _turned(centre, c3, turn * s3) + second[:3, 3]).applyfunc(sympy.expand)
     rotation, offset = first[:3, :3], first[:3, 3]
     u1, u2 = (rotation.T * offset).applyfunc(sympy.expand), rotation.T[:, 2]
     det = sympy.simplify(u1[0] * u2[1] - u1[1] * u2[0])
@@ -74,8 +79,8 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
                        + (u1x ** 2 + u1y ** 2) * left[1] ** 2 - det ** 2 * planar, c3, s3)
     coefficients = _half_angle(quadric, c3, s3, (r_c, height))
     if sympy.expand(coefficients[0]) == 0:
-        raise UserError("Pieper's method: the quartic in tan(θ3/2) loses its leading term (θ3 = π solves every "
-                        "pose): not handled")
+        raise UserError(f"Pieper's method: the quartic in tan(θ{n3}/2) loses its leading term (θ{n3} = π solves "
+                        "every pose): not handled")
     definitions, root = ferrari(coefficients, names[8:])
     scale = sympy.sign(det) if det.is_number else det  # det² > 0: the pair's atan2 keeps its quadrant
     norm = scale * det  # (k1, k2) = norm · Rz(θ2)(f1, f2)
@@ -86,32 +91,32 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
                                (f1, _tidy(h[0])), (f2, _tidy(h[1])),
                                (k1, _tidy(scale * (u2y * left[0] - u1y * left[1]))),
                                (k2, _tidy(scale * (u1x * left[1] - u2x * left[0]))),
-                               (t2, sympy.atan2(k2 * f1 - k1 * f2, k1 * f1 + k2 * f2)),
+                               (t2, turn * sympy.atan2(k2 * f1 - k1 * f2, k1 * f1 + k2 * f2)),
                                (g1, _tidy(g[0])), (g2, _tidy(g[1])),
-                               (t1, sympy.atan2(_tidy(q[1] * g1 - q[0] * g2), _tidy(q[0] * g1 + q[1] * g2)))]
+                               (t1, turn * sympy.atan2(_tidy(q[1] * g1 - q[0] * g2), _tidy(q[0] * g1 + q[1] * g2)))]
     derivation.signs.extend([(SIGNS[0], t3, "quartic"), (SIGNS[1], t3, "quartic")])
     a4, a3, a2, a1, a0 = (sympy.Symbol(n, real=True) for n in names[8:13])
     derivation.steps += [
         Step(r_c, _tidy(length + 2 * (u1.T * _turned(h, c2, s2))[0] + offset.dot(offset)),
-             "Pieper: a distance that θ1 does not change", (), "the squared distance of the wrist centre from "
-             "the origin of axis 1's frame"),
+             f"Pieper: a distance that θ{n1} does not change", (), "the squared distance of the wrist centre from "
+             f"the origin of axis {n1}'s frame"),
         Step(height, _tidy((u2.T * _turned(h, c2, s2))[0] + offset[2]),
-             "Pieper: a height that θ1 does not change", (), "the wrist centre's coordinate along axis 1"),
+             f"Pieper: a height that θ{n1} does not change", (), f"the wrist centre's coordinate along axis {n1}"),
         Step(a4 * u ** 4 + a3 * u ** 3 + a2 * u ** 2 + a1 * u + a0, sympy.Integer(0),
-             "a quartic in u = tan(θ3/2), by Ferrari's method", (t3,),
-             "θ2 eliminated from the two equations by c2² + s2² = 1"),
+             f"a quartic in u = tan(θ{n3}/2), by Ferrari's method", (t3,),
+             f"θ{n2} eliminated from the two equations by c{n2}² + s{n2}² = 1"),
         Step(f1 * c2 - f2 * s2, k1 / norm, "atan2 of a pair", (t2,),
-             "the two equations solved for the vector (f1, f2) turned by θ2 (equation 1 of 2)"),
+             f"the two equations solved for the vector (f1, f2) turned by θ{n2} (equation 1 of 2)"),
         Step(f1 * s2 + f2 * c2, k2 / norm, "atan2 of a pair", (t2,), "the same (equation 2 of 2)"),
-        Step(g1 * sympy.cos(t1) - g2 * sympy.sin(t1), q[0], "atan2 of a pair", (t1,),
-             "the x of the wrist centre in axis 1's frame (equation 1 of 2)"),
-        Step(g1 * sympy.sin(t1) + g2 * sympy.cos(t1), q[1], "atan2 of a pair", (t1,),
+        Step(g1 * sympy.cos(t1) - g2 * sympy.sin(turn * t1), q[0], "atan2 of a pair", (t1,),
+             f"the x of the wrist centre in axis {n1}'s frame (equation 1 of 2)"),
+        Step(g1 * sympy.sin(turn * t1) + g2 * sympy.cos(t1), q[1], "atan2 of a pair", (t1,),
              "its y (equation 2 of 2)"),
     ]
     derivation.conditions.append(f"{t3} root k exists where the root {u} of the quartic is real: 4, 2 or none of "
                                  "the four roots are, and a root that is not real is a branch that does not exist")
-    derivation.degenerate += [f"{f1 ** 2 + f2 ** 2} = 0: {t2} is not determined (the wrist centre on axis 2)",
-                              f"{g1 ** 2 + g2 ** 2} = 0: {t1} is not determined (the wrist centre on axis 1)",
+    derivation.degenerate += [f"{f1 ** 2 + f2 ** 2} = 0: {t2} is not determined (the wrist centre on axis {n2})",
+                              f"{g1 ** 2 + g2 ** 2} = 0: {t1} is not determined (the wrist centre on axis {n1})",
                               f"{a4} = 0: {t3} = pi is a root, which u = tan({t3}/2) does not reach"]
     return derivation
 

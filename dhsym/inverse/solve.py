@@ -76,8 +76,7 @@ def solve(chain, free=()) -> Solution:
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.wrist)} meet at the wrist "
                   "centre; "
                   f"the position of the wrist centre gives {_names(arm)}"
-                  + (" as Pieper solved them: a quartic in tan(θ3/2), its roots by radicals (Ferrari)"
-                     if pieper_used else "")
+                  + (_pieper_said(robot, derivation) if pieper_used else "")
                   + f", its orientation {_names(wrist_joints)}")
     elif structure.first_wrist:
         wrist_joints = [chain.joint_variables[j - 1] for j in structure.first_wrist]
@@ -89,12 +88,23 @@ def solve(chain, free=()) -> Solution:
         numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
         point = sympy.Matrix(names)
         arm = [v for v in unknowns if v not in wrist_joints]
-        scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
-             arm, prismatic, derivation, constants=constants, witness=numbers)
+        kept = dict(numbers)
+        try:
+            scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
+                 arm, prismatic, derivation, constants=constants, witness=numbers)
+        except UserError as refusal:  # as above, the arm counted from the end
+            derivation, numbers = Derivation(), kept
+            try:
+                pieper(robot, point, local, holder, arm[::-1], derivation, taken=[n for n, _ in definitions],
+                       known_in=chain.last_frame)
+            except UserError:
+                raise refusal from None
+            pieper_used = True
         scan(transform_equations(robot, target, position=False, end=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.first_wrist)} meet at a "
-                  "point fixed in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
+                  f"point fixed in the base; that point seen from the last frame gives {_names(arm)}"
+                  + (_pieper_said(robot, derivation) if pieper_used else "") + f", the orientation "
                   f"{_names(wrist_joints)}")
     elif structure.spherical:
         scan(transform_equations(robot, target, position=False), unknowns, prismatic, derivation,
@@ -160,6 +170,13 @@ def _joints(robot, numbers) -> str:
     """Joints 1..n as the robot numbers them (a wrist's 4..6)."""
     shown = [str(number + robot.frame_offset) for number in numbers]
     return ", ".join(shown[:-1]) + " and " + shown[-1]
+
+
+def _pieper_said(robot, derivation) -> str:
+    """How the method line says that Pieper's quartic gave the arm's joints."""
+    joint = next(j for _, j, rule in derivation.signs if rule == "quartic")
+    number = robot.chain.joint_variables.index(joint) + 1 + robot.frame_offset
+    return f" as Pieper solved them: a quartic in tan(θ{number}/2), its roots by radicals (Ferrari)"
 
 
 def _names(variables) -> str:
