@@ -232,3 +232,36 @@ def test_a_general_arm_after_a_wrist_at_the_start_is_solved_from_the_end(convent
         in solution.method
     assert solution.branches[0].name == "q_4 root 1, wrist not flipped"
     check_round_trip(chain, solution, random.Random(4), trials=3)
+
+
+def test_the_json_evaluated_by_sympy_gives_q_and_every_step_of_the_derivation_holds(general_file):
+    chain = _loaded(general_file)
+    ik = chain.ik()
+    data = ik.json()
+    q = [0.4, -0.7, 1.1, 0.3, -0.9, 2.0]
+    fk = ik_checks.numeric_fk(chain, ik_checks.sample_constants(chain))
+    pose = np.array(fk(*q), dtype=float)
+    values = {sympy.Symbol(name): sympy.Float(pose[k // 4, k % 4], 30)
+              for k, name in enumerate(ik_checks.TARGET_NAMES)}
+    for name, expression in data["definitions"]:  # complex on the way where the quartic needs it
+        values[sympy.Symbol(name)] = sympy.sympify(expression).xreplace(values).evalf(30)
+    reached = []
+    for branch in data["solutions"]:
+        known = dict(values)
+        for name, expression in branch["assignments"]:
+            known[sympy.Symbol(name)] = sympy.sympify(expression).xreplace(known).evalf(30)
+        joints = [complex(known[sympy.Symbol(v)]) for v in data["joint_variables"]]
+        if all(abs(j.imag) < 1e-12 for j in joints):
+            reached.append(([j.real for j in joints], known))
+    assert len(reached) in (2, 4, 6, 8)
+    match = [known for joints, known in reached if np.allclose(np.angle(np.exp(1j * (np.array(joints) - q))), 0,
+                                                                atol=1e-9)]
+    assert match, reached
+    steps = [step for step in ik.solution.steps if "Pieper" in step.subproblem or "quartic" in step.subproblem
+             or step.solves and str(step.solves[0]) in ("theta_1", "theta_2")]
+    assert len(steps) == 7
+    by_name = {symbol.name: value for symbol, value in match[0].items()}
+    for step in steps:  # the equations the derivation prints are true at the pose
+        names = {s: by_name[s.name] for s in (step.lhs - step.rhs).free_symbols if s.name in by_name}
+        difference = complex((step.lhs - step.rhs).xreplace(names).evalf(30))
+        assert abs(difference) < 1e-12, step
