@@ -5,7 +5,9 @@ The module defines `ik(T, **constants)`: T is one pose (4, 4) or many (N, 4, 4);
 branch's joint values, shaped (B, n) or (N, B, n), branches in the order of `BRANCHES` (the
 JSON's), joints in the order of `JOINTS`, revolute angles in [−π, π), NaN where a branch does not
 exist. The robot's constants are keyword arguments whose defaults are the robot file's sample
-values; a joint made a parameter with `--free` is a keyword argument without a default.
+values; a joint made a parameter with `--free` is a keyword argument without a default. The
+intermediate values of a quartic's roots by radicals (dhsym.inverse.quartic) are computed in complex
+numbers; an angle from them is NaN where its root is not real.
 
 >>> import sympy
 >>> from dhsym.core.chain import Chain, DHRow
