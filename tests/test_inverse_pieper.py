@@ -25,6 +25,7 @@ from dhsym.inverse.codegen import module_text
 from dhsym.inverse.quartic import Complex, ferrari, root, written_out
 from dhsym.inverse.solution import Branch, Solution
 from dhsym.inverse.solve import solve
+from dhsym.inverse.written import exact
 
 GENERAL = """name: general Pieper arm
 convention: standard
@@ -207,7 +208,25 @@ def test_many_poses_at_once_every_real_branch_reaches_fk_to_1e_9(general_file):
             assert np.abs(np.array(fk(*values), dtype=float) - pose).max() < 1e-9
         assert (np.abs(np.angle(np.exp(1j * (existing - q)))).max(axis=1) < 1e-6).any()
     assert counts <= {2, 4, 6, 8} and 8 in counts  # two or four real roots of the quartic, two wrists each
+    quartics = _coefficients(ik.solution, poses)
+    for c, branches in zip(quartics, found):  # every real root that numpy.roots finds is a branch
+        roots = np.roots(c)
+        real = roots[np.abs(roots.imag) < 1e-9].real
+        ours = np.tan(branches[np.isfinite(branches).all(axis=1), 2] / 2)
+        for x in real:
+            assert np.abs(ours - x).min() < 1e-6 * (1 + abs(x)), (c, real, ours)
     json.dumps(ik.json())  # the API's JSON is plain data
+
+
+def _coefficients(solution, poses):
+    """A₄ … A₀ of the quartic at each pose, from the solution's definitions in numbers (real ones only)."""
+    values = {sympy.Symbol(name, real=True): poses[:, k // 4, k % 4] for k, name in enumerate(ik_checks.TARGET_NAMES)}
+    for name, expression in solution.definitions:
+        if name.name == "p":
+            break
+        function = sympy.lambdify(list(values), exact(expression), "numpy")
+        values[name] = function(*values.values()) * np.ones(len(poses))
+    return np.stack([values[sympy.Symbol(f"A_{k}", real=True)] for k in range(4, -1, -1)], axis=1)
 
 
 def _loaded(path):
