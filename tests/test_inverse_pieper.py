@@ -192,9 +192,14 @@ def test_the_general_arm_of_a_robot_file_through_every_output(general_file, tmp_
         assert result.returncode == 0, result.stdout[-2000:]
 
 
-def test_many_poses_at_once_every_real_branch_reaches_fk_to_1e_9(general_file):
+@pytest.fixture(scope="module")
+def general_ik(general_file):
     chain = _loaded(general_file)
-    ik = chain.ik()
+    return chain, chain.ik()
+
+
+def test_many_poses_at_once_every_real_branch_reaches_fk_to_1e_9(general_ik):
+    chain, ik = general_ik
     fk = ik_checks.numeric_fk(chain, ik_checks.sample_constants(chain))
     joints = ik_checks.random_joints(chain, np.random.default_rng(9), 100)
     poses = np.array([np.array(fk(*q), dtype=float) for q in joints])
@@ -253,9 +258,8 @@ def test_a_general_arm_after_a_wrist_at_the_start_is_solved_from_the_end(convent
     check_round_trip(chain, solution, random.Random(4), trials=3)
 
 
-def test_the_json_evaluated_by_sympy_gives_q_and_every_step_of_the_derivation_holds(general_file):
-    chain = _loaded(general_file)
-    ik = chain.ik()
+def test_the_json_evaluated_by_sympy_gives_q_and_every_step_of_the_derivation_holds(general_ik):
+    chain, ik = general_ik
     data = ik.json()
     q = [0.4, -0.7, 1.1, 0.3, -0.9, 2.0]
     fk = ik_checks.numeric_fk(chain, ik_checks.sample_constants(chain))
@@ -264,18 +268,20 @@ def test_the_json_evaluated_by_sympy_gives_q_and_every_step_of_the_derivation_ho
               for k, name in enumerate(ik_checks.TARGET_NAMES)}
     for name, expression in data["definitions"]:  # complex on the way where the quartic needs it
         values[sympy.Symbol(name)] = sympy.sympify(expression).xreplace(values).evalf(30)
-    reached = []
+    arms = []  # the arm's joints of each branch: the assignments up to theta_1 (the wrist's come after)
     for branch in data["solutions"]:
         known = dict(values)
         for name, expression in branch["assignments"]:
             known[sympy.Symbol(name)] = sympy.sympify(expression).xreplace(known).evalf(30)
-        joints = [complex(known[sympy.Symbol(v)]) for v in data["joint_variables"]]
+            if name == "theta_1":
+                break
+        joints = [complex(known[sympy.Symbol(v)]) for v in data["joint_variables"][:3]]
         if all(abs(j.imag) < 1e-12 for j in joints):
-            reached.append(([j.real for j in joints], known))
-    assert len(reached) in (2, 4, 6, 8)
-    match = [known for joints, known in reached if np.allclose(np.angle(np.exp(1j * (np.array(joints) - q))), 0,
-                                                                atol=1e-9)]
-    assert match, reached
+            arms.append(([j.real for j in joints], known))
+    assert len(arms) in (4, 8)  # two or four real roots, each with both wrists
+    match = [known for joints, known in arms
+             if np.allclose(np.angle(np.exp(1j * (np.array(joints) - q[:3]))), 0, atol=1e-9)]
+    assert match, arms
     steps = [step for step in ik.solution.steps if "Pieper" in step.subproblem or "quartic" in step.subproblem
              or step.solves and str(step.solves[0]) in ("theta_1", "theta_2")]
     assert len(steps) == 7
