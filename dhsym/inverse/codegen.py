@@ -5,7 +5,9 @@ The module defines `ik(T, **constants)`: T is one pose (4, 4) or many (N, 4, 4);
 branch's joint values, shaped (B, n) or (N, B, n), branches in the order of `BRANCHES` (the
 JSON's), joints in the order of `JOINTS`, revolute angles in [−π, π), NaN where a branch does not
 exist. The robot's constants are keyword arguments whose defaults are the robot file's sample
-values; a joint made a parameter with `--free` is a keyword argument without a default.
+values; a joint made a parameter with `--free` is a keyword argument without a default. The
+intermediate values of a quartic's roots by radicals (dhsym.inverse.quartic) are computed in complex
+numbers; an angle from them is NaN where its root is not real.
 
 >>> import sympy
 >>> from dhsym.core.chain import Chain, DHRow
@@ -28,12 +30,14 @@ import sympy
 from sympy.printing.numpy import NumPyPrinter
 
 from ..core.numbers import decimal_text
+from .quartic import Complex
 from .solution import TARGET_NAMES
 
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
+IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when its imaginary part is this small
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
-             "angles", "elements", "missing", "k"}  # the module's own names
+             "angles", "elements", "missing", "k", "real_angle", "IMAGINARY"}  # the module's own names
 _ELEMENTS = {name: (row, column) for row in range(3) for column, name in
              enumerate(TARGET_NAMES[4 * row:4 * row + 4])}
 
@@ -44,6 +48,24 @@ class _NumpyCode(NumPyPrinter):
     def __init__(self, names: dict, numbers):
         super().__init__({"fully_qualified_modules": True})
         self.names, self.numbers = names, numbers
+        self.complex: set = set()  # the module's variables that hold complex values (a quartic's roots)
+        self.casting = False  # printing a value that is computed in complex numbers (dhsym.inverse.quartic)
+
+    def is_complex(self, expr) -> bool:
+        """Whether `expr` holds a complex variable outside an atan2 (whose value is real or NaN)."""
+        if isinstance(expr, sympy.atan2):
+            return False
+        return expr in self.complex or any(self.is_complex(a) for a in expr.args)
+
+    def _print_atan2(self, expr):
+        if any(self.is_complex(a) for a in expr.args):  # real, or NaN where the root is not real
+            return f"real_angle({self._print(expr.args[0])}, {self._print(expr.args[1])})"
+        return super()._print_atan2(expr)
+
+    def _print_acos(self, expr):
+        if self.casting:
+            return f"numpy.arccos({self._print(expr.args[0])} + 0j)"
+        return super()._print_acos(expr)
 
     def _print_Symbol(self, expr):
         return self.names.get(expr.name, expr.name)
@@ -59,6 +81,8 @@ class _NumpyCode(NumPyPrinter):
         return decimal if decimal else f"{expr.p}/{expr.q}"
 
     def _print_Pow(self, expr, rational=False):
+        if expr.exp == sympy.Rational(1, 2) and self.casting:  # complex on purpose: the root of a negative number
+            return f"numpy.sqrt({self._print(expr.base)} + 0j)"
         if expr.exp == sympy.Rational(1, 2):  # a root of −1e-16 at the edge of the workspace is a root of 0
             return f"root({self._print(expr.base)})"
         return super()._print_Pow(expr, rational)
@@ -127,6 +151,7 @@ def module_text(solution, command: str = "") -> str:
         f"ROUNDING = {ROUNDING!r}  # a square root of a number this close below 0 is a root of 0", "", "",
         "def root(x):",
         "    return numpy.sqrt(numpy.where((x < 0) & (x > -ROUNDING), 0.0, x))", "", "",
+        *(_REAL_ANGLE if code.complex else []),
         f"def ik(T, *, {', '.join(keywords)}):" if keywords else "def ik(T):",
         '    """Every branch\'s joint values for the pose(s) T; see the module\'s docstring."""',
         "    T = numpy.asarray(T, dtype=float)",
@@ -145,6 +170,15 @@ def module_text(solution, command: str = "") -> str:
         "    return result[0] if T.ndim == 2 else result", "",
     ]
     return "\n".join(lines)
+
+
+_REAL_ANGLE = [
+    f"IMAGINARY = {IMAGINARY!r}  # a value found through complex numbers is real when its imaginary part is this small",
+    "", "",
+    "def real_angle(y, x):",
+    '    """atan2 of values found through complex numbers (a quartic\'s roots): NaN where they are not real."""',
+    "    real = (abs(numpy.imag(y)) <= IMAGINARY * (1 + abs(y))) & (abs(numpy.imag(x)) <= IMAGINARY * (1 + abs(x)))",
+    "    return numpy.where(real, numpy.arctan2(numpy.real(y), numpy.real(x)), numpy.nan)", "", ""]
 
 
 def keyword_names(solution) -> dict:
@@ -185,6 +219,8 @@ def _computation(solution, names: dict, code) -> list[str]:
             taken.add(text)
             named.add(text)
             variable[key] = sympy.Dummy(text)
+            if isinstance(name, Complex):
+                code.complex.add(variable[key])
             lines.append((None, variable[key], key))
         return variable[key]
 
@@ -231,6 +267,8 @@ def _shared_subexpressions(lines, taken: set, code) -> list[str]:
             if symbol in pending:
                 value = pending.pop(symbol)
                 emit(value)
+                if code.is_complex(value):
+                    code.complex.add(symbol)
                 out.append(f"{code.doprint(symbol)} = {code.doprint(value)}")
 
     for comment, symbol, _ in lines:
@@ -239,7 +277,9 @@ def _shared_subexpressions(lines, taken: set, code) -> list[str]:
             continue
         expression = next(reduced)
         emit(expression)
+        code.casting = symbol in code.complex
         out.append(f"{code.doprint(symbol)} = {code.doprint(expression)}")
+        code.casting = False
     return out
 
 

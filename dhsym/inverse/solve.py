@@ -22,6 +22,8 @@ from ..core.robot import as_robot
 from ..errors import UserError
 from .branches import branch_name
 from .equations import point_equations, transform_equations
+from .pieper import pieper
+from .quartic import root_number
 from .scan import Derivation, scan
 from .singular import tie_to_jacobian
 from .solution import Branch, Solution, target_matrix, target_symbols
@@ -47,6 +49,7 @@ def solve(chain, free=()) -> Solution:
     numbers = witness(robot)
     definitions: list = []
     wrist_joints = []
+    pieper_used = False
     if structure.wrist and len(unknowns) > 3:
         wrist_joints = [chain.joint_variables[j - 1] for j in structure.wrist]
         holder, local, in_last = centre(chain, structure.wrist)
@@ -57,13 +60,24 @@ def solve(chain, free=()) -> Solution:
             numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
             point = sympy.Matrix(names)
         arm = [v for v in unknowns if v not in wrist_joints]
-        scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder), arm, prismatic, derivation,
-             constants=constants, witness=numbers)
+        kept = dict(numbers)
+        try:
+            scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder), arm, prismatic, derivation,
+                 constants=constants, witness=numbers)
+        except UserError as refusal:  # no sub-problem: Pieper's elimination, a quartic in tan(θ3/2)
+            derivation, numbers = Derivation(), kept
+            try:
+                pieper(robot, point, local, holder, arm, derivation, taken=[n for n, _ in definitions])
+            except UserError:
+                raise refusal from None
+            pieper_used = True
         scan(transform_equations(robot, target, position=False, start=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.wrist)} meet at the wrist "
                   "centre; "
-                  f"the position of the wrist centre gives {_names(arm)}, its orientation {_names(wrist_joints)}")
+                  f"the position of the wrist centre gives {_names(arm)}"
+                  + (_pieper_said(robot, derivation) if pieper_used else "")
+                  + f", its orientation {_names(wrist_joints)}")
     elif structure.first_wrist:
         wrist_joints = [chain.joint_variables[j - 1] for j in structure.first_wrist]
         holder, local, in_first = centre_at_start(chain, structure.first_wrist)
@@ -74,12 +88,23 @@ def solve(chain, free=()) -> Solution:
         numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
         point = sympy.Matrix(names)
         arm = [v for v in unknowns if v not in wrist_joints]
-        scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
-             arm, prismatic, derivation, constants=constants, witness=numbers)
+        kept = dict(numbers)
+        try:
+            scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
+                 arm, prismatic, derivation, constants=constants, witness=numbers)
+        except UserError as refusal:  # as above, the arm counted from the end
+            derivation, numbers = Derivation(), kept
+            try:
+                pieper(robot, point, local, holder, arm[::-1], derivation, taken=[n for n, _ in definitions],
+                       known_in=chain.last_frame)
+            except UserError:
+                raise refusal from None
+            pieper_used = True
         scan(transform_equations(robot, target, position=False, end=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers)
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.first_wrist)} meet at a "
-                  "point fixed in the base; that point seen from the last frame gives {_names(arm)}, the orientation "
+                  f"point fixed in the base; that point seen from the last frame gives {_names(arm)}"
+                  + (_pieper_said(robot, derivation) if pieper_used else "") + f", the orientation "
                   f"{_names(wrist_joints)}")
     elif structure.spherical:
         scan(transform_equations(robot, target, position=False), unknowns, prismatic, derivation,
@@ -147,6 +172,13 @@ def _joints(robot, numbers) -> str:
     return ", ".join(shown[:-1]) + " and " + shown[-1]
 
 
+def _pieper_said(robot, derivation) -> str:
+    """How the method line says that Pieper's quartic gave the arm's joints."""
+    joint = next(j for _, j, rule in derivation.signs if rule == "quartic")
+    number = robot.chain.joint_variables.index(joint) + 1 + robot.frame_offset
+    return f" as Pieper solved them: a quartic in tan(θ{number}/2), its roots by radicals (Ferrari)"
+
+
 def _names(variables) -> str:
     return ", ".join(map(str, variables))
 
@@ -175,8 +207,12 @@ def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:
     held = [(n, v, tuple(s for s, _, _ in signs if s in v.free_symbols)) for n, v in assignments]
     for choice in product((1, -1), repeat=len(signs)):
         values = {s: c for (s, _, _), c in zip(signs, choice)}
-        name = branch_name([(joint, rule, c) for (_, joint, rule), c in zip(signs, choice)], first_joint,
-                           wrist_joints)
+        name = branch_name([(joint, rule, c) for (_, joint, rule), c in zip(signs, choice) if rule != "quartic"],
+                           first_joint, wrist_joints)
+        roots = [(joint, c) for (_, joint, rule), c in zip(signs, choice) if rule == "quartic"]
+        if roots:  # the quartic's two signs choose one of its four roots
+            said = f"{roots[0][0]} root {root_number(roots[0][1], roots[1][1])}"
+            name = said if name == "the only solution" else f"{said}, {name}"
         for n, v, mine in held:
             key = (n, v, tuple(values[s] for s in mine))
             if key not in made:

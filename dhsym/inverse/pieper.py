@@ -1,0 +1,176 @@
+"""Pieper's solution of an arm's position problem (Craig, Introduction to Robotics, §4.6), for the
+three revolute joints before a spherical wrist when no sub-problem of the search applies.
+
+The wrist centre p_c is known. Seen from the frame of axis 1 at θ1 = 0 (`q`), p_c = Rz(θ1)·g(θ2, θ3):
+turning about axis 1 changes neither |q|² (`r_c`) nor q_z, so both give equations in θ2 and θ3
+alone. Each has the form a cos θ2 + b sin θ2 = c, with a, b, c linear in c3 and s3; the two are the
+components, along two fixed directions, of the same vector turned by θ2, so that c2² + s2² = 1
+eliminates θ2 and leaves an equation of degree two in (c3, s3): a quartic in u = tan(θ3/2),
+solved by radicals (dhsym.inverse.quartic). θ2 follows from the pair, θ1 from the x and y of q.
+
+The frames are the chain's own in either convention: the arm's transform is written as
+F·Rz(θ1)·C1·Rz(θ2)·C2·Rz(θ3)·C3 with the constant matrices read off the chain at θ = 0.
+
+The half-angle step: cos θ = 0 times (1 + u²)² is 1 − u⁴, the quartic −u⁴ + 1 (its roots u = ±1 are
+θ = ±π/2; the other two are not real):
+
+>>> c, s = sympy.symbols("c s")
+>>> _half_angle(c, c, s, ())
+[-1, 0, 0, 0, 1]
+"""
+from __future__ import annotations
+
+import sympy
+
+from ..core.transforms import joint_axis_frame
+from ..errors import UserError
+from .quartic import SIGNS, Complex, ferrari
+from .scan import Derivation
+from .solution import Step
+from .written import exact
+
+NAMES = ("A_4", "A_3", "A_2", "A_1", "A_0", "p", "q", "r", "m", "w", "z", "s")
+
+
+def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivation: Derivation | None = None,
+           taken=frozenset(), known_in=None) -> Derivation:
+    """Add to `derivation` θ1, θ2, θ3 (the variables `arm`, counted from the frame `known_in`) of
+    the joints between that frame (the chain's first by default) and the wrist whose centre sits at
+    `local` in frame `holder` and at `point` in `known_in`; `taken`: names already in use (the wrist
+    centre's). For a wrist at the start, `known_in` is the last frame and `arm` is θ6, θ5, θ4: seen
+    from the end, each joint turns the rest of the chain by −θ. Raises UserError when the arm is not
+    of the general kind (then a sub-problem applies, or nothing does)."""
+    derivation = Derivation() if derivation is None else derivation
+    chain = robot.chain
+    numbers = [chain.joint_variables.index(v) + 1 for v in arm]
+    if len(arm) != 3 or any(chain.rows[j - 1].joint != "R" for j in numbers):
+        raise UserError("Pieper's method needs three revolute joints before the wrist")
+    known_in = chain.first_frame if known_in is None else known_in
+    turn = 1 if known_in == chain.first_frame else -1  # seen from the end, a joint turns the base by −θ
+    zero = {v: 0 for v in arm}
+    axes = [joint_axis_frame(chain.convention, j) for j in numbers]
+    # decimals as exact numbers: the quartic's coefficients are numbers, not products of decimals
+    at_zero = lambda i, j: exact(chain.transform(i, j).xreplace(zero)).applyfunc(sympy.expand)  # noqa: E731
+    seen = at_zero(axes[0], known_in)
+    q = (seen[:3, :3] * point + seen[:3, 3]).applyfunc(sympy.expand)
+    first, second, last = at_zero(axes[0], axes[1]), at_zero(axes[1], axes[2]), at_zero(axes[2], holder)
+    t1, t2, t3 = arm
+    n1, n2, n3 = (j + robot.frame_offset for j in numbers)  # as the robot numbers its joints
+    c2, s2, c3, s3 = sympy.cos(t2), sympy.sin(turn * t2), sympy.cos(t3), sympy.sin(t3)
+    centre = last[:3, :3] * exact(local) + last[:3, 3]
+    h = (second[:3, :3] * _turned(centre, c3, turn * s3) + second[:3, 3]).applyfunc(sympy.expand)
+    rotation, offset = first[:3, :3], first[:3, 3]
+    u1, u2 = (rotation.T * offset).applyfunc(sympy.expand), rotation.T[:, 2]
+    det = sympy.simplify(u1[0] * u2[1] - u1[1] * u2[0])
+    if det == 0:
+        raise UserError("Pieper's method: the arm's equations are not of the general kind (axes 1 and 2 meet or are "
+                        "parallel), and the sub-problems did not solve them")
+    known = set(map(str, taken)) | {str(s) for s in chain.symbols}
+    names = _fresh(("r_c", "u", "f_1", "f_2", "k_1", "k_2", "g_1", "g_2") + NAMES, known)
+    r_c = sympy.Symbol(names[0], real=True)
+    u = Complex(names[1])
+    f1, f2, k1, k2, g1, g2 = (sympy.Symbol(n, real=True) for n in names[2:8])
+    height = q[2]
+    length = _reduced(sum(x ** 2 for x in h), c3, s3)
+    left = (r_c - length - offset.dot(offset)) / 2 - u1[2] * h[2], height - offset[2] - u2[2] * h[2]
+    planar = _reduced(h[0] ** 2 + h[1] ** 2, c3, s3)
+    u1x, u1y, u2x, u2y = u1[0], u1[1], u2[0], u2[1]
+    quadric = _reduced((u2x ** 2 + u2y ** 2) * left[0] ** 2 - 2 * (u1x * u2x + u1y * u2y) * left[0] * left[1]
+                       + (u1x ** 2 + u1y ** 2) * left[1] ** 2 - det ** 2 * planar, c3, s3)
+    coefficients = _half_angle(quadric, c3, s3, (r_c, height))
+    if sympy.expand(coefficients[0]) == 0:
+        raise UserError(f"Pieper's method: the quartic in tan(θ{n3}/2) loses its leading term (θ{n3} = π solves "
+                        "every pose): not handled")
+    definitions, root = ferrari(coefficients, names[8:])
+    scale = sympy.sign(det) if det.is_number else det  # det² > 0: the pair's atan2 keeps its quadrant
+    norm = scale * det  # (k1, k2) = norm · Rz(θ2)(f1, f2)
+    turned = _turned(sympy.Matrix([f1, f2, h[2]]), c2, s2)
+    g = rotation * turned + offset
+    derivation.assignments += [(r_c, sum(x ** 2 for x in q)), *definitions, (u, root),
+                               (t3, sympy.atan2(2 * u, 1 - u ** 2)),
+                               (f1, _tidy(h[0])), (f2, _tidy(h[1])),
+                               (k1, _tidy(scale * (u2y * left[0] - u1y * left[1]))),
+                               (k2, _tidy(scale * (u1x * left[1] - u2x * left[0]))),
+                               (t2, turn * sympy.atan2(k2 * f1 - k1 * f2, k1 * f1 + k2 * f2)),
+                               (g1, _tidy(g[0])), (g2, _tidy(g[1])),
+                               (t1, turn * sympy.atan2(_tidy(q[1] * g1 - q[0] * g2), _tidy(q[0] * g1 + q[1] * g2)))]
+    derivation.signs.extend([(SIGNS[0], t3, "quartic"), (SIGNS[1], t3, "quartic")])
+    a4, a3, a2, a1, a0 = (sympy.Symbol(n, real=True) for n in names[8:13])
+    derivation.steps += [
+        Step(r_c, _tidy(length + 2 * (u1.T * _turned(h, c2, s2))[0] + offset.dot(offset)),
+             f"Pieper: a distance that θ{n1} does not change", (), "the squared distance of the wrist centre from "
+             f"the origin of axis {n1}'s frame"),
+        Step(height, _tidy((u2.T * _turned(h, c2, s2))[0] + offset[2]),
+             f"Pieper: a height that θ{n1} does not change", (), f"the wrist centre's coordinate along axis {n1}"),
+        Step(a4 * u ** 4 + a3 * u ** 3 + a2 * u ** 2 + a1 * u + a0, sympy.Integer(0),
+             f"a quartic in u = tan(θ{n3}/2), by Ferrari's method", (t3,),
+             f"θ{n2} eliminated from the two equations by c{n2}² + s{n2}² = 1"),
+        Step(f1 * c2 - f2 * s2, k1 / norm, "atan2 of a pair", (t2,),
+             f"the two equations solved for the vector (f1, f2) turned by θ{n2} (equation 1 of 2)"),
+        Step(f1 * s2 + f2 * c2, k2 / norm, "atan2 of a pair", (t2,), "the same (equation 2 of 2)"),
+        Step(g1 * sympy.cos(t1) - g2 * sympy.sin(turn * t1), q[0], "atan2 of a pair", (t1,),
+             f"the x of the wrist centre in axis {n1}'s frame (equation 1 of 2)"),
+        Step(g1 * sympy.sin(turn * t1) + g2 * sympy.cos(t1), q[1], "atan2 of a pair", (t1,),
+             "its y (equation 2 of 2)"),
+    ]
+    derivation.conditions.append(f"{t3} root k exists where the root {u} of the quartic is real: 4, 2 or none of "
+                                 "the four roots are, and a root that is not real is a branch that does not exist")
+    derivation.degenerate += [f"{f1 ** 2 + f2 ** 2} = 0: {t2} is not determined (the wrist centre on axis {n2})",
+                              f"{g1 ** 2 + g2 ** 2} = 0: {t1} is not determined (the wrist centre on axis {n1})",
+                              f"{a4} = 0: {t3} = pi is a root, which u = tan({t3}/2) does not reach"]
+    return derivation
+
+
+def _turned(vector, c, s) -> sympy.Matrix:
+    """Rz(θ)·vector, with c = cos θ and s = sin θ."""
+    x, y, z = vector
+    return sympy.Matrix([c * x - s * y, s * x + c * y, z])
+
+
+def _reduced(expr, c, s):
+    """`expr` expanded with s² = 1 − c²: degree at most one in s."""
+    expanded = sympy.expand(expr)
+    return sympy.expand(expanded.subs(s ** 2, 1 - c ** 2)) if expanded.has(s) else expanded
+
+
+def _half_angle(expr, c, s, known) -> list:
+    """A₄ … A₀ of the quartic in u = tan(θ/2) that `expr` (of degree ≤ 2 in c, s) times (1 + u²)² is,
+    each collected in the `known` quantities (r_c and the height)."""
+    x, y, u = sympy.Dummy("x"), sympy.Dummy("y"), sympy.Dummy("u")
+    poly = sympy.Poly(expr.xreplace({c: x, s: y}), x, y)
+    total = [sympy.Integer(0)] * 5  # A₀ … A₄: each term's coefficient times small integers, never a product expanded
+    for (i, j), coefficient in poly.terms():
+        factor = sympy.Poly((1 - u ** 2) ** i * (2 * u) ** j * (1 + u ** 2) ** (2 - i - j), u)
+        for (k,), number in factor.terms():
+            total[k] += number * coefficient
+    return [_collected(total[k], known) for k in range(4, -1, -1)]
+
+
+def _collected(expr, known):
+    """A polynomial in the `known` quantities, each coefficient one number or short expression."""
+    expanded = sympy.expand(expr)
+    heads = [k for k in known if not k.is_number and k.free_symbols]
+    if not heads:
+        return _tidy(expanded)
+    try:
+        poly = sympy.Poly(expanded, *heads)
+    except sympy.PolynomialError:
+        return _tidy(expanded)
+    return sympy.Add(*[_tidy(coefficient) * sympy.Mul(*[x ** e for x, e in zip(heads, powers)])
+                       for powers, coefficient in poly.terms()])
+
+
+def _tidy(expr):
+    return sympy.factor_terms(sympy.expand(expr))
+
+
+def _fresh(names, taken: set) -> list[str]:
+    out = []
+    for name in names:
+        chosen = name
+        while chosen in taken:
+            chosen += "_"
+        taken.add(chosen)
+        out.append(chosen)
+    return out
+
