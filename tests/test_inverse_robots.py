@@ -5,6 +5,7 @@ singular poses give NaN branches or a member of the family, never a traceback.""
 import functools
 import math
 import random
+import re
 
 import numpy
 import pytest
@@ -184,3 +185,34 @@ def test_the_puma_solution_is_no_larger_than_craigs():
         assert sympy.count_ops(mine[S(name)]) <= sympy.count_ops(craig[name]), name
     ours = sum(sympy.count_ops(value) for value in mine.values())
     assert ours <= sum(sympy.count_ops(form) for form in craig.values())
+
+
+@pytest.mark.parametrize("name", ["puma560", "stanford", "ur5", "cylindrical_wrist"])
+def test_where_two_axes_line_up_the_angle_said_to_be_determined_is(name):
+    """The degenerate sentence's "at θk = 0 only A is determined, at θk = π only B": at such a
+    pose, turning the joints so that A (or B) stays the same leaves the tool's orientation as it
+    is, and turning them so that A changes does not."""
+    from dhsym.core.numeric import NumericChain
+
+    chain = dhsym.load(name)
+    sentence = next(d for d in solve(chain).degenerate if "line up" in d)
+    found = re.search(r"at (\w+) = 0 only (.+?) is determined, at \w+ = pi only (.+?),", sentence)
+    angle, at_zero, at_pi = found.groups()
+    rng = random.Random(5)
+    numeric = NumericChain(chain.chain, {s: float(v) for s, v in chain.sample.items()}
+                           | {s: 0.7 for s in chain.symbols - set(chain.sample) - set(chain.joint_variables)})
+    names = [str(v) for v in chain.joint_variables]
+    for value, kept in ((0.0, at_zero), (math.pi, at_pi)):
+        q = [rng.uniform(-math.pi, math.pi) for _ in names]
+        q[names.index(angle)] = value
+        expression = dhsym.parse_expression(kept)
+        coefficients = {str(s): float(expression.coeff(s)) for s in expression.free_symbols}
+        last = max(coefficients, key=names.index)
+        rotation = lambda q: numpy.array(numeric.end(q))[:3, :3]  # noqa: E731
+        kept_q, moved_q = list(q), list(q)
+        kept_q[names.index(last)] += 0.3 * coefficients[last]  # A grows by 0.3 ...
+        first = min(coefficients, key=names.index)
+        kept_q[names.index(first)] -= 0.3 * coefficients[first]  # ... and shrinks by 0.3: A is kept
+        moved_q[names.index(last)] += 0.3 * coefficients[last]
+        assert numpy.allclose(rotation(kept_q), rotation(q), atol=1e-12)
+        assert not numpy.allclose(rotation(moved_q), rotation(q), atol=1e-3)

@@ -298,23 +298,6 @@ def _last(angle, unknown, remaining):
     return None
 
 
-def _degenerate_pair(det, shown) -> str:
-    """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
-    (the wrist's s5), the axes on either side of joint k line up: a one-parameter family."""
-    bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(det) if not f.is_number}
-    if len(bases) == 1:
-        (base,) = bases
-        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
-            return (f"{base} = 0: {shown} is not determined on its own: the axes on either side of "
-                    f"{base.args[0]} line up, and only the sum (or difference) of the angles about them is "
-                    "determined, a one-parameter family (evaluate gives one member)")
-    return f"{_unsigned(det)} = 0: {shown} is not determined by these equations"
-
-
-def _unsigned(expr):
-    return -expr if expr.could_extract_minus_sign() else expr
-
-
 def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
     """A long right-hand side gets a name, as a book names D and K; short ones stay as they are."""
     if value.is_Symbol or value.is_number or length(value) <= 2:
@@ -342,10 +325,10 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
             reduced = algebra.pythagoras(det)  # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
             if reduced is not det:
                 det = min([det, sympy.factor(reduced)], key=length)
+        forms = (candidates[0].form, candidates[1].form)
         if not det.is_number:
             derivation.vanishing.append((det, len(derivation.degenerate)))
-            derivation.degenerate.append(_degenerate_pair(det, shown))
-        forms = (candidates[0].form, candidates[1].form)
+            derivation.degenerate.append(sp.degenerate_pair(det, shown, forms))
         return sp.pair(*forms, _signs[forms] if forms in _signs else sp.determinant_sign(*forms))
     sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
     if rule == "linear":
@@ -379,7 +362,7 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
         derivation.conditions.append(f"{root} >= 0 (else {shown} has no real value: the target is out of reach; "
                                      "where it is 0 the two roots meet)")
     if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
-        derivation.degenerate.append(f"{_unsigned(a)} = 0 and {_unsigned(b)} = 0: {shown} is not determined "
+        derivation.degenerate.append(f"{sp.unsigned(a)} = 0 and {sp.unsigned(b)} = 0: {shown} is not determined "
                                      "by this equation")
     return sp.one_equation(a, b, c, sigma, shape)
 

@@ -13,11 +13,15 @@ milliseconds where det A takes most of the time (the same factors `dhsym jacobia
 """
 from __future__ import annotations
 
+import random
+
 import sympy
 
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
-from ..velocity.geometry import wrist_centre
+from ..velocity.geometry import axis_line, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
+
+UNSAID = "only the sum (or difference) of the angles about them is determined"
 
 
 def tie_to_jacobian(chain, derivation) -> None:
@@ -48,3 +52,53 @@ def wrist_factors(chain) -> list:
     wrist = [angular_part(chain, j, axis_frame(chain, 5), centre, body) for j in (4, 5, 6)]
     value = as_written(factored(factored(sympy.Matrix(wrist).T.det(method="berkowitz"))), chain.numbers)
     return joint_factors(value, chain)
+
+
+def say_lined_up(chain, derivation) -> None:
+    """Where sin θk = 0 lines up two axes, say which of the sum or the difference is determined."""
+    for expr, index in derivation.vanishing:
+        bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
+        if UNSAID in derivation.degenerate[index] and len(bases) == 1 and isinstance(base := bases.pop(), sympy.sin):
+            derivation.degenerate[index] = derivation.degenerate[index].replace(UNSAID, lined_up(chain, base.args[0]))
+
+
+def lined_up(chain, angle) -> str:
+    """Where sin θk = 0 lines up the axes of joints k − 1 and k + 1, which angle they still fix:
+    the sum of the angles about the lined-up axes where they point the same way, the difference
+    where they point opposite ways; θk = 0 and θk = π swap the two. Joints whose axes are parallel
+    to one of the two turn with it (the UR5's θ2 + θ3 + θ4). Measured at one pose.
+
+    >>> import dhsym
+    >>> lined_up(dhsym.load("puma560").chain, dhsym.load("puma560").joint_variables[4])
+    'at theta_5 = 0 only theta_4 + theta_6 is determined, at theta_5 = pi only theta_4 - theta_6'
+    """
+    k = list(chain.joint_variables).index(angle) + 1
+    if not 1 < k < chain.n:
+        return UNSAID
+    values = sample_values(chain, random.Random(k))
+    values[angle] = 0.0
+    frame_poses = poses(chain, values)
+
+    def parallel_run(start, step):  # (joint, ±1) for joint `start` and its parallel neighbours away from k
+        reference = axis_line(chain, start, frame_poses)[1]
+        run, j = [], start
+        while 1 <= j <= chain.n and chain.rows[j - 1].joint == "R":
+            along = sum(x * y for x, y in zip(reference, axis_line(chain, j, frame_poses)[1]))
+            if abs(abs(along) - 1) > 1e-9:
+                break
+            run.append((j, 1 if along > 0 else -1))
+            j += step
+        return run, reference
+
+    before, towards = parallel_run(k - 1, -1)
+    after, away = parallel_run(k + 1, 1)
+    alike = sum(x * y for x, y in zip(towards, away))
+    if not before or not after or abs(abs(alike) - 1) > 1e-9:
+        return UNSAID
+
+    def total(run, sign=1):
+        return " ".join(f"{'+' if sign * s > 0 else '-'} {chain.joint_variables[j - 1]}" for j, s in sorted(run))
+
+    first = total(before).removeprefix("+ ")
+    same, opposite = total(after, 1 if alike > 0 else -1), total(after, -1 if alike > 0 else 1)
+    return f"at {angle} = 0 only {first} {same} is determined, at {angle} = pi only {first} {opposite}"

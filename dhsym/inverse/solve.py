@@ -25,7 +25,7 @@ from .equations import point_equations, transform_equations
 from .pieper import pieper
 from .quartic import root_number
 from .scan import Derivation, scan
-from .singular import tie_to_jacobian
+from .singular import say_lined_up, tie_to_jacobian
 from .solution import Branch, Solution, target_matrix, target_symbols
 from .structure import analyse
 from .witness import witness
@@ -125,9 +125,11 @@ def solve(chain, free=()) -> Solution:
     used = _used_elements(definitions, assignments)
     if len(unknowns) < 6:
         method += f" (target elements used: {', '.join(used)})"
-        conditions.append(f"the arm has {len(unknowns)} unknown joints: only {', '.join(used)} are used, "
+        joints = f"{len(unknowns)} unknown joint{'s' if len(unknowns) != 1 else ''}"
+        conditions.append(f"the arm has {joints}: only {', '.join(used)} are used, "
                           "and the other elements of the target must be consistent with them"
                           + (f" (in every pose of this arm {fixed})" if fixed else ""))
+    say_lined_up(chain, derivation)
     if structure.wrist and len(unknowns) == 6 and chain.n == 6:
         tie_to_jacobian(robot, derivation)
     branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)

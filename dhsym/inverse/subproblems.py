@@ -248,3 +248,32 @@ def prismatic(coefficients, sigma) -> sympy.Expr:
     if b == 0:
         return sigma * sympy.sqrt(sympy.factor_terms(-c / a))
     return (-b + sigma * sympy.sqrt(b ** 2 - 4 * a * c)) / (2 * a)
+
+
+def degenerate_pair(det, shown, forms) -> str:
+    """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
+    (the wrist's s5), the axes on either side of joint k line up: a one-parameter family. A pair
+    [[α, −β], [β, α]] has α² + β² for its determinant, zero where both are: said so.
+
+    >>> x, y, t = sympy.symbols("x y t", real=True)
+    >>> degenerate_pair(x**2 + y**2, t, ((x, -y, 1), (y, x, 2)))
+    'x = 0 and y = 0: t is not determined by these equations'
+    """
+    bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(det) if not f.is_number}
+    if len(bases) == 1:
+        (base,) = bases
+        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
+            return (f"{base} = 0: {shown} is not determined on its own: the axes on either side of "
+                    f"{base.args[0]} line up, and only the sum (or difference) of the angles about them is "
+                    "determined, a one-parameter family (a numeric evaluation gives one member)")
+    (a1, b1, _), (a2, b2, _) = forms
+    rotation = (algebra.expand(a1 - b2) == 0 and algebra.expand(b1 + a2) == 0
+                or algebra.expand(a1 + b2) == 0 and algebra.expand(b1 - a2) == 0)
+    if rotation and length(a1) + length(b1) < length(det):  # pz² + (px c1 + py s1)², expanded, is longer
+        first, second = sorted((str(unsigned(a1)), str(unsigned(b1))))
+        return f"{first} = 0 and {second} = 0: {shown} is not determined by these equations"
+    return f"{unsigned(det)} = 0: {shown} is not determined by these equations"
+
+
+def unsigned(expr):
+    return -expr if expr.could_extract_minus_sign() else expr

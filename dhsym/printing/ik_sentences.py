@@ -19,8 +19,8 @@ from . import render
 
 _RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
 _TERM = r"(?:(?:sin|cos)\([^()]*\)|[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(]))"
-_MATH_RUN = re.compile(rf"(?<![\w.]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5)
-_VALUE = re.compile(r"(?<== )-?\d+(?:\.\d+)?(?![\w.])")  # the value in "r32 = -1": math, its minus a minus sign
+_MATH_RUN = re.compile(rf"(?<![\w.'’]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5); not Pieper's s
+_VALUE = re.compile(r"(?<== )-?(?:\d+(?:\.\d+)?|pi)(?![\w.])")  # "r32 = -1", "theta_5 = pi": math
 _GLUE = "\u00a0"  # holds a relation together while a sentence is wrapped
 RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
              "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
