@@ -36,6 +36,24 @@ def lengths(draw, name: str, decimals: bool):
     return draw(st.sampled_from(DECIMALS)) if decimals else sympy.Integer(draw(st.integers(1, 3)))
 
 
+def length_drawer(draw) -> tuple:
+    """(length, sample) for a hypothesis test that builds arms: `length(may_be_zero=True)` draws 0,
+    a decimal in 0.15..0.90, or a new symbol L_k whose value it puts in `sample`."""
+    sample, count = {}, iter(range(1, 100))
+
+    def length(may_be_zero=True):
+        kind = draw(st.sampled_from((["zero"] if may_be_zero else []) + ["symbol", "decimal"]))
+        value = sympy.Rational(draw(st.integers(15, 90)), 100)
+        if kind == "zero":
+            return sympy.Integer(0)
+        if kind == "decimal":
+            return value
+        symbol = sympy.Symbol(f"L_{next(count)}", real=True)
+        sample[symbol] = value
+        return symbol
+    return length, sample
+
+
 @st.composite
 def robots(draw, max_joints: int = 4, conventions=("standard", "modified")):
     """A Robot as read from a file: first_frame 0..5, decimals or not, offsets, base and tool

@@ -15,6 +15,7 @@ import sympy
 from cli_runner import run_dhsym
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import length_drawer
 from test_inverse_robots import check_round_trip
 
 from dhsym import Chain, DHRow, Step
@@ -116,19 +117,7 @@ TWISTS = [sympy.pi / 3, sympy.pi / 4, -sympy.pi / 3, 2 * sympy.pi / 3, -sympy.pi
 def general_arms(draw):
     """Six revolute joints, a spherical wrist, an arm with twists that are not 0 or ±90°, shoulder
     offset a1 ≠ 0: no sub-problem solves its position, Pieper's quartic does."""
-    sample = {}
-    count = iter(range(1, 40))
-
-    def length(may_be_zero=True):
-        kind = draw(st.sampled_from((["zero"] if may_be_zero else []) + ["symbol", "decimal"]))
-        value = sympy.Rational(draw(st.integers(15, 90)), 100)
-        if kind == "zero":
-            return sympy.Integer(0)
-        if kind == "decimal":
-            return value
-        symbol = sympy.Symbol(f"L_{next(count)}", real=True)
-        sample[symbol] = value
-        return symbol
+    length, sample = length_drawer(draw)
 
     half = sympy.pi / 2
     offset = lambda: draw(st.sampled_from([0, 0, half, -sympy.pi / 6]))  # noqa: E731

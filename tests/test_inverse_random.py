@@ -6,6 +6,7 @@ import random
 import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import length_drawer
 from test_inverse_robots import check_round_trip
 
 from dhsym import Chain, DHRow, Step
@@ -18,20 +19,7 @@ HALF = sympy.pi / 2
 
 @st.composite
 def pieper_arms(draw):
-    sample = {}
-    count = iter(range(1, 40))
-
-    def length(may_be_zero=True):
-        choices = (["zero"] if may_be_zero else []) + ["symbol", "decimal"]
-        kind = draw(st.sampled_from(choices))
-        value = sympy.Rational(draw(st.integers(15, 90)), 100)
-        if kind == "zero":
-            return sympy.Integer(0)
-        if kind == "decimal":
-            return value
-        symbol = sympy.Symbol(f"L_{next(count)}", real=True)
-        sample[symbol] = value
-        return symbol
+    length, sample = length_drawer(draw)
 
     sign = lambda: draw(st.sampled_from([1, -1]))  # noqa: E731
     offset = lambda: draw(st.sampled_from([0, 0, HALF, -sympy.pi / 6]))  # noqa: E731
