@@ -159,12 +159,12 @@ def general_file(tmp_path_factory):
 @pytest.mark.slow
 def test_the_general_arm_of_a_robot_file_through_every_output(general_file, tmp_path):
     text = run_dhsym("ik", str(general_file)).ok()
-    assert "as Pieper solved them" in text and "theta_3 root 4, wrist flipped" in text
+    assert "as Pieper solved them" in text and "quartic root 4, wrist flipped" in text
     assert "A4 =" in text and "θ3 = atan2(2 u, 1 − u²)" in text
     chain = _loaded(general_file)
     data = ik_checks.check_json(run_dhsym("ik", str(general_file), "--format", "json").ok(), chain)
-    assert [b["name"] for b in data["solutions"]][:2] == ["theta_3 root 1, wrist not flipped",
-                                                        "theta_3 root 1, wrist flipped"]
+    assert [b["name"] for b in data["solutions"]][:2] == ["quartic root 1, wrist not flipped",
+                                                        "quartic root 1, wrist flipped"]
     assert dict(data["definitions"])["x_c"] == "px - 0.1*r13"  # decimals as written
     module_path = tmp_path / "general_ik.py"
     module_path.write_text(run_dhsym("ik", str(general_file), "--format", "python").ok(), encoding="utf-8")
@@ -243,7 +243,7 @@ def test_a_general_arm_after_a_wrist_at_the_start_is_solved_from_the_end(convent
     solution = solve(chain)
     assert "seen from the last frame gives q_4, q_5, q_6 as Pieper solved them: a quartic in tan(θ4/2)" \
         in solution.method
-    assert solution.branches[0].name == "q_4 root 1, wrist not flipped"
+    assert solution.branches[0].name == "quartic root 1, wrist not flipped"
     check_round_trip(chain, solution, random.Random(4), trials=3)
 
 

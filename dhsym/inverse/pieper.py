@@ -113,8 +113,9 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
         Step(g1 * sympy.sin(turn * t1) + g2 * sympy.cos(t1), q[1], "atan2 of a pair", (t1,),
              "its y (equation 2 of 2)"),
     ]
-    derivation.conditions.append(f"{t3} root k exists where the root {u} of the quartic is real: 4, 2 or none of "
-                                 "the four roots are, and a root that is not real is a branch that does not exist")
+    derivation.conditions.append(f"quartic root k (for {t3}) exists where the root {u} of the quartic is real: 4, 2 "
+                                 "or none of the four roots are, and a root that is not real is a branch that does "
+                                 "not exist")
     derivation.degenerate += [f"{f1 ** 2 + f2 ** 2} = 0: {t2} is not determined (the wrist centre on axis {n2})",
                               f"{g1 ** 2 + g2 ** 2} = 0: {t1} is not determined (the wrist centre on axis {n1})",
                               f"{a4} = 0: {t3} = pi is a root, which u = tan({t3}/2) does not reach"]

@@ -213,7 +213,7 @@ def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:
                            first_joint, wrist_joints)
         roots = [(joint, c) for (_, joint, rule), c in zip(signs, choice) if rule == "quartic"]
         if roots:  # the quartic's two signs choose one of its four roots
-            said = f"{roots[0][0]} root {root_number(roots[0][1], roots[1][1])}"
+            said = f"quartic root {root_number(roots[0][1], roots[1][1])}"
             name = said if name == "the only solution" else f"{said}, {name}"
         for n, v, mine in held:
             key = (n, v, tuple(values[s] for s in mine))
