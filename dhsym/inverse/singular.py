@@ -20,8 +20,7 @@ import sympy
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
 from ..velocity.geometry import axis_line, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
-
-UNSAID = "only the sum (or difference) of the angles about them is determined"
+from .subproblems import LINED_UP_UNSAID, factor_bases
 
 
 def tie_to_jacobian(chain, derivation) -> None:
@@ -29,7 +28,7 @@ def tie_to_jacobian(chain, derivation) -> None:
     joints = set(chain.joint_variables)
     found = []
     for expr, index in derivation.vanishing:
-        bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
+        bases = factor_bases(expr)
         found.append((index, bases))
     possible = [b for _, bases in found for b in bases if b.free_symbols <= chain.symbols and b.free_symbols & joints]
     if not possible:
@@ -57,9 +56,9 @@ def wrist_factors(chain) -> list:
 def say_lined_up(chain, derivation) -> None:
     """Where sin θk = 0 lines up two axes, say which of the sum or the difference is determined."""
     for expr, index in derivation.vanishing:
-        bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
-        if UNSAID in derivation.degenerate[index] and len(bases) == 1 and isinstance(base := bases.pop(), sympy.sin):
-            derivation.degenerate[index] = derivation.degenerate[index].replace(UNSAID, lined_up(chain, base.args[0]))
+        bases, sentence = factor_bases(expr), derivation.degenerate[index]
+        if LINED_UP_UNSAID in sentence and len(bases) == 1 and isinstance(base := bases.pop(), sympy.sin):
+            derivation.degenerate[index] = sentence.replace(LINED_UP_UNSAID, lined_up(chain, base.args[0]))
 
 
 def lined_up(chain, angle) -> str:
@@ -74,7 +73,7 @@ def lined_up(chain, angle) -> str:
     """
     k = list(chain.joint_variables).index(angle) + 1
     if not 1 < k < chain.n:
-        return UNSAID
+        return LINED_UP_UNSAID
     values = sample_values(chain, random.Random(k))
     values[angle] = 0.0
     frame_poses = poses(chain, values)
@@ -94,7 +93,7 @@ def lined_up(chain, angle) -> str:
     after, away = parallel_run(k + 1, 1)
     alike = sum(x * y for x, y in zip(towards, away))
     if not before or not after or abs(abs(alike) - 1) > 1e-9:
-        return UNSAID
+        return LINED_UP_UNSAID
 
     def total(run, sign=1):
         return " ".join(f"{'+' if sign * s > 0 else '-'} {chain.joint_variables[j - 1]}" for j, s in sorted(run))

@@ -201,16 +201,26 @@ def determinant(first, second, factored: bool = True) -> sympy.Expr:
 def determinant_sign(first, second) -> int | None:
     """+1 or −1 when the pair's determinant keeps one sign wherever it is not zero, else None.
     [[α, −β], [β, α]] has α² + β² ≥ 0 and [[α, β], [β, −α]] has −(α² + β²) ≤ 0."""
+    rotation = rotation_sign(first, second)
+    if rotation is not None:
+        return rotation
+    (a1, b1, _), (a2, b2, _) = first, second
+    det = algebra.expand(a1 * b2 - a2 * b1)
+    if det.is_number:
+        return 1 if det > 0 else -1 if det < 0 else None
+    return 1 if det.is_nonnegative else -1 if det.is_nonpositive else None
+
+
+def rotation_sign(first, second) -> int | None:
+    """+1 for a pair [[α, −β], [β, α]] (determinant α² + β²), −1 for [[α, β], [β, −α]]
+    (−(α² + β²)), else None."""
     (a1, b1, _), (a2, b2, _) = first, second
     zero = lambda e: algebra.expand(e) == 0  # noqa: E731
     if zero(a1 - b2) and zero(b1 + a2):
         return 1
     if zero(a1 + b2) and zero(b1 - a2):
         return -1
-    det = algebra.expand(a1 * b2 - a2 * b1)
-    if det.is_number:
-        return 1 if det > 0 else -1 if det < 0 else None
-    return 1 if det.is_nonnegative else -1 if det.is_nonpositive else None
+    return None
 
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:
@@ -250,6 +260,14 @@ def prismatic(coefficients, sigma) -> sympy.Expr:
     return (-b + sigma * sympy.sqrt(b ** 2 - 4 * a * c)) / (2 * a)
 
 
+LINED_UP_UNSAID = "only the sum (or difference) of the angles about them is determined"  # singular.py says which
+
+
+def factor_bases(expr) -> set:
+    """The factors of a product that are not numbers, a power by its base: −2 sin(θ5)² → {sin(θ5)}."""
+    return {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
+
+
 def degenerate_pair(det, shown, forms) -> str:
     """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
     (the wrist's s5), the axes on either side of joint k line up: a one-parameter family. A pair
@@ -259,17 +277,16 @@ def degenerate_pair(det, shown, forms) -> str:
     >>> degenerate_pair(x**2 + y**2, t, ((x, -y, 1), (y, x, 2)))
     'x = 0 and y = 0: t is not determined by these equations'
     """
-    bases = {f.base if f.is_Pow else f for f in sympy.Mul.make_args(det) if not f.is_number}
+    bases = factor_bases(det)
     if len(bases) == 1:
         (base,) = bases
         if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
             return (f"{base} = 0: {shown} is not determined on its own: the axes on either side of "
-                    f"{base.args[0]} line up, and only the sum (or difference) of the angles about them is "
-                    "determined, a one-parameter family (a numeric evaluation gives one member)")
-    (a1, b1, _), (a2, b2, _) = forms
-    rotation = (algebra.expand(a1 - b2) == 0 and algebra.expand(b1 + a2) == 0
-                or algebra.expand(a1 + b2) == 0 and algebra.expand(b1 - a2) == 0)
-    if rotation and length(a1) + length(b1) < length(det):  # pz² + (px c1 + py s1)², expanded, is longer
+                    f"{base.args[0]} line up, and {LINED_UP_UNSAID}, a one-parameter family (a numeric "
+                    "evaluation gives one member)")
+    a1, b1, _ = forms[0]
+    # α = 0 and β = 0 where that is shorter than α² + β² expanded (pz² + (px c1 + py s1)²)
+    if rotation_sign(*forms) is not None and length(a1) + length(b1) < length(det):
         first, second = sorted((str(unsigned(a1)), str(unsigned(b1))))
         return f"{first} = 0 and {second} = 0: {shown} is not determined by these equations"
     return f"{unsigned(det)} = 0: {shown} is not determined by these equations"
