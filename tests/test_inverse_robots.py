@@ -227,10 +227,35 @@ PX100 = (Path(_RTB_DATA.origin).parent if _RTB_DATA else Path("/nonexistent")) /
 
 @pytest.mark.skipif(not PX100.exists() or importlib.util.find_spec("xacro") is None,
                     reason="rtb-data or xacro is not installed")
-@pytest.mark.xfail(strict=True, reason="known bug: the px100's waist root is chosen from the position alone; at "
-                   "some poses the other root is the one that keeps r11, r21 (see docs/limits.md)")
 def test_an_imported_four_joint_px100_reaches_every_pose_it_solves_for():
     from dhsym.io.urdfimport import import_urdf
 
     robot = import_urdf(PX100, None, "/ee_gripper_link", "standard").robot
-    check_round_trip(robot, solve(robot), random.Random(3), trials=6)
+    solution = solve(robot)
+    check_round_trip(robot, solution, random.Random(3), trials=20)
+    assert len(solution.branches) == 2  # the waist from the tool's axis, not from px, py: only the elbow's two
+
+
+PITCH_ARM = """name: pitch arm
+convention: {convention}
+joints:
+  - {{joint: R, theta: theta_1, d: d_1, a: 0, alpha: pi/2}}
+  - {{joint: R, theta: theta_2, d: 0, a: a_2, alpha: 0}}
+  - {{joint: R, theta: theta_3, d: 0, a: a_3, alpha: 0}}
+  - {{joint: R, theta: theta_4, d: 0, a: a_4, alpha: 0}}
+sample: {{d_1: 0.09, a_2: 0.106, a_3: 0.1, a_4: 0.114}}
+"""
+
+
+def test_a_waist_and_three_pitch_joints_take_the_waist_from_the_tool_not_the_position(tmp_path):
+    # The waist's two roots from px, py (atan2(py, px) and its opposite) both put the tool's point
+    # in the arm's plane; only one turns the tool as the target does. A four-joint arm cannot
+    # reach every pose, so the search must not keep a root the rest of the target contradicts.
+    path = tmp_path / "pitch.yaml"
+    path.write_text(PITCH_ARM.format(convention="standard"))
+    robot = dhsym.load(str(path))
+    solution = solve(robot)
+    check_round_trip(robot, solution, random.Random(7), trials=20)
+    assert len(solution.branches) == 2
+    theta_1 = solution.branches[0].values()[robot.joint_variables[0]]
+    assert theta_1.free_symbols <= {sympy.Symbol(n, real=True) for n in ("r13", "r23")}

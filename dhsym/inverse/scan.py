@@ -63,12 +63,13 @@ class Candidate:
 
 
 def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, prefer=("position",),
-         constants=frozenset(), witness: dict | None = None) -> Derivation:
+         constants=frozenset(), witness: dict | None = None, unique=frozenset()) -> Derivation:
     """Solve `equations` for `unknowns` (in the order a textbook numbers them); `prismatic` is the
     set of those that are slides; `constants` the robot's lengths (never zero). `witness` gives
     numbers for every name at one generic pose: an equation whose coefficients vanish there says
-    nothing (0 = 0 once earlier results hold) and is passed over. Raises UserError when no
-    sub-problem applies."""
+    nothing (0 = 0 once earlier results hold) and is passed over. The joints in `unique` are
+    solved only by a rule with one root (their two roots were found not both to reach the pose:
+    dhsym.inverse.reach). Raises UserError when no sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
     for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works):
@@ -78,7 +79,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
     while remaining:
-        best = _best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness)
+        best = _best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, unique)
         if best is None:
             solved = [str(v) for v in unknowns if v not in remaining]
             raise UserError("no closed form by the course's rules: "
@@ -119,11 +120,12 @@ def _vanishes(expr, witness: dict) -> bool:
     return value is not None and abs(value) < WITNESS_ZERO
 
 
-def _best(pool, remaining, prismatic, prefer, constants, witness):
+def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozenset()):
     """(rule, candidates) of the best solvable sub-problem, or None. Equations are sorted by
     length within each unknown first, and only the shortest few are worked out: a bounded cost."""
     order = list(prefer) + [k for k in ("position", "orientation", "mixed") if k not in prefer]
-    kind_rank = lambda c: order.index(c.equation.kind)  # noqa: E731
+    # a joint in `unique` is taken from whichever kind fixes it, as soon as one does
+    kind_rank = lambda c: 0 if c.variable in unique else order.index(c.equation.kind)  # noqa: E731
     groups: dict = {}
     unknown = set(remaining)
     for equation in pool:
@@ -144,21 +146,28 @@ def _best(pool, remaining, prismatic, prefer, constants, witness):
     # kind can be in the best option (the kind ranks first), and its forms are never needed.
     ordered = {angle: sorted(group, key=lambda item: item[:5]) for angle, group in groups.items()}
     worked: dict = {angle: [] for angle in ordered}
+    settled = False  # a kind has given a candidate: later kinds are worked only for the joints in `unique`
     for level in range(len(order)):
         for angle, items in ordered.items():
+            alone = items[0][-1][1] in unique  # any kind may give its unique rule, so each kind gets its share
+            if settled and not alone:
+                continue
             for kind, *_, equation, shape in items:
-                if kind != level or len(worked[angle]) >= FORMS_PER_UNKNOWN:
+                if kind != level or len(worked[angle]) >= FORMS_PER_UNKNOWN * (level + 1 if alone else 1):
                     continue
                 if shape[1] not in prismatic and lookups.silent(equation.expr, shape, witness):
                     continue  # its form, worked out, would say nothing: not worked out
                 candidate = _candidate(equation, shape, constants)
                 if candidate is not None and not _says_nothing(candidate, prismatic, witness):
                     worked[angle].append(candidate)
-        if any(worked.values()):
+        settled = settled or any(c.variable not in unique for found in worked.values() for c in found)
+        if settled and not unique:
             break
     singles = [c for found in worked.values() for c in found]
     options = []
     for c in singles:
+        if c.variable in unique and (c.variable not in prismatic or len(c.form) != 2):
+            continue  # two roots, not both reaching the pose
         if c.variable in prismatic:
             rule = "linear" if len(c.form) == 2 else "quadratic"
             # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
@@ -314,6 +323,7 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     first = candidates[0]
     angle, variable = first.angle, first.variable
     shown = angle if angle != variable else variable
+    said = variable if (angle - variable).is_number else shown  # "q3", not "q3 - 123412150740817/1e14"
     if rule == "pair":
         for index, c in enumerate(candidates, start=1):
             a, b, k = c.form
@@ -328,7 +338,7 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
         forms = (candidates[0].form, candidates[1].form)
         if not det.is_number:
             derivation.vanishing.append((det, len(derivation.degenerate)))
-            derivation.degenerate.append(sp.degenerate_pair(det, shown, forms))
+            derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
         return sp.pair(*forms, _signs[forms] if forms in _signs else sp.determinant_sign(*forms))
     sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
     if rule == "linear":
@@ -359,10 +369,10 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     derivation.signs.append((sigma, variable, "law" if law else "one"))
     root = sp.existence(a, b, c)
     if root is not None:
-        derivation.conditions.append(f"{root} >= 0 (else {shown} has no real value: the target is out of reach; "
+        derivation.conditions.append(f"{root} >= 0 (else {said} has no real value: the target is out of reach; "
                                      "where it is 0 the two roots meet)")
     if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
-        derivation.degenerate.append(f"{sp.unsigned(a)} = 0 and {sp.unsigned(b)} = 0: {shown} is not determined "
+        derivation.degenerate.append(f"{sp.unsigned(a)} = 0 and {sp.unsigned(b)} = 0: {said} is not determined "
                                      "by this equation")
     return sp.one_equation(a, b, c, sigma, shape)
 

@@ -24,6 +24,7 @@ from .branches import branch_name
 from .equations import point_equations, transform_equations
 from .pieper import pieper
 from .quartic import root_number
+from .reach import wrong_root
 from .scan import Derivation, scan
 from .singular import say_lined_up, tie_to_jacobian
 from .solution import Branch, Solution, target_matrix, target_symbols
@@ -44,6 +45,44 @@ def solve(chain, free=()) -> Solution:
     unknowns = [chain.joint_variables[j - 1] for j in structure.unknowns]
     prismatic = {v for v, row in zip(chain.joint_variables, chain.rows) if row.joint == "P"} & set(unknowns)
     target, fixed = _target(chain, len(unknowns))
+    unique: set = set()  # joints whose two roots were found not both to reach the pose
+    while True:
+        try:
+            derivation, definitions, wrist_joints, method = _derive(robot, structure, unknowns, prismatic, target,
+                                                                    frozenset(unique))
+        except UserError as refusal:
+            if not unique:
+                raise
+            raise UserError(f"{refusal}; the two roots of {_names(sorted(unique, key=unknowns.index))} "
+                            f"do not both reach the target (the arm has {len(unknowns)} unknown joints: its "
+                            "target is not free), and no equation gives one root") from None
+        wrong = wrong_root(robot, definitions, derivation, unknowns)
+        if wrong is None or wrong in unique:
+            break
+        unique.add(wrong)
+    assignments = derivation.assignments
+    definitions, assignments = _shared_first(definitions, assignments, chain.joint_variables, derivation.signs)
+    conditions = list(derivation.conditions)
+    used = _used_elements(definitions, assignments)
+    if len(unknowns) < 6:
+        method += f" (target elements used: {', '.join(used)})"
+        joints = f"{len(unknowns)} unknown joint{'s' if len(unknowns) != 1 else ''}"
+        conditions.append(f"the arm has {joints}: only {', '.join(used)} are used, "
+                          "and the other elements of the target must be consistent with them"
+                          + (f" (in every pose of this arm {fixed})" if fixed else ""))
+    say_lined_up(chain, derivation)
+    if structure.wrist and len(unknowns) == 6 and chain.n == 6:
+        tie_to_jacobian(robot, derivation)
+    branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)
+    return Solution(robot, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
+                    tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),
+                    tuple(derivation.steps))
+
+
+def _derive(robot, structure, unknowns, prismatic, target, unique):
+    """(derivation, definitions, wrist joints, method line) by the method the axes choose; the
+    joints in `unique` are solved only by a rule with one root."""
+    chain = robot.chain
     derivation = Derivation()
     constants = frozenset(chain.symbols - set(chain.joint_variables))
     numbers = witness(robot)
@@ -63,7 +102,7 @@ def solve(chain, free=()) -> Solution:
         kept = dict(numbers)
         try:
             scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder), arm, prismatic, derivation,
-                 constants=constants, witness=numbers)
+                 constants=constants, witness=numbers, unique=unique)
         except UserError as refusal:  # no sub-problem: Pieper's elimination, a quartic in tan(θ3/2)
             derivation, numbers = Derivation(), kept
             try:
@@ -72,7 +111,7 @@ def solve(chain, free=()) -> Solution:
                 raise refusal from None
             pieper_used = True
         scan(transform_equations(robot, target, position=False, start=holder), wrist_joints, prismatic, derivation,
-             prefer=("orientation",), constants=constants, witness=numbers)
+             prefer=("orientation",), constants=constants, witness=numbers, unique=unique)
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.wrist)} meet at the wrist "
                   "centre; "
                   f"the position of the wrist centre gives {_names(arm)}"
@@ -91,7 +130,7 @@ def solve(chain, free=()) -> Solution:
         kept = dict(numbers)
         try:
             scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
-                 arm, prismatic, derivation, constants=constants, witness=numbers)
+                 arm, prismatic, derivation, constants=constants, witness=numbers, unique=unique)
         except UserError as refusal:  # as above, the arm counted from the end
             derivation, numbers = Derivation(), kept
             try:
@@ -101,41 +140,25 @@ def solve(chain, free=()) -> Solution:
                 raise refusal from None
             pieper_used = True
         scan(transform_equations(robot, target, position=False, end=holder), wrist_joints, prismatic, derivation,
-             prefer=("orientation",), constants=constants, witness=numbers)
+             prefer=("orientation",), constants=constants, witness=numbers, unique=unique)
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.first_wrist)} meet at a "
                   f"point fixed in the base; that point seen from the last frame gives {_names(arm)}"
                   + (_pieper_said(robot, derivation) if pieper_used else "") + f", the orientation "
                   f"{_names(wrist_joints)}")
     elif structure.spherical:
         scan(transform_equations(robot, target, position=False), unknowns, prismatic, derivation,
-             prefer=("orientation",), constants=constants, witness=numbers)
+             prefer=("orientation",), constants=constants, witness=numbers, unique=unique)
         wrist_joints = unknowns
         method = f"a spherical wrist: the axes of joints {_joints(robot, structure.unknowns)} meet in a point; " \
                  "the orientation gives the Euler angles"
     else:
         scan(transform_equations(robot, target, position=True), unknowns, prismatic, derivation,
-             constants=constants, witness=numbers)
+             constants=constants, witness=numbers, unique=unique)
         method = "the sub-problems of the equations (Hawkins's way for three parallel axes)" \
             if structure.parallel and len(unknowns) == 6 else "position problem by sub-problems"
         if structure.parallel and len(unknowns) == 6:  # the joints after the parallel ones turn the tool
             wrist_joints = [chain.joint_variables[j - 1] for j in structure.unknowns if j > structure.parallel[-1]]
-    assignments = derivation.assignments
-    definitions, assignments = _shared_first(definitions, assignments, chain.joint_variables, derivation.signs)
-    conditions = list(derivation.conditions)
-    used = _used_elements(definitions, assignments)
-    if len(unknowns) < 6:
-        method += f" (target elements used: {', '.join(used)})"
-        joints = f"{len(unknowns)} unknown joint{'s' if len(unknowns) != 1 else ''}"
-        conditions.append(f"the arm has {joints}: only {', '.join(used)} are used, "
-                          "and the other elements of the target must be consistent with them"
-                          + (f" (in every pose of this arm {fixed})" if fixed else ""))
-    say_lined_up(chain, derivation)
-    if structure.wrist and len(unknowns) == 6 and chain.n == 6:
-        tie_to_jacobian(robot, derivation)
-    branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)
-    return Solution(robot, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
-                    tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),
-                    tuple(derivation.steps))
+    return derivation, definitions, wrist_joints, method
 
 
 def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:

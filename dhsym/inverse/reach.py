@@ -1,0 +1,77 @@
+"""Whether both roots of each two-root step reach the pose. An arm of fewer than six joints cannot
+reach every target: its equations are more than its unknowns, and the search solves each joint
+from some of them. A root chosen from the position alone may then turn the tool the wrong way
+(the px100's waist: atan2(py, px) and atan2(−py, −px) both put the wrist in the arm's plane, but
+only one keeps the tool's r11, r21). Such a root is found here in numbers, at a few generic poses: a branch
+that is real and misses the pose, while the branch with that one sign flipped reaches it.
+
+>>> import dhsym, sympy
+>>> from dhsym.inverse.scan import Derivation
+>>> from dhsym.inverse.solve import solve
+>>> arm = dhsym.load("planar2r")
+>>> t1, t2 = arm.joint_variables
+>>> solution = solve(arm)
+>>> (D, _), = solution.definitions
+>>> y, x = solution.branches[0].values()[t1].args
+>>> s1, s2 = sympy.symbols("sigma_1 sigma_2", real=True)
+>>> elbow = sympy.atan2(s1 * sympy.sqrt(1 - D**2), D)
+>>> both = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(y, x))], signs=[(s1, t2, "law")])
+>>> wrong_root(arm, solution.definitions, both, [t1, t2]) is None   # elbow up and down both reach
+True
+>>> turned = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(s2 * y, s2 * x))],
+...                     signs=[(s1, t2, "law"), (s2, t1, "one")])
+>>> wrong_root(arm, solution.definitions, turned, [t1, t2])   # θ1 + π points the arm away
+theta_1
+"""
+from __future__ import annotations
+
+from itertools import product
+
+from ..core.robot import as_robot
+from ..velocity.geometry import poses
+from .solution import target_symbols
+from .witness import SEED, number_at, witness
+
+SEEDS = (SEED, SEED + 1, SEED + 2)  # a wrong root is wrong at any generic pose; three spare a non-real one
+MISS = 1e-6  # the pose's elements are of order one (lengths of the robot's sample, rotations)
+
+
+def wrong_root(robot, definitions, derivation, unknowns):
+    """The joint whose two roots do not both reach the pose (the first such, in the derivation's
+    order), or None. `definitions` and `derivation.assignments` are computed in order, each sign
+    σ = ±1; `unknowns` are the joint variables solved for (the rest are given)."""
+    robot = as_robot(robot)
+    chain = robot.chain
+    signs = [sigma for sigma, _, _ in derivation.signs]
+    blamed = [(k, joint) for k, (_, joint, rule) in enumerate(derivation.signs) if rule != "quartic"]
+    if not blamed:
+        return None
+    steps = list(definitions) + list(derivation.assignments)
+    held = set().union(*(expression.free_symbols for _, expression in steps))
+    used = [k for k, t in enumerate(target_symbols()) if t in held]  # what the branches claim to reach
+    for seed in SEEDS:
+        numbers = witness(robot, seed)
+        target = [float(numbers[t]) for t in target_symbols()]
+        given = {s: float(x) for s, x in numbers.items() if s not in unknowns}
+        reached = {choice: _reaches(chain, steps, {**given, **dict(zip(signs, choice))}, target, used)
+                   for choice in product((1, -1), repeat=len(signs))}
+        for k, joint in blamed:
+            for choice, reaches in reached.items():
+                flipped = choice[:k] + (-choice[k],) + choice[k + 1:]
+                if reaches is False and reached[flipped]:
+                    return joint
+    return None
+
+
+def _reaches(chain, steps, values: dict, target: list, used: list) -> bool | None:
+    """Whether the branch's joint values give the elements `used` (indices, row by row) of `target`
+    (12 numbers); None where the branch has no real value at this pose. An arm of fewer than six
+    joints reaches what its solution uses (a planar 2R its px, py), the rest following from that."""
+    for name, expression in steps:
+        value = number_at(expression, values)
+        if value is None:
+            return None
+        values[name] = value
+    rotation, origin = poses(chain, {s: values[s] for s in chain.symbols})[chain.last_frame]
+    reached = [x for r in range(3) for x in (*rotation[r], origin[r])]
+    return all(abs(reached[k] - target[k]) <= MISS * max(1.0, abs(target[k])) for k in used)
