@@ -4,27 +4,17 @@ geometry the word says (shoulder left/right, front/back, elbow up/down, lefty/ri
 forward/back, wrist flipped or not), computed here from the axes, never by dhsym's naming code."""
 import importlib.metadata
 import importlib.util
-from pathlib import Path
 
 import numpy as np
 import pytest
 import sympy
 from ik_checks import random_joints, sample_constants
+from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
 
 from dhsym.io.library import load
 
-
-def _package_folder(distribution: str, inside: str) -> Path:
-    """Where an installed distribution keeps its data (a path that does not exist when it is not installed)."""
-    try:
-        return Path(importlib.metadata.distribution(distribution).locate_file(inside))
-    except importlib.metadata.PackageNotFoundError:
-        return Path("/nonexistent")
-
-
-IRB140 = _package_folder("rtb-data", "rtbdata/xacro/abb_irb140_description/urdf/irb140.xacro")
-UR10 = _package_folder("example-robot-data", "cmeel.prefix/share/example-robot-data/robots/ur_description/urdf/"
-                                              "ur10_robot.urdf")
+IRB140 = RTB_XACRO / "abb_irb140_description/urdf/irb140.xacro"
+UR10 = EXAMPLE_ROBOT_DATA / "ur_description/urdf/ur10_robot.urdf"
 TINY = 1e-6  # a measure this small says nothing (the pose is on the boundary between two words)
 
 # the words each arm's branches must use: pairs of (one word, the other); "√" where its name says the root

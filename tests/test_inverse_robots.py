@@ -7,11 +7,11 @@ import importlib.util
 import math
 import random
 import re
-from pathlib import Path
 
 import numpy
 import pytest
 import sympy
+from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
 
 import dhsym
 from dhsym.core.robot import Robot
@@ -220,9 +220,8 @@ def test_where_two_axes_line_up_the_angle_said_to_be_determined_is(name):
         assert not numpy.allclose(rotation(moved_q), rotation(q), atol=1e-3)
 
 
-_RTB_DATA = importlib.util.find_spec("rtbdata")
-PX100 = (Path(_RTB_DATA.origin).parent if _RTB_DATA else Path("/nonexistent")) / "xacro" / "trossen_descriptions" / \
-    "urdf" / "px100.urdf.xacro"
+PX100 = RTB_XACRO / "trossen_descriptions/urdf/px100.urdf.xacro"
+ALEXANDER = EXAMPLE_ROBOT_DATA / "alexander_description/urdf/alexander_v1.lowerBodyOnly.urdf"
 
 
 @pytest.mark.skipif(not PX100.exists() or importlib.util.find_spec("xacro") is None,
@@ -234,6 +233,19 @@ def test_an_imported_four_joint_px100_reaches_every_pose_it_solves_for():
     solution = solve(robot)
     check_round_trip(robot, solution, random.Random(3), trials=20)
     assert len(solution.branches) == 2  # the waist from the tool's axis, not from px, py: only the elbow's two
+
+
+@pytest.mark.skipif(not ALEXANDER.exists(), reason="example-robot-data is not installed")
+def test_a_leg_whose_roots_cannot_all_reach_is_refused_not_printed_wrong():
+    # Alexander's left leg to the shin (hip x, z, y and the knee: four joints, offsets on every
+    # link). No equation gives its joints one root each, and the two-root steps found leave
+    # branches that miss the pose: before inverse/reach.py they were printed as answers.
+    from dhsym.errors import UserError
+    from dhsym.io.urdfimport import import_urdf
+
+    robot = import_urdf(ALEXANDER, None, "LEFT_SHIN_IMU_LINK", "standard").robot
+    with pytest.raises(UserError, match=r"do not both reach the target \(the arm has 4 unknown joints"):
+        solve(robot)
 
 
 PITCH_ARM = """name: pitch arm

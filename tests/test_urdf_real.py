@@ -13,6 +13,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 from cli_runner import run_dhsym
+from packages import EXAMPLE_ROBOT_DATA as ERD
+from packages import RTB_XACRO as RTB
 
 from dhsym.io.robotfile import load_robot_file
 from dhsym.io.urdfimport import import_urdf
@@ -20,16 +22,6 @@ from dhsym.io.urdfimport import import_urdf
 yourdfpy = pytest.importorskip("yourdfpy", reason="yourdfpy computes the URDF's own kinematics (requirements-dev.txt)")
 
 
-def _package_folder(distribution: str, inside: str) -> Path | None:
-    """Where an installed distribution keeps its data, or None when it is not installed."""
-    try:
-        return Path(importlib.metadata.distribution(distribution).locate_file(inside))
-    except importlib.metadata.PackageNotFoundError:
-        return None
-
-
-ERD = _package_folder("example-robot-data", "cmeel.prefix/share/example-robot-data/robots")
-RTB = _package_folder("rtb-data", "rtbdata/xacro")
 
 # (label, folder, file, base, tip); base and tip None: the file's own root and only leaf
 EXAMPLE_ROBOT_DATA = [
@@ -69,10 +61,10 @@ def _cases():
     for folder, table, reason in ((ERD, EXAMPLE_ROBOT_DATA, "example-robot-data is not installed"),
                                   (RTB, RTB_DATA, "rtb-data is not installed")):
         for label, relative, base, tip in table:
-            skip = [] if folder is not None and folder.exists() else [pytest.mark.skip(reason=reason)]
+            skip = [] if folder.exists() else [pytest.mark.skip(reason=reason)]
             if relative.endswith(".xacro") and importlib.util.find_spec("xacro") is None:
                 skip = [pytest.mark.skip(reason="the xacro package is not installed")]
-            yield pytest.param(label, (folder or Path("/nonexistent")) / relative, base, tip, id=label, marks=skip)
+            yield pytest.param(label, folder / relative, base, tip, id=label, marks=skip)
 
 
 @functools.cache
