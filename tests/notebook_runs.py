@@ -1,5 +1,5 @@
 """Each notebook executed once per test session, shared by the tests that need its outputs
-(test_notebooks.py checks that it runs, test_notebook_pages.py renders its page)."""
+(test_notebook_pages.py checks that it runs and renders its page)."""
 from __future__ import annotations
 
 import functools

@@ -5,7 +5,8 @@ formula wider than the page's content column at a 1280 px window.
 The pages and a screenshot of each are kept in build/notebook-pages/ for a person to look at.
 Chromium is Debian's (scripts/ensure-browser.sh), driven by Playwright; MathJax comes from
 node_modules (scripts/ensure-node-packages.sh). Each notebook is executed once per session
-(notebook_runs.executed), shared with test_notebooks.py.
+(notebook_runs.executed): the test that it executes is here too, so that xdist's --dist loadfile
+gives both to one worker and no notebook runs twice.
 """
 from __future__ import annotations
 
@@ -105,6 +106,13 @@ def _shows_math(cell) -> bool:
     if cell.cell_type == "markdown":
         return bool(MATH_IN_SOURCE.search(cell.source))
     return any("text/latex" in output.get("data", {}) for output in cell.get("outputs", []))
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_notebook_executes(path):
+    pytest.importorskip("nbclient")
+    notebook = executed(path)  # a cell that raises fails here with its traceback
+    assert any(cell.get("outputs") for cell in notebook.cells), f"{path.name} printed nothing"
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
