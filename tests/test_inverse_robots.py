@@ -244,7 +244,7 @@ def test_a_leg_whose_roots_cannot_all_reach_is_refused_not_printed_wrong():
     from dhsym.io.urdfimport import import_urdf
 
     robot = import_urdf(ALEXANDER, None, "LEFT_SHIN_IMU_LINK", "standard").robot
-    with pytest.raises(UserError, match=r"do not both reach the target \(the arm has 4 unknown joints"):
+    with pytest.raises(UserError, match=r"one root missed the target \(an arm of 4 unknown joints cannot reach every"):
         solve(robot)
 
 

@@ -53,9 +53,11 @@ def solve(chain, free=()) -> Solution:
         except UserError as refusal:
             if not unique:
                 raise
-            raise UserError(f"{refusal}; the two roots of {_names(sorted(unique, key=unknowns.index))} "
-                            f"do not both reach the target (the arm has {len(unknowns)} unknown joints: its "
-                            "target is not free), and no equation gives one root") from None
+            joints = sorted(unique, key=unknowns.index)
+            raise UserError(f"{refusal}; where {_names(joints)} came from an equation with two roots, one root "
+                            f"missed the target (an arm of {len(unknowns)} unknown joints cannot reach every "
+                            f"pose), and no equation gives {'it' if len(joints) == 1 else 'them'} with one root"
+                            ) from None
         wrong = wrong_root(robot, definitions, derivation, unknowns)
         if wrong is None or wrong in unique:
             break
