@@ -49,7 +49,8 @@ def used_elements(solution) -> list[tuple[int, int]]:
 
 def check_round_trip(chain, solution, rng, trials=4, constants=None):
     constants = {**{k: float(v) for k, v in chain.sample.items()}, **(constants or {})}
-    elements = used_elements(solution) if len(solution.joint_variables) < 6 else [(r, c) for r in range(3)
+    # a positioning arm (three joints or fewer) reaches the elements it uses; from four joints on, the pose
+    elements = used_elements(solution) if len(solution.joint_variables) < 4 else [(r, c) for r in range(3)
                                                                                    for c in range(4)]
     for _ in range(trials):
         q = {**random_joints(chain, rng), **{k: v for k, v in constants.items() if k in chain.joint_variables}}
@@ -221,18 +222,22 @@ def test_where_two_axes_line_up_the_angle_said_to_be_determined_is(name):
 
 
 PX100 = RTB_XACRO / "trossen_descriptions/urdf/px100.urdf.xacro"
+AL5D = RTB_XACRO / "lynxmotion_al5d_description/urdf/al5d_robot.urdf"
 ALEXANDER = EXAMPLE_ROBOT_DATA / "alexander_description/urdf/alexander_v1.lowerBodyOnly.urdf"
 
 
 @pytest.mark.skipif(not PX100.exists() or importlib.util.find_spec("xacro") is None,
                     reason="rtb-data or xacro is not installed")
-def test_an_imported_four_joint_px100_reaches_every_pose_it_solves_for():
+@pytest.mark.parametrize("path, tip", [(PX100, "/ee_gripper_link"), (AL5D, None)], ids=["px100", "al5d"])
+def test_a_four_joint_arm_from_its_maker_reaches_the_whole_pose_on_every_branch(path, tip):
+    # A waist and three pitch joints (Trossen's PincherX 100, Lynxmotion's AL5D): the waist + π twin
+    # reaches the point with the gripper upside down, so only the elbow's two branches remain.
     from dhsym.io.urdfimport import import_urdf
 
-    robot = import_urdf(PX100, None, "/ee_gripper_link", "standard").robot
+    robot = import_urdf(path, None, tip, "standard").robot
     solution = solve(robot)
     check_round_trip(robot, solution, random.Random(3), trials=20)
-    assert len(solution.branches) == 2  # the waist from the tool's axis, not from px, py: only the elbow's two
+    assert len(solution.branches) == 2
 
 
 @pytest.mark.skipif(not ALEXANDER.exists(), reason="example-robot-data is not installed")

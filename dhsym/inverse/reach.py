@@ -1,9 +1,16 @@
 """Whether both roots of each two-root step reach the pose. An arm of fewer than six joints cannot
 reach every target: its equations are more than its unknowns, and the search solves each joint
-from some of them. A root chosen from the position alone may then turn the tool the wrong way
-(the px100's waist: atan2(py, px) and atan2(−py, −px) both put the wrist in the arm's plane, but
-only one keeps the tool's r11, r21). Such a root is found here in numbers, at a few generic poses: a branch
-that is real and misses the pose, while the branch with that one sign flipped reaches it.
+from some of them. What a branch must reach:
+
+- an arm of three joints or fewer is a positioning arm, as a course teaches it: the elements its
+  solution uses (the planar 2R's px, py; elbow up and down reach the same point, turned apart);
+- from four joints on, the whole pose the arm was at. The PincherX 100 (a waist and three pitch
+  joints) shows why: atan2(py, px) and atan2(−py, −px) both put the wrist in the arm's plane, and
+  with the pitch mirrored both point the gripper the same way, but the second is upside down
+  (turned by π about the gripper's axis): not the target.
+
+A root that misses is found here in numbers, at a few generic poses: a branch that is real and
+misses the pose, while the branch with that one sign flipped reaches it.
 
 >>> import dhsym, sympy
 >>> from dhsym.inverse.scan import Derivation
@@ -33,6 +40,7 @@ from .solution import target_symbols
 from .witness import SEED, number_at, witness
 
 SEEDS = (SEED, SEED + 1, SEED + 2)  # a wrong root is wrong at any generic pose; three spare a non-real one
+POSE_JOINTS = 4  # from this many unknown joints on, a branch must give the whole pose
 MISS = 1e-6  # the pose's elements are of order one (lengths of the robot's sample, rotations)
 
 
@@ -48,7 +56,7 @@ def wrong_root(robot, definitions, derivation, unknowns):
         return None
     steps = list(definitions) + list(derivation.assignments)
     held = set().union(*(expression.free_symbols for _, expression in steps))
-    used = [k for k, t in enumerate(target_symbols()) if t in held]  # what the branches claim to reach
+    used = [k for k, t in enumerate(target_symbols()) if t in held or len(unknowns) >= POSE_JOINTS]
     for seed in SEEDS:
         numbers = witness(robot, seed)
         target = [float(numbers[t]) for t in target_symbols()]
