@@ -348,3 +348,14 @@ def test_an_unprefixed_include_keeps_every_guard(tmp_path):
     assert (status, out) == (2, "")
     assert err == f"dhsym: error: {path}:4:22: xacro:include of /etc/passwd: only .xacro, .urdf and .xml files " \
                   "are included\n"
+
+
+def test_a_property_named_pi_hides_pi_as_in_xacro(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    from dhsym.io.xacro import expand_xacro
+
+    path = tmp_path / "rough.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '  <xacro:property name="pi" value="3.141592654"/>\n'
+                    '  <link name="a" rpy="${-pi/2} ${e}"/></robot>')
+    assert 'rpy="-1.570796327 2.718281828459045"' in expand_xacro(path).decode()
