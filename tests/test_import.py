@@ -341,6 +341,20 @@ def test_what_ros1_did_not_take_for_xacro_stays_plain_xml(tmp_path):
     assert len(warnings) == 2
 
 
+def test_a_ros2_file_keeps_a_plain_element_named_like_its_macro(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    from dhsym.io.xacro import expand_xacro
+
+    path = tmp_path / "modern.xacro"
+    path.write_text('<robot name="m" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '  <xacro:macro name="inertial" params="m"><mass value="${m}"/></xacro:macro>\n'
+                    '  <link name="a"><inertial><mass value="2"/></inertial></link>\n'
+                    '  <link name="b"><xacro:inertial m="3"/></link></robot>')
+    warnings = []
+    text = expand_xacro(path, warnings).decode()
+    assert warnings == [] and "<inertial>" in text and '<mass value="2"/>' in text and '<mass value="3"/>' in text
+
+
 def test_an_unprefixed_include_keeps_every_guard(tmp_path):
     pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
     path = ros1_arm(tmp_path, ROS1_ARM.replace('"old_segment.xacro"', '"/etc/passwd"'))

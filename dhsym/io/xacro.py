@@ -17,8 +17,10 @@ taken out of its hands.
   them, with a deprecation warning, where xacro 2 leaves them as plain XML: `<property>`,
   `<macro>`, `<arg>`, `<if>`, `<unless>`, `<insert_block>`; `<include>` only when it holds nothing
   but text (one with elements inside, such as Gazebo's `<include><uri>…`, stays XML); and an
-  element named like a defined macro is a call of it. Each file that has them gets one warning,
-  at the first of them (`expand_xacro(path, warnings)` appends it to `warnings`).
+  element named like a macro that a `<macro>` tag defined is a call of it (ROS 1 let any macro be
+  called so; a file written for ROS 2 that has a plain element named like one of its xacro:macros
+  keeps it as XML). Each file that has them gets one warning, at the first of them
+  (`expand_xacro(path, warnings)` appends it to `warnings`).
 
 >>> from pathlib import Path
 >>> import tempfile
@@ -109,6 +111,7 @@ class _Expander:
         self.texts = {}
         self.starts = {}  # resolved path -> [(tag name, offset)] of its start tags, in document order
         self.ros1 = {}  # resolved path -> {offset: tag name} of the unprefixed tags read as xacro
+        self.ros1_macros = set()  # the names of macros defined by <macro>, which ROS 1 let <name/> call
         self.files = self.bytes = self.elements = 0
 
     @contextlib.contextmanager
@@ -126,7 +129,8 @@ class _Expander:
             return original_parse(inp, filename)
 
         def handle_macro_call(node, macros, symbols):
-            if ":" not in node.tagName and self.is_macro(node.tagName, macros, symbols):
+            if ":" not in node.tagName and node.tagName.rsplit(".", 1)[-1] in self.ros1_macros \
+                    and self.is_macro(node.tagName, macros, symbols):
                 self.note_ros1_call(node.tagName)  # ROS 1: <name/> calls the macro name
                 node.tagName = node.nodeName = "xacro:" + node.tagName
             return original_call(node, macros, symbols)
@@ -192,6 +196,8 @@ class _Expander:
             if name in ROS1_TAGS or (name == "include" and only_text):
                 element.tagName = element.nodeName = "xacro:" + name
                 self.ros1.setdefault(path, {})[starts[index][1] if placed else -1] = name
+                if name == "macro":
+                    self.ros1_macros.add(element.getAttribute("name"))
 
     def is_macro(self, name: str, macros, symbols) -> bool:
         try:
