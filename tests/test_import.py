@@ -373,3 +373,17 @@ def test_a_property_named_pi_hides_pi_as_in_xacro(tmp_path):
                     '  <xacro:property name="pi" value="3.141592654"/>\n'
                     '  <link name="a" rpy="${-pi/2} ${e}"/></robot>')
     assert 'rpy="-1.570796327 2.718281828459045"' in expand_xacro(path).decode()
+
+
+def test_an_unprefixed_insert_block_inserts_the_block(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    from dhsym.io.xacro import expand_xacro
+
+    path = tmp_path / "block.xacro"
+    path.write_text('<robot name="b">\n  <macro name="hinge" params="*origin">\n'
+                    '    <joint name="j" type="revolute"><insert_block name="origin"/></joint></macro>\n'
+                    '  <hinge><origin xyz="0 0 0.7"/></hinge></robot>')
+    warnings = []
+    text = expand_xacro(path, warnings).decode()
+    assert '<joint name="j" type="revolute">\n    <origin xyz="0 0 0.7"/>' in text and "insert_block" not in text
+    assert [w.split(" without")[0] for w in warnings] == [f"{path}:2:3: <macro>, <insert_block>, <hinge>"]
