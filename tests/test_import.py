@@ -1,6 +1,7 @@
 """`dhsym import` and the `axes:` form: URDF in, a robot file out that dhsym reads back and that
 has the URDF's kinematics; errors are one line with exit status 2 and no output file."""
 import os
+import re
 from pathlib import Path
 
 import numpy as np
@@ -267,3 +268,122 @@ def test_every_xml_encoding_is_decoded_before_it_is_checked(encoding, declared):
     doctype = text.replace("\n<robot", '\n<!DOCTYPE robot [<!ENTITY a "aa">]>\n<robot')
     with pytest.raises(UserError, match=r"x\.urdf:2:1: DOCTYPE and entity declarations are not allowed"):
         parse_xml_text(doctype.encode(encoding), "x.urdf")
+
+
+# --- ROS 1 xacro files: tags without the xacro: prefix (ROS-Industrial's KUKA KR210, say).
+
+ROS1_ARM = """<?xml version="1.0"?>
+<robot name="old_arm" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <property name="upper" value="0.425"/>
+  <include filename="old_segment.xacro"/>
+  <arg name="side" default="left_"/>
+  <link name="$(arg side)base"/>
+  <if value="${upper > 0}">
+    <segment name="shoulder" parent="$(arg side)base" child="$(arg side)upper" z="0.1"/>
+  </if>
+  <unless value="${upper > 0}"><link name="never"/></unless>
+  <xacro:segment name="elbow" parent="$(arg side)upper" child="$(arg side)tip" z="${upper}"/>
+  <gazebo><include><uri>model://camera</uri></include><element name="kept"/></gazebo>
+</robot>
+"""
+ROS1_SEGMENT = """<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <!-- a comment with <property name="not_a_tag"/> in it -->
+  <macro name="segment" params="name parent child z">
+    <link name="${child}"/>
+    <joint name="${name}" type="revolute"><parent link="${parent}"/><child link="${child}"/>
+      <origin xyz="0 0 ${z}"/><axis xyz="0 0 1"/></joint>
+  </macro>
+</robot>
+"""
+
+
+def ros1_arm(tmp_path, arm=ROS1_ARM, segment=ROS1_SEGMENT):
+    (tmp_path / "old_segment.xacro").write_text(segment)
+    path = tmp_path / "old_arm.xacro"
+    path.write_text(arm)
+    return path
+
+
+def prefixed(text):
+    """The same file as ROS 2's xacro wants it: every tag ROS 1 took without the prefix, prefixed."""
+    text = re.sub(r"<(/?)(property|include(?= filename)|arg|if|unless|macro|segment)\b", r"<\1xacro:\2", text)
+    return text.replace("<!-- a comment with <xacro:property", "<!-- a comment with <property")
+
+
+def test_ros1_tags_without_the_prefix_are_xacro_tags_with_one_warning_per_file(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    path = ros1_arm(tmp_path)
+    status, out, err = run_dhsym("import", path)
+    assert status == 0 and "source: \"old_arm.xacro, links left_base → left_tip\"" in out
+    assert err.splitlines() == [
+        f"dhsym: warning: {path}:3:3: <property>, <include>, <arg>, <if>, <segment>, <unless> without the xacro: "
+        "prefix are read as xacro tags, as ROS 1's xacro read them (deprecated there; ROS 2's xacro leaves them "
+        "as plain XML)",
+        f"dhsym: warning: {tmp_path / 'old_segment.xacro'}:3:3: <macro> without the xacro: prefix is read as a "
+        "xacro tag, as ROS 1's xacro read it (deprecated there; ROS 2's xacro leaves it as plain XML)"]
+    modern = tmp_path / "modern"
+    modern.mkdir()
+    same = ros1_arm(modern, prefixed(ROS1_ARM), prefixed(ROS1_SEGMENT))
+    assert "<property" not in same.read_text() and "<macro" not in (modern / "old_segment.xacro").read_text()
+    status, modern_out, modern_err = run_dhsym("import", same)
+    assert (status, modern_err) == (0, "") and modern_out == out
+
+
+def test_what_ros1_did_not_take_for_xacro_stays_plain_xml(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    from dhsym.io.xacro import expand_xacro
+
+    warnings = []
+    text = expand_xacro(ros1_arm(tmp_path), warnings).decode()
+    assert "<include>" in text and "<uri>model://camera</uri>" in text  # Gazebo's include holds an element
+    assert '<element name="kept"/>' in text  # only xacro:element makes elements
+    assert "never" not in text and "<property" not in text and "<macro" not in text and "<segment" not in text
+    assert len(warnings) == 2
+
+
+def test_a_ros2_file_keeps_a_plain_element_named_like_its_macro(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    from dhsym.io.xacro import expand_xacro
+
+    path = tmp_path / "modern.xacro"
+    path.write_text('<robot name="m" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '  <xacro:macro name="inertial" params="m"><mass value="${m}"/></xacro:macro>\n'
+                    '  <link name="a"><inertial><mass value="2"/></inertial></link>\n'
+                    '  <link name="b"><xacro:inertial m="3"/></link></robot>')
+    warnings = []
+    text = expand_xacro(path, warnings).decode()
+    assert warnings == [] and "<inertial>" in text and '<mass value="2"/>' in text and '<mass value="3"/>' in text
+
+
+def test_an_unprefixed_include_keeps_every_guard(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    path = ros1_arm(tmp_path, ROS1_ARM.replace('"old_segment.xacro"', '"/etc/passwd"'))
+    status, out, err = run_dhsym("import", path)
+    assert (status, out) == (2, "")
+    assert err == f"dhsym: error: {path}:4:22: xacro:include of /etc/passwd: only .xacro, .urdf and .xml files " \
+                  "are included\n"
+
+
+def test_a_property_named_pi_hides_pi_as_in_xacro(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    from dhsym.io.xacro import expand_xacro
+
+    path = tmp_path / "rough.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '  <xacro:property name="pi" value="3.141592654"/>\n'
+                    '  <link name="a" rpy="${-pi/2} ${e}"/></robot>')
+    assert 'rpy="-1.570796327 2.718281828459045"' in expand_xacro(path).decode()
+
+
+def test_an_unprefixed_insert_block_inserts_the_block(tmp_path):
+    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
+    from dhsym.io.xacro import expand_xacro
+
+    path = tmp_path / "block.xacro"
+    path.write_text('<robot name="b">\n  <macro name="hinge" params="*origin">\n'
+                    '    <joint name="j" type="revolute"><insert_block name="origin"/></joint></macro>\n'
+                    '  <hinge><origin xyz="0 0 0.7"/></hinge></robot>')
+    warnings = []
+    text = expand_xacro(path, warnings).decode()
+    assert '<joint name="j" type="revolute">\n    <origin xyz="0 0 0.7"/>' in text and "insert_block" not in text
+    assert [w.split(" without")[0] for w in warnings] == [f"{path}:2:3: <macro>, <insert_block>, <hinge>"]

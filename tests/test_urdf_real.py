@@ -49,6 +49,9 @@ RTB_DATA = [
     ("kuka_kr10", "kuka_description/kuka_kr10/urdf/kr10r1100sixx.xacro", None, "tool0"),
     ("kuka_kr16", "kuka_description/kuka_kr16/urdf/kr16_2.xacro", None, "tool0"),
     ("kuka_kr150", "kuka_description/kuka_kr150/urdf/kr150_2.xacro", None, "tool0"),
+    ("kuka_kr6r900", "kuka_description/kuka_kr6/urdf/kr6r900sixx.xacro", None, "tool0"),
+    ("kuka_kr120", "kuka_description/kuka_kr120/urdf/kr120r2500pro.xacro", None, "tool0"),
+    ("kuka_kr210", "kuka_description/kuka_kr210/urdf/kr210l150.xacro", None, "tool0"),  # ROS 1 tags, unprefixed
     ("kuka_iiwa14", "kuka_description/kuka_lbr_iiwa/urdf/lbr_iiwa_14_r820.xacro", None, "tool0"),
     ("puma560", "unimation_puma560_description/urdf/puma560_robot.urdf.xacro", None, None),
     ("frankie_panda", "qut_frankie_description/robots/panda_arm.urdf.xacro", None, None),

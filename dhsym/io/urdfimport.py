@@ -49,10 +49,11 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     """The DH chain of a URDF's base → tip path; a `.xacro` file is expanded first (see io.xacro)."""
     from .urdf import read_urdf, read_urdf_text  # lxml only when a URDF is read
 
+    expansion_warnings = []
     if str(path).lower().endswith(".xacro"):
         from .xacro import expand_xacro
 
-        urdf = read_urdf_text(expand_xacro(path), f"{path} (expanded by xacro)", base, tip)
+        urdf = read_urdf_text(expand_xacro(path, expansion_warnings), f"{path} (expanded by xacro)", base, tip)
     else:
         urdf = read_urdf(path, base, tip)
     if variables not in ("q", "urdf"):
@@ -62,7 +63,7 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
         f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
     robot = assign_frames(urdf.axes, urdf.tool, convention, symbols).robot(
         name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}", notes=notes,
-        warnings=urdf.warnings)
+        warnings=[*expansion_warnings, *urdf.warnings])
     return Imported(robot, list(urdf.joint_names))
 
 

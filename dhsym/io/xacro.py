@@ -13,6 +13,14 @@ taken out of its hands.
   of at most 2 MiB, no DOCTYPE, at most 200 files and 8 MiB in all; no wildcards.
 - Expansion stops after 50,000 elements (macros can call themselves, or double at each level)
   or 64 nested macro calls.
+- Tags written without the `xacro:` prefix are read as ROS 1's xacro (up to 1.13, Melodic) read
+  them, with a deprecation warning, where xacro 2 leaves them as plain XML: `<property>`,
+  `<macro>`, `<arg>`, `<if>`, `<unless>`, `<insert_block>`; `<include>` only when it holds nothing
+  but text (one with elements inside, such as Gazebo's `<include><uri>…`, stays XML); and an
+  element named like a macro that a `<macro>` tag defined is a call of it (ROS 1 let any macro be
+  called so; a file written for ROS 2 that has a plain element named like one of its xacro:macros
+  keeps it as XML). Each file that has them gets one warning, at the first of them
+  (`expand_xacro(path, warnings)` appends it to `warnings`).
 
 >>> from pathlib import Path
 >>> import tempfile
@@ -28,6 +36,13 @@ True
 >>> expand_xacro(folder / "bad.xacro")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 dhsym.errors.UserError: .../bad.xacro:2:13: calling 'open' is not allowed in a xacro expression; ...
+>>> _ = (folder / "old.xacro").write_text('<robot name="old">\\n  <property name="l" value="0.5"/>\\n'
+...                                       '  <link name="a" length="${l}"/></robot>')
+>>> warnings = []
+>>> b'length="0.5"' in expand_xacro(folder / "old.xacro", warnings)
+True
+>>> print(warnings[0])  # doctest: +ELLIPSIS
+/.../old.xacro:2:3: <property> without the xacro: prefix is read as a xacro tag, as ROS 1's xacro read it ...
 """
 from __future__ import annotations
 
@@ -51,10 +66,15 @@ _EXPRESSION = re.compile(r"(?<!\$)\$\{([^}]*)\}")
 _EXTENSION = re.compile(r"(?<!\$)\$\(\s*(\S*)([^)]*)\)")
 _DECLARATION = re.compile(r"<!(DOCTYPE|ENTITY)", re.IGNORECASE)
 _COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
+# ROS 1's xacro took these without the prefix (and `include` holding only text); see adopt_ros1_tags.
+ROS1_TAGS = ("property", "macro", "arg", "if", "unless", "insert_block")
+_NOT_MARKUP = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>", re.DOTALL)
+_START_TAG = re.compile(r"<(?![/!?])([^\s/>]+)")
 
 
-def expand_xacro(path: str | Path) -> bytes:
-    """The URDF that xacro makes of the file, as UTF-8 bytes; see the module's docstring."""
+def expand_xacro(path: str | Path, warnings: list | None = None) -> bytes:
+    """The URDF that xacro makes of the file, as UTF-8 bytes; see the module's docstring. The
+    warnings of the expansion (FILE:LINE:COL: message) are appended to `warnings` if given."""
     try:
         import xacro
     except ImportError:
@@ -73,6 +93,8 @@ def expand_xacro(path: str | Path) -> bytes:
         text = document.toprettyxml(indent="  ")
     if len(text) > 4 * MAX_XML_BYTES:
         raise UserError("the expanded URDF is larger than 8 MiB", Location(str(path)))
+    if warnings is not None:
+        warnings.extend(expander.ros1_warnings())
     return text.encode("utf-8")
 
 
@@ -87,19 +109,31 @@ class _Expander:
         self.names = {}  # resolved path -> the name the user knows it by
         self.written = {}  # the path xacro opens -> the include's filename as written
         self.texts = {}
+        self.starts = {}  # resolved path -> [(tag name, offset)] of its start tags, in document order
+        self.ros1 = {}  # resolved path -> {offset: tag name} of the unprefixed tags read as xacro
+        self.ros1_macros = set()  # the names of macros defined by <macro>, which ROS 1 let <name/> call
         self.files = self.bytes = self.elements = 0
 
     @contextlib.contextmanager
     def guarded(self):
         xacro = self.xacro
         saved = {name: getattr(xacro, name) for name in ("parse", "safe_eval", "eval_extension", "get_include_files",
-                                                         "eval_all")}
-        original_parse, original_eval_all = xacro.parse, xacro.eval_all
+                                                         "eval_all", "handle_macro_call")}
+        original_parse, original_eval_all, original_call = xacro.parse, xacro.eval_all, xacro.handle_macro_call
 
         def parse(inp, filename=None):
             if inp is None:
-                return original_parse(self.read(filename))
+                document = original_parse(self.read(filename))
+                self.adopt_ros1_tags(document, Path(filename).resolve())
+                return document
             return original_parse(inp, filename)
+
+        def handle_macro_call(node, macros, symbols):
+            if ":" not in node.tagName and node.tagName.rsplit(".", 1)[-1] in self.ros1_macros \
+                    and self.is_macro(node.tagName, macros, symbols):
+                self.note_ros1_call(node.tagName)  # ROS 1: <name/> calls the macro name
+                node.tagName = node.nodeName = "xacro:" + node.tagName
+            return original_call(node, macros, symbols)
 
         def eval_all(node, macros, symbols):
             self.elements += 1
@@ -111,7 +145,7 @@ class _Expander:
                                 Location(str(self.top)))
             return original_eval_all(node, macros, symbols)
 
-        xacro.parse, xacro.eval_all = parse, eval_all
+        xacro.parse, xacro.eval_all, xacro.handle_macro_call = parse, eval_all, handle_macro_call
         xacro.safe_eval = lambda expr, symbols, locals=None: self.evaluate(expr, symbols)
         xacro.eval_extension = self.extension
         xacro.get_include_files = self.include_files
@@ -145,7 +179,61 @@ class _Expander:
         text = decode_xml(data, shown)
         self.names[path], self.texts[path] = shown, text
         _check_text(text, shown)
+        blank = _NOT_MARKUP.sub(lambda m: " " * len(m.group(0)), text)
+        self.starts[path] = [(m.group(1), m.start()) for m in _START_TAG.finditer(blank)]
         return re.sub(r"^\s*<\?xml[^>]*\?>", "", text)
+
+    def adopt_ros1_tags(self, document, path: Path) -> None:
+        """Rename the tags ROS 1's xacro took without the prefix to xacro:NAME, as it read them:
+        `include` only when it holds no element (Gazebo's <include><uri>… is not xacro's)."""
+        elements = [document.documentElement, *document.documentElement.getElementsByTagName("*")]
+        starts = self.starts.get(path, [])
+        placed = len(starts) == len(elements) and all(e.tagName == name for e, (name, _) in zip(elements, starts))
+        for index, element in enumerate(elements):
+            name = element.tagName
+            children = element.childNodes
+            only_text = not children or (len(children) == 1 and children[0].nodeType == children[0].TEXT_NODE)
+            if name in ROS1_TAGS or (name == "include" and only_text):
+                element.tagName = element.nodeName = "xacro:" + name
+                self.ros1.setdefault(path, {})[starts[index][1] if placed else -1] = name
+                if name == "macro":
+                    self.ros1_macros.add(element.getAttribute("name"))
+
+    def is_macro(self, name: str, macros, symbols) -> bool:
+        try:
+            self.xacro.resolve_macro(name, macros, symbols)
+        except (KeyError, TypeError, AttributeError):
+            return False
+        return True
+
+    def note_ros1_call(self, name: str) -> None:
+        """Remember where the unprefixed macro call <name> is written: in the file that defines
+        the macro being expanded, else in the file being read."""
+        stack = self.xacro.macrostack or []
+        written = stack[-1].history[-1][-1] if stack and stack[-1].history and stack[-1].history[-1] \
+            else (self.xacro.filestack or [None])[-1]
+        current = Path(written).resolve() if written else self.top.resolve()
+        for path in sorted(self.starts, key=lambda path: path != current):
+            offset = next((offset for tag, offset in self.starts[path] if tag == name), None)
+            if offset is not None:
+                self.ros1.setdefault(path, {})[offset] = name
+                return
+        self.ros1.setdefault(current, {})[-1] = name
+
+    def ros1_warnings(self) -> list[str]:
+        """One line per file with unprefixed xacro tags, at the first of them."""
+        lines = []
+        for path, found in self.ros1.items():
+            names = list(dict.fromkeys(found[offset] for offset in sorted(found)))
+            first = min(found)
+            where = _place(self.texts[path], self.names[path], first) if first >= 0 \
+                else Location(self.names.get(path, str(self.top)))
+            one = len(names) == 1
+            lines.append(f"{where}: {', '.join(f'<{name}>' for name in names)} without the xacro: prefix "
+                         f"{'is read as a xacro tag' if one else 'are read as xacro tags'}, as ROS 1's xacro "
+                         f"read {'it' if one else 'them'} (deprecated there; ROS 2's xacro leaves "
+                         f"{'it' if one else 'them'} as plain XML)")
+        return lines
 
     def evaluate(self, expression: str, symbols):
         try:

@@ -134,14 +134,22 @@ def _value(node, symbols):
 
 
 def _lookup(name: str, symbols):
-    if name in CONSTANTS:
-        return CONSTANTS[name]
+    """A property's value; `pi` and `e` unless a property of that name hides them, as in xacro
+    (ROS-Industrial's KR210 defines pi as 3.141592654).
+
+    >>> _lookup("pi", {"pi": 3.141592654}), _lookup("pi", {})
+    (3.141592654, 3.141592653589793)
+    """
     if name in FUNCTIONS:
         raise Refused(f"{name} is a function; call it, as in {name}(x)")
     try:
         value = symbols[name]
     except KeyError:
+        if name in CONSTANTS:
+            return CONSTANTS[name]
         raise Refused(f"name {name!r} is not defined (no xacro:property or macro parameter has it)") from None
+    if name in CONSTANTS and not isinstance(value, (int, float)):
+        return CONSTANTS[name]
     if not isinstance(value, (int, float, str, bool)):
         raise Refused(f"property {name!r} is a {type(value).__name__}, not a number or text")
     return value
