@@ -53,7 +53,10 @@ MEASURE = """() => {
                  width: Math.round(picture.width), column: Math.round(right - left)});
     }
   }
-  return {formulas: document.querySelectorAll('mjx-container').length, typesetCells,
+  // what MathJax could not read: an unknown macro is set in red (mathcolor) or as an merror
+  const errors = [...document.querySelectorAll('mjx-container [mathcolor="red"], mjx-container merror, '
+                                               + 'mjx-container [data-mjx-error]')].map(e => e.textContent);
+  return {formulas: document.querySelectorAll('mjx-container').length, typesetCells, errors,
           latexOutputs: latexOutputs.length,
           untypesetLatex: latexOutputs.filter(o => !o.querySelector('mjx-container')).length,
           texts, wide};
@@ -135,6 +138,12 @@ def test_no_tex_source_visible(path, render):
     raw = [m.group(0) + " in «" + text[max(0, m.start() - 40):m.end() + 40].strip() + "»"
            for text in render(path)["texts"] for m in RAW_TEX.finditer(text)]
     assert not raw, f"{len(raw)} pieces of TeX source are visible, e.g. " + "; ".join(raw[:5])
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_no_formula_shows_a_typesetting_error(path, render):
+    errors = render(path)["errors"]
+    assert not errors, f"{len(errors)} pieces MathJax could not read (set in red), e.g. {errors[:5]}"
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)

@@ -47,14 +47,13 @@ def load_robot_file(path: str | Path) -> Robot:
 
 def load_robot_text(text: str, filename: str = "<robot>") -> Robot:
     """The robot of a robot file's text; `filename` places errors and becomes `robot.file`.
-
     >>> load_robot_text('<?xml version="1.0"?>\\n<robot name="arm"/>', "arm.urdf")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     dhsym.errors.UserError: arm.urdf:1:1: this is XML (a URDF?), not a robot file: ... and use arm.yaml
     """
     if text.lstrip("\ufeff \t\r\n").startswith("<"):  # YAML would read it as one long string
-        raise UserError(f"this is XML (a URDF?), not a robot file: make one with `dhsym import {filename} "
-                        "[--tip LINK] -o arm.yaml` and use arm.yaml", Location(filename, 1, 1))
+        raise UserError(f"this is XML (a URDF?), not a robot file: make one with `dhsym import {filename} [--tip "
+                        "LINK] -o arm.yaml` and use arm.yaml", Location(filename, 1, 1))
     return _Reader(filename).robot(compose(text, filename))
 
 

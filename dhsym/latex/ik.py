@@ -233,6 +233,12 @@ def _text_rows(latex: str, page: Page) -> list[Block]:
 
 
 def _row_math(text: str) -> str:
-    pieces = text.split("$")
+    r"""One row as math; the row is already broken, so a break hint (which MathJax cannot read
+    inside \text) is left out.
+
+    >>> _row_math("elbow up/\\allowbreak{}down of $\\theta_{2}$")
+    '\\text{elbow up/down of }\\theta_{2}'
+    """
+    pieces = text.replace("\\allowbreak{}", "").split("$")
     return "".join((piece if position % 2 else f"\\text{{{piece}}}") for position, piece in enumerate(pieces)
                    if piece)
