@@ -275,7 +275,8 @@ def test_the_json_evaluated_by_sympy_gives_q_and_every_step_of_the_derivation_ho
              or step.solves and str(step.solves[0]) in ("theta_1", "theta_2")]
     assert len(steps) == 7
     by_name = {symbol.name: value for symbol, value in match[0].items()}
-    for step in steps:  # the equations the derivation prints are true at the pose
-        names = {s: by_name[s.name] for s in (step.lhs - step.rhs).free_symbols if s.name in by_name}
-        difference = complex((step.lhs - step.rhs).xreplace(names).evalf(30))
+    for step in steps:  # the equations the derivation prints are true at the pose (its decimals are symbols)
+        equation = exact(step.lhs - step.rhs)
+        names = {s: by_name[s.name] for s in equation.free_symbols if s.name in by_name}
+        difference = complex(equation.xreplace(names).evalf(30))
         assert abs(difference) < 1e-12, step
