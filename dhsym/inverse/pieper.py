@@ -169,7 +169,12 @@ def _in_one_style(coefficients, numbers):
     """How the quartic's coefficients are written, one way for all: each a decimal (`Written`), as
     0.1075 zc², where the file's rule writes every rational in them as a decimal, else each one
     number or short expression with fractions, as (43 zc²)/400. (Put in by name, the file's
-    decimals would give long sums of products, 0.75 · 0.1⁴ + (3 · 0.2⁴)/16 + …)"""
+    decimals would give long sums of products, 0.75 · 0.1⁴ + (3 · 0.2⁴)/16 + …)
+
+    >>> numbers = [sympy.Rational(43, 400), sympy.Rational(9, 20) + sympy.sqrt(2) / 1000]
+    >>> [_in_one_style(numbers, WrittenNumbers(places=p))(numbers[1]) for p in (1, 2)]   # 0.1075: 4 places
+    [(sqrt(2) + 450)/1000, sqrt(2)*0.001 + 0.45]
+    """
     terms = [t.as_coeff_Mul() for coefficient in coefficients for t in sympy.Add.make_args(coefficient)]
     fractions = [abs(r) for r, _ in terms if r.is_Rational and not r.is_Integer]
     if not fractions or any(numbers.decimal(r) is None for r in fractions):
