@@ -4,6 +4,7 @@ numpy code against numpy.roots), random general arms in both conventions round-t
 general arm of a robot file with decimals through every output of the CLI."""
 import json
 import random
+import re
 import shutil
 import subprocess
 
@@ -20,13 +21,14 @@ from test_inverse_robots import check_round_trip
 
 from dhsym import Chain, DHRow, Step
 from dhsym.core.chain import DHRow as Row
+from dhsym.core.numbers import decimal_text
 from dhsym.core.robot import Robot
 from dhsym.geometry.convert import to_convention
 from dhsym.inverse.codegen import module_text
 from dhsym.inverse.quartic import Complex, ferrari, root, written_out
 from dhsym.inverse.solution import Branch, Solution
 from dhsym.inverse.solve import solve
-from dhsym.inverse.written import exact
+from dhsym.inverse.written import Written, exact
 
 GENERAL = """name: general Pieper arm
 convention: standard
@@ -37,6 +39,18 @@ joints:
   - {joint: R, d: 0.4, a: 0, alpha: -pi/2, theta: theta_4}
   - {joint: R, d: 0, a: 0, alpha: pi/2, theta: theta_5}
   - {joint: R, d: 0.1, a: 0, alpha: 0, theta: theta_6}
+"""
+# the same arm written with names, its numbers the sample
+NAMED = """name: general Pieper arm with names
+convention: standard
+joints:
+  - {joint: R, d: d_1, a: a_1, alpha: pi/3, theta: theta_1}
+  - {joint: R, d: d_2, a: a_2, alpha: pi/4, theta: theta_2}
+  - {joint: R, d: 0, a: a_3, alpha: pi/2, theta: theta_3}
+  - {joint: R, d: d_4, a: 0, alpha: -pi/2, theta: theta_4}
+  - {joint: R, d: 0, a: 0, alpha: pi/2, theta: theta_5}
+  - {joint: R, d: d_6, a: 0, alpha: 0, theta: theta_6}
+sample: {d_1: 0.3, a_1: 0.2, d_2: 0.1, a_2: 0.5, a_3: 0.1, d_4: 0.4, d_6: 0.1}
 """
 SIGNS = [(1, 1), (1, -1), (-1, 1), (-1, -1)]
 
@@ -275,7 +289,69 @@ def test_the_json_evaluated_by_sympy_gives_q_and_every_step_of_the_derivation_ho
              or step.solves and str(step.solves[0]) in ("theta_1", "theta_2")]
     assert len(steps) == 7
     by_name = {symbol.name: value for symbol, value in match[0].items()}
-    for step in steps:  # the equations the derivation prints are true at the pose
-        names = {s: by_name[s.name] for s in (step.lhs - step.rhs).free_symbols if s.name in by_name}
-        difference = complex((step.lhs - step.rhs).xreplace(names).evalf(30))
+    for step in steps:  # the equations the derivation prints are true at the pose (its decimals are symbols)
+        equation = exact(step.lhs - step.rhs)
+        names = {s: by_name[s.name] for s in equation.free_symbols if s.name in by_name}
+        difference = complex(equation.xreplace(names).evalf(30))
         assert abs(difference) < 1e-12, step
+
+
+def test_the_decimal_arm_prints_no_decimal_that_its_file_did_not_write_or_fold(general_ik):
+    chain, ik = general_ik
+    text, latex = ik.text(100), ik.latex()._repr_latex_()
+    solution = ik.solution
+    expressions = [value for _, value in solution.definitions] + [step.lhs - step.rhs for step in solution.steps] \
+        + [value for branch in solution.branches for _, value in branch.assignments]
+    folded = {s for e in expressions for s in e.free_symbols if isinstance(s, Written)}
+    written = {decimal_text(value) for value in chain.numbers.values if value}
+    assert all(chain.numbers.decimal(s.value) for s in folded)  # folded by the file's rule, 0.38 = 0.2² + 0.5² + …
+    for output in (text, latex):
+        printed = set(re.findall(r"(?<![\w.])\d+\.\d+", output))
+        assert printed and printed <= written | {s.name for s in folded}, printed - written
+    assert not re.search(r"\d\.\d+ (s|A3|q)\b", text)  # Ferrari's 1/2 and 1/4 were 0.5 s, 0.25 A3, 0.5 q²
+    lines = _printed_lines(text)
+    assert lines["u"] == "s/2 + √(−z − 2 p − (2 q)/s)/2 − A3/(4 A4)" and "q²/2" in lines["w"]
+    assert "\\frac{s}{2}" in latex and "\\frac{A_{3}}{4 A_{4}}" in latex
+    quartic = [lines[f"A{k}"] for k in range(5)]  # one style: 43/400 is no decimal by the file's rule, nor is 9/20
+    assert not any(re.search(r"\d\.\d", line) for line in quartic) and "(9 rc zc)/20" in lines["A2"], quartic
+    assert "(s1 s2 s3)/2" in lines["D"]  # cos 60° = 1/2, not 0.5
+
+
+@pytest.mark.slow  # the named arm's algebra
+def test_the_decimal_arm_has_the_shape_of_the_same_arm_written_with_names(general_ik, tmp_path):
+    _, ik = general_ik
+    path = tmp_path / "named.yaml"
+    path.write_text(NAMED, encoding="utf-8")
+    named_chain = _loaded(path)
+    named_ik = named_chain.ik()
+    named = named_ik.solution
+    sample = dict(named_chain.sample)
+    ours = list(ik.solution.definitions) + list(ik.solution.branches[0].assignments)
+    theirs = list(named.definitions) + list(named.branches[0].assignments)
+    assert [name for name, _ in ours] == [name for name, _ in theirs]
+    assert [b.name for b in ik.solution.branches] == [b.name for b in named.branches]
+    for (name, value), (_, expected) in zip(ours, theirs):  # the same quantities, equal at the sample
+        assert sympy.expand(exact(value) - expected.xreplace(sample)) == 0, name
+    decimal, by_name = _printed_lines(ik.text(100)), _printed_lines(named_ik.text(100))
+    length = re.compile(r"\b[ad]\d\b")
+    same = [name for name, line in by_name.items() if not length.search(line)]
+    assert {"p", "q", "r", "m", "w", "z", "s", "u", "θ3", "θ2", "θ1", "D", "θ4", "θ5", "θ6"} <= set(same)
+    assert all(decimal[name] == by_name[name] for name in same), [(decimal[n], by_name[n]) for n in same]
+    numbers = {f"{symbol.name[0]}{symbol.name[2:]}": decimal_text(value) for symbol, value in sample.items()}
+    for name in ("f1", "f2", "g1"):  # a length alone in a term is its decimal: a2 + a3 c3 + d4 s3 is 0.5 + 0.1 c3 + …
+        assert decimal[name] == length.sub(lambda m: numbers[m.group(0)], by_name[name])
+
+
+def _printed_lines(text):
+    """{name: its value as printed, lines joined} for the definitions and the first branch of `dhsym ik`'s text."""
+    lines, current = {}, None
+    for line in text.split("where\n", 1)[1].split("\n\nBranch 2")[0].splitlines():
+        match = re.match(r"  (\S+) += (.*)$", line)
+        if match:
+            current = match.group(1)
+            lines[current] = match.group(2)
+        elif current and line.startswith("         "):
+            lines[current] += " " + line.strip()
+        else:
+            current = None
+    return lines

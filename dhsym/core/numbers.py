@@ -13,11 +13,19 @@ denominators it wrote as fractions. A printer then writes a rational as a decima
 
 Integers, fractions in a file without decimals and multiples of π print as before.
 
+An inverse solution holds the file's decimals as symbols named by their decimal, and arithmetic on
+them folded into such symbols (dhsym.inverse.written): its numbers are `folded`, and any other
+rational is the algebra's own (Ferrari's s/2, cos 60° = 1/2), written as a fraction unless it stands
+alone and is the value of a decimal the file wrote (an angle's offset).
+
 >>> numbers = WrittenNumbers(places=5)
 >>> numbers.decimal(sympy.Rational(3269, 4000)), numbers.decimal(sympy.Rational(1, 3))
 ('0.81725', None)
 >>> WrittenNumbers(places=1, fractions=frozenset({2})).decimal(sympy.Rational(1, 2)) is None
 True
+>>> WrittenNumbers(places=1, values=frozenset({sympy.Rational(1, 2)}), folded=True).decimal(sympy.Rational(1, 2))
+>>> WrittenNumbers(places=1, values=frozenset({sympy.Rational(1, 2)}), folded=True).decimal(sympy.Rational(1, 2), True)
+'0.5'
 """
 from __future__ import annotations
 
@@ -33,6 +41,7 @@ class WrittenNumbers:
     places: int = 0  # the most decimal places of any decimal literal; 0 when the file wrote none
     fractions: frozenset = frozenset()  # denominators written as fractions, as in l_1/2 or 1/3
     values: frozenset = frozenset()  # the values of the decimal literals, without sign
+    folded: bool = False  # the decimals are symbols already (an inverse solution): other rationals are fractions
 
     def decimal(self, value, alone: bool = False) -> str | None:
         """The exact decimal text of a rational the printers should write as a decimal, else None.
@@ -41,7 +50,7 @@ class WrittenNumbers:
             return None
         if (10 ** (2 * self.places)) % value.q:
             return None
-        if value.q in self.fractions and not (alone and abs(value) in self.values):
+        if (self.folded or value.q in self.fractions) and not (alone and abs(value) in self.values):
             return None
         return decimal_text(value)
 

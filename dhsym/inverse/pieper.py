@@ -22,13 +22,15 @@ from __future__ import annotations
 
 import sympy
 
+from ..core.numbers import WrittenNumbers
 from ..core.transforms import joint_axis_frame
 from ..errors import UserError
 from .quartic import SIGNS, Complex, ferrari
 from .scan import Derivation
 from .solution import Step
-from .written import exact
+from .written import Written, exact
 
+FRACTIONS = WrittenNumbers()  # a file without decimals: the quartic's numbers are fractions
 NAMES = ("A_4", "A_3", "A_2", "A_1", "A_0", "p", "q", "r", "m", "w", "z", "s")
 
 
@@ -49,20 +51,19 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
     turn = 1 if known_in == chain.first_frame else -1  # seen from the end, a joint turns the base by −θ
     zero = {v: 0 for v in arm}
     axes = [joint_axis_frame(chain.convention, j) for j in numbers]
-    # decimals as exact numbers: the quartic's coefficients are numbers, not products of decimals
-    at_zero = lambda i, j: exact(chain.transform(i, j).xreplace(zero)).applyfunc(sympy.expand)  # noqa: E731
+    at_zero = lambda i, j: chain.transform(i, j).xreplace(zero).applyfunc(sympy.expand)  # noqa: E731
     seen = at_zero(axes[0], known_in)
     q = (seen[:3, :3] * point + seen[:3, 3]).applyfunc(sympy.expand)
     first, second, last = at_zero(axes[0], axes[1]), at_zero(axes[1], axes[2]), at_zero(axes[2], holder)
     t1, t2, t3 = arm
     n1, n2, n3 = (j + robot.frame_offset for j in numbers)  # as the robot numbers its joints
     c2, s2, c3, s3 = sympy.cos(t2), sympy.sin(turn * t2), sympy.cos(t3), sympy.sin(t3)
-    centre = last[:3, :3] * exact(local) + last[:3, 3]
+    centre = last[:3, :3] * local + last[:3, 3]
     h = (second[:3, :3] * _turned(centre, c3, turn * s3) + second[:3, 3]).applyfunc(sympy.expand)
     rotation, offset = first[:3, :3], first[:3, 3]
     u1, u2 = (rotation.T * offset).applyfunc(sympy.expand), rotation.T[:, 2]
     det = sympy.simplify(u1[0] * u2[1] - u1[1] * u2[0])
-    if det == 0:
+    if sympy.simplify(exact(det)) == 0:
         raise UserError("Pieper's method: the arm's equations are not of the general kind (axes 1 and 2 meet or are "
                         "parallel), and the sub-problems did not solve them")
     known = set(map(str, taken)) | {str(s) for s in chain.symbols}
@@ -73,12 +74,13 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
     height = q[2]
     length = _reduced(sum(x ** 2 for x in h), c3, s3)
     left = (r_c - length - offset.dot(offset)) / 2 - u1[2] * h[2], height - offset[2] - u2[2] * h[2]
-    planar = _reduced(h[0] ** 2 + h[1] ** 2, c3, s3)
+    planar = h[0] ** 2 + h[1] ** 2
     u1x, u1y, u2x, u2y = u1[0], u1[1], u2[0], u2[1]
-    quadric = _reduced((u2x ** 2 + u2y ** 2) * left[0] ** 2 - 2 * (u1x * u2x + u1y * u2y) * left[0] * left[1]
-                       + (u1x ** 2 + u1y ** 2) * left[1] ** 2 - det ** 2 * planar, c3, s3)
-    coefficients = _half_angle(quadric, c3, s3, (r_c, height))
-    if sympy.expand(coefficients[0]) == 0:
+    # The quartic's coefficients are numbers for a robot of numbers: each one number (see _in_one_style)
+    quadric = _reduced(exact((u2x ** 2 + u2y ** 2) * left[0] ** 2 - 2 * (u1x * u2x + u1y * u2y) * left[0] * left[1]
+                             + (u1x ** 2 + u1y ** 2) * left[1] ** 2 - det ** 2 * planar), c3, s3)
+    coefficients = _half_angle(quadric, c3, s3, (r_c, exact(height)), robot.numbers)
+    if sympy.expand(exact(coefficients[0])) == 0:
         raise UserError(f"Pieper's method: the quartic in tan(θ{n3}/2) loses its leading term (θ{n3} = π solves "
                         "every pose): not handled")
     definitions, root = ferrari(coefficients, names[8:])
@@ -134,9 +136,10 @@ def _reduced(expr, c, s):
     return sympy.expand(expanded.subs(s ** 2, 1 - c ** 2)) if expanded.has(s) else expanded
 
 
-def _half_angle(expr, c, s, known) -> list:
+def _half_angle(expr, c, s, known, numbers=FRACTIONS) -> list:
     """A₄ … A₀ of the quartic in u = tan(θ/2) that `expr` (of degree ≤ 2 in c, s) times (1 + u²)² is,
-    each collected in the `known` quantities (r_c and the height)."""
+    each collected in the `known` quantities (r_c and the height), its numbers in one style for the
+    five (see `_in_one_style`)."""
     x, y, u = sympy.Dummy("x"), sympy.Dummy("y"), sympy.Dummy("u")
     poly = sympy.Poly(expr.xreplace({c: x, s: y}), x, y)
     total = [sympy.Integer(0)] * 5  # A₀ … A₄: each term's coefficient times small integers, never a product expanded
@@ -144,21 +147,41 @@ def _half_angle(expr, c, s, known) -> list:
         factor = sympy.Poly((1 - u ** 2) ** i * (2 * u) ** j * (1 + u ** 2) ** (2 - i - j), u)
         for (k,), number in factor.terms():
             total[k] += number * coefficient
-    return [_collected(total[k], known) for k in range(4, -1, -1)]
+    collected = [_collected(total[k], known) for k in range(4, -1, -1)]
+    style = _in_one_style([coefficient for terms in collected for coefficient, _ in terms], numbers)
+    return [sympy.Add(*[style(coefficient) * monomial for coefficient, monomial in terms]) for terms in collected]
 
 
-def _collected(expr, known):
-    """A polynomial in the `known` quantities, each coefficient one number or short expression."""
+def _collected(expr, known) -> list:
+    """[(coefficient, monomial)]: `expr` as a polynomial in the `known` quantities (expanded)."""
     expanded = sympy.expand(expr)
     heads = [k for k in known if not k.is_number and k.free_symbols]
-    if not heads:
-        return _tidy(expanded)
     try:
-        poly = sympy.Poly(expanded, *heads)
+        poly = sympy.Poly(expanded, *heads) if heads else None
     except sympy.PolynomialError:
-        return _tidy(expanded)
-    return sympy.Add(*[_tidy(coefficient) * sympy.Mul(*[x ** e for x, e in zip(heads, powers)])
-                       for powers, coefficient in poly.terms()])
+        poly = None
+    if poly is None:
+        return [(expanded, sympy.Integer(1))]
+    return [(coefficient, sympy.Mul(*[x ** e for x, e in zip(heads, powers)])) for powers, coefficient in poly.terms()]
+
+
+def _in_one_style(coefficients, numbers):
+    """How the quartic's coefficients are written, one way for all: each a decimal (`Written`), as
+    0.1075 zc², where the file's rule writes every rational in them as a decimal, else each one
+    number or short expression with fractions, as (43 zc²)/400. (Put in by name, the file's
+    decimals would give long sums of products, 0.75 · 0.1⁴ + (3 · 0.2⁴)/16 + …)
+
+    >>> numbers = [sympy.Rational(43, 400), sympy.Rational(9, 20) + sympy.sqrt(2) / 1000]
+    >>> [_in_one_style(numbers, WrittenNumbers(places=p))(numbers[1]) for p in (1, 2)]   # 0.1075: 4 places
+    [(sqrt(2) + 450)/1000, sqrt(2)*0.001 + 0.45]
+    """
+    terms = [t.as_coeff_Mul() for coefficient in coefficients for t in sympy.Add.make_args(coefficient)]
+    fractions = [abs(r) for r, _ in terms if r.is_Rational and not r.is_Integer]
+    if not fractions or any(numbers.decimal(r) is None for r in fractions):
+        return _tidy
+    decimal = lambda r: r if r.is_Integer else sympy.sign(r) * Written.of(abs(r))  # noqa: E731
+    return lambda coefficient: sympy.Add(*(decimal(r) * rest if r.is_Rational else r * rest for r, rest in
+                                           (t.as_coeff_Mul() for t in sympy.Add.make_args(coefficient))))
 
 
 def _tidy(expr):

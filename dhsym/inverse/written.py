@@ -28,6 +28,7 @@ import sympy
 
 from ..core.chain import Chain, DHRow
 from ..core.numbers import decimal_text
+from ..core.robot import as_robot
 from ..core.transforms import Step
 from .solution import Branch
 from .solution import Step as Equation
@@ -88,8 +89,10 @@ def fold(expr, numbers):
         return expr
     args = [fold(arg, numbers) for arg in expr.args]
     if expr.is_Mul:
-        constant = [a for a in args if _is_constant(a)]
-        rest = [a for a in args if not _is_constant(a)]
+        constant = [a for a in args if _is_constant(a) and exact(a).is_Rational]
+        rest = [a for a in args if a not in constant]  # with a surd, √2: 2 · 0.1 √3 is 0.2 √3
+        if not any(map(_holds_written, constant)):  # the algebra's own number, s/2: not a decimal
+            return _product(args)
         upper = [a for a in constant if not (a.is_Pow and a.exp.is_negative) and not a.is_Rational]
         lower = [1 / a for a in constant if a.is_Pow and a.exp.is_negative]
         for number in (a for a in constant if a.is_Rational):  # 1/2 goes to the denominator as 2
@@ -101,16 +104,30 @@ def fold(expr, numbers):
         top = sympy.Mul(*upper) if top is None else top
         bottom = sympy.Mul(*lower) if bottom is None else bottom
         return sympy.Mul(top, 1 / bottom, *rest)
-    if expr.is_Add:
-        constant = [a for a in args if _is_constant(a)]
-        rest = [a for a in args if not _is_constant(a)]
-        whole = _written(sympy.Add(*constant), numbers)
-        return sympy.Add(*rest, *(constant if whole is None else [whole]))
+    if expr.is_Add:  # the constant terms with the same surd summed: 0.2 √3 + 1.2 √3 is 1.4 √3
+        groups: dict = {}
+        for term in args:
+            if _is_constant(term):
+                rational = sympy.Mul(*(f for f in sympy.Mul.make_args(term) if exact(f).is_Rational))
+                groups.setdefault(term / rational, []).append(rational)
+        terms = [a for a in args if not _is_constant(a)]
+        for surd, rationals in groups.items():
+            whole = _written(sympy.Add(*rationals), numbers) if any(map(_holds_written, rationals)) else None
+            terms += [r * surd for r in rationals] if whole is None else [whole * surd]
+        return sympy.Add(*terms)
     rebuilt = expr.func(*args)
     if expr.is_Pow and _is_constant(rebuilt):
         whole = _written(rebuilt, numbers)
         return rebuilt if whole is None else whole
     return rebuilt
+
+
+def _product(factors):
+    """The product of `factors` with a number before a sum kept outside it, (f1 s2 + …)/4, as
+    sympy.factor_terms writes it (sympy.Mul would multiply it in)."""
+    number = sympy.Mul(*(f for f in factors if f.is_Rational))
+    rest = sympy.Mul(*(f for f in factors if not f.is_Rational))
+    return sympy.Mul(number, rest, evaluate=False) if rest.is_Add and number != 1 else number * rest
 
 
 def _holds_written(expr) -> bool:
@@ -137,10 +154,13 @@ def _written(expr, numbers):
 
 def as_written(solution, chain, numbers):
     """A solution of the chain `with_written_symbols` made, given back to `chain` with its
-    numbers folded (see `fold`)."""
+    numbers folded (see `fold`); the chain's numbers say so, and its printers write the rationals
+    left (the algebra's own: Ferrari's s/2, cos 60° = 1/2) as fractions."""
     pairs = lambda items: tuple((name, fold(value, numbers)) for name, value in items)  # noqa: E731
     steps = tuple(Equation(_fold_any(step.lhs, numbers), _fold_any(step.rhs, numbers), step.subproblem, step.solves,
                            step.note) for step in solution.steps)
+    chain = as_robot(chain)
+    chain = chain.replace(numbers=replace(chain.numbers, folded=True))
     return replace(solution, chain=chain, definitions=pairs(solution.definitions), steps=steps,
                    branches=tuple(Branch(branch.name, pairs(branch.assignments)) for branch in solution.branches))
 

@@ -162,15 +162,16 @@ def _equation_rows(lhs, rhs, printer, page: Page) -> list[tuple[str, float]]:
 def latex_sentence(text: str, names, printer) -> str:
     """A solver's sentence as LaTeX text, its relations and the names it mentions as math."""
     out = []
-    for part in sentence_parts(text, names):
-        if part[0] == "relation":
-            out.append(f"${relation(part, printer, 'latex')}$")
-            continue
-        position = 0
-        for start, end, expression in part[2]:
-            out += [prose(part[1][position:start]), f"${printer.doprint(expression)}$"]
-            position = end
-        out.append(prose(part[1][position:]))
+    with printer.numbers_read_back():
+        for part in sentence_parts(text, names):
+            if part[0] == "relation":
+                out.append(f"${relation(part, printer, 'latex')}$")
+                continue
+            position = 0
+            for start, end, expression in part[2]:
+                out += [prose(part[1][position:start]), f"${printer.doprint(expression)}$"]
+                position = end
+            out.append(prose(part[1][position:]))
     return "".join(out).replace("$ = $", " = ")  # r_{32} = -1 as one formula
 
 

@@ -95,11 +95,12 @@ def solution_names(solution) -> list[str]:
 def text_sentence(text: str, names, printer) -> str:
     """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5 = 0: only θ4 + θ6 is determined'."""
     out = []
-    for part in sentence_parts(text, names):
-        if part[0] == "relation":
-            out.append(relation(part, printer, "text"))
-        else:
-            out.append(_math_printed(part[1], part[2], printer))
+    with printer.numbers_read_back():
+        for part in sentence_parts(text, names):
+            if part[0] == "relation":
+                out.append(relation(part, printer, "text"))
+            else:
+                out.append(_math_printed(part[1], part[2], printer))
     return "".join(out)
 
 

@@ -43,6 +43,9 @@ bracketed: `cos α`, but `cos(0.3)`, `cos(α/2)`.
 """
 from __future__ import annotations
 
+from contextlib import contextmanager
+from dataclasses import replace
+
 import sympy
 from sympy.printing.latex import LatexPrinter as _SympyLatex
 from sympy.printing.precedence import PRECEDENCE, precedence
@@ -96,6 +99,17 @@ class _TextbookMixin:
     def doprint(self, expr):
         """Print `expr`, first giving back each joint angle the offset its row wrote (see Notation.as_written)."""
         return super().doprint(self.notation.as_written(expr))
+
+    @contextmanager
+    def numbers_read_back(self):
+        """While printing math read back from a solver's sentence: its decimals, written there as
+        text, are rationals again, which the file's rule writes (see WrittenNumbers.folded)."""
+        numbers = self.numbers
+        self.numbers = replace(numbers, folded=False)
+        try:
+            yield self
+        finally:
+            self.numbers = numbers
 
     def _print_Symbol(self, expr):
         name = display_name(expr.name, self.style)
