@@ -276,3 +276,19 @@ def test_a_waist_and_three_pitch_joints_take_the_waist_from_the_tool_not_the_pos
     assert len(solution.branches) == 2
     theta_1 = solution.branches[0].values()[robot.joint_variables[0]]
     assert theta_1.free_symbols <= {sympy.Symbol(n, real=True) for n in ("r13", "r23")}
+
+
+IIWA14 = RTB_XACRO / "kuka_description/kuka_lbr_iiwa/urdf/lbr_iiwa_14_r820.xacro"
+
+
+@pytest.mark.skipif(not IIWA14.exists() or importlib.util.find_spec("xacro") is None,
+                    reason="rtb-data or xacro is not installed")
+def test_a_free_joint_inside_the_arm_that_no_rule_solves_is_refused_not_an_internal_error():
+    # KUKA's iiwa 14 as its URDF has it (axes 1 and 3 offset by 0.4 mm): with q_3 free, q_1, q_2, q_4
+    # fit no sub-problem, and Pieper's form does not hold with a joint between them (it crashed).
+    from dhsym.errors import UserError
+    from dhsym.io.urdfimport import import_urdf
+
+    robot = import_urdf(IIWA14, None, "tool0", "standard").robot
+    with pytest.raises(UserError, match="no closed form by the course's rules"):
+        solve(robot, free=["q_3"])

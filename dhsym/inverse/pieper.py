@@ -142,6 +142,8 @@ def _half_angle(expr, c, s, known, numbers=FRACTIONS) -> list:
     five (see `_in_one_style`)."""
     x, y, u = sympy.Dummy("x"), sympy.Dummy("y"), sympy.Dummy("u")
     poly = sympy.Poly(expr.xreplace({c: x, s: y}), x, y)
+    if poly.total_degree() > 2:  # a joint between the arm's three (one made free) breaks Pieper's form
+        raise UserError("Pieper's method: the wrist centre's equations are not quadratic in the third joint")
     total = [sympy.Integer(0)] * 5  # A₀ … A₄: each term's coefficient times small integers, never a product expanded
     for (i, j), coefficient in poly.terms():
         factor = sympy.Poly((1 - u ** 2) ** i * (2 * u) ** j * (1 + u ** 2) ** (2 - i - j), u)
