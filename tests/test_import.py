@@ -341,17 +341,22 @@ def test_what_ros1_did_not_take_for_xacro_stays_plain_xml(tmp_path):
     assert len(warnings) == 2
 
 
-def test_a_ros2_file_keeps_a_plain_element_named_like_its_macro(tmp_path):
+def _expanded(tmp_path, name: str, text: str, warnings: list | None = None) -> tuple:
+    """(path, the URDF that dhsym's xacro makes of `text` written to tmp_path/name)."""
     pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
     from dhsym.io.xacro import expand_xacro
 
-    path = tmp_path / "modern.xacro"
-    path.write_text('<robot name="m" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-                    '  <xacro:macro name="inertial" params="m"><mass value="${m}"/></xacro:macro>\n'
-                    '  <link name="a"><inertial><mass value="2"/></inertial></link>\n'
-                    '  <link name="b"><xacro:inertial m="3"/></link></robot>')
+    path = tmp_path / name
+    path.write_text(text)
+    return path, expand_xacro(path, warnings).decode()
+
+
+def test_a_ros2_file_keeps_a_plain_element_named_like_its_macro(tmp_path):
     warnings = []
-    text = expand_xacro(path, warnings).decode()
+    _, text = _expanded(tmp_path, "modern.xacro", '<robot name="m" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                        '  <xacro:macro name="inertial" params="m"><mass value="${m}"/></xacro:macro>\n'
+                        '  <link name="a"><inertial><mass value="2"/></inertial></link>\n'
+                        '  <link name="b"><xacro:inertial m="3"/></link></robot>', warnings)
     assert warnings == [] and "<inertial>" in text and '<mass value="2"/>' in text and '<mass value="3"/>' in text
 
 
@@ -365,25 +370,16 @@ def test_an_unprefixed_include_keeps_every_guard(tmp_path):
 
 
 def test_a_property_named_pi_hides_pi_as_in_xacro(tmp_path):
-    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
-    from dhsym.io.xacro import expand_xacro
-
-    path = tmp_path / "rough.xacro"
-    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-                    '  <xacro:property name="pi" value="3.141592654"/>\n'
-                    '  <link name="a" rpy="${-pi/2} ${e}"/></robot>')
-    assert 'rpy="-1.570796327 2.718281828459045"' in expand_xacro(path).decode()
+    _, text = _expanded(tmp_path, "rough.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                        '  <xacro:property name="pi" value="3.141592654"/>\n'
+                        '  <link name="a" rpy="${-pi/2} ${e}"/></robot>')
+    assert 'rpy="-1.570796327 2.718281828459045"' in text
 
 
 def test_an_unprefixed_insert_block_inserts_the_block(tmp_path):
-    pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
-    from dhsym.io.xacro import expand_xacro
-
-    path = tmp_path / "block.xacro"
-    path.write_text('<robot name="b">\n  <macro name="hinge" params="*origin">\n'
-                    '    <joint name="j" type="revolute"><insert_block name="origin"/></joint></macro>\n'
-                    '  <hinge><origin xyz="0 0 0.7"/></hinge></robot>')
     warnings = []
-    text = expand_xacro(path, warnings).decode()
+    path, text = _expanded(tmp_path, "block.xacro", '<robot name="b">\n  <macro name="hinge" params="*origin">\n'
+                           '    <joint name="j" type="revolute"><insert_block name="origin"/></joint></macro>\n'
+                           '  <hinge><origin xyz="0 0 0.7"/></hinge></robot>', warnings)
     assert '<joint name="j" type="revolute">\n    <origin xyz="0 0 0.7"/>' in text and "insert_block" not in text
     assert [w.split(" without")[0] for w in warnings] == [f"{path}:2:3: <macro>, <insert_block>, <hinge>"]
