@@ -292,3 +292,28 @@ def test_a_free_joint_inside_the_arm_that_no_rule_solves_is_refused_not_an_inter
     robot = import_urdf(IIWA14, None, "tool0", "standard").robot
     with pytest.raises(UserError, match="no closed form by the course's rules"):
         solve(robot, free=["q_3"])
+
+
+TOUCHING_ARM = """name: five joints, three meeting at the base
+convention: standard
+joints:
+  - {joint: R, theta: q_1, d: 0, a: 0, alpha: pi/2}
+  - {joint: R, theta: q_2, d: 0, a: 0, alpha: pi/2}
+  - {joint: R, theta: q_3, d: d_3, a: 0, alpha: pi/2}
+  - {joint: R, theta: q_4, d: 0, a: a_4, alpha: pi/2}
+  - {joint: R, theta: q_5, d: d_5, a: 0, alpha: pi/2}
+sample: {d_3: 0.98, a_4: 0.77, d_5: 0.42}
+"""
+
+
+def test_an_equation_with_a_double_root_at_every_pose_gives_one_root(tmp_path):
+    # On this arm's poses a cos q5 + b sin q5 = K holds with a² + b² = K² everywhere: its "two roots"
+    # were one root printed twice, and the ±√ of rounding noise lost nine digits (a random arm).
+    path = tmp_path / "touching.yaml"
+    path.write_text(TOUCHING_ARM)
+    robot = dhsym.load(str(path))
+    solution = solve(robot)
+    assert len(solution.branches) == 2
+    q_5 = solution.branches[0].values()[robot.joint_variables[4]]
+    assert not any(power.exp == sympy.Rational(1, 2) for power in q_5.atoms(sympy.Pow))  # no square root
+    check_round_trip(robot, solution, random.Random(2), trials=20)

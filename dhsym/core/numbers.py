@@ -33,6 +33,8 @@ from dataclasses import dataclass
 
 import sympy
 
+FRACTION_PLACES = 6  # in a solution, a rational whose decimal needs more places is the file's, not the algebra's
+
 
 @dataclass(frozen=True)
 class WrittenNumbers:
@@ -50,6 +52,8 @@ class WrittenNumbers:
             return None
         if (10 ** (2 * self.places)) % value.q:
             return None
+        if self.folded and _places(value.q) > FRACTION_PLACES:
+            return decimal_text(value)  # the algebra's own fractions are short: this one came from the decimals
         if (self.folded or value.q in self.fractions) and not (alone and abs(value) in self.values):
             return None
         return decimal_text(value)

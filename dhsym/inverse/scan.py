@@ -87,7 +87,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         rule, candidates = best
         known = len(derivation.assignments)
-        value = _apply(rule, candidates, derivation, constants)
+        value = _apply(rule, candidates, derivation, constants, witness)
         for name, named in derivation.assignments[known:]:
             witness[name] = number_at(named, witness)
         variable, angle = candidates[0].variable, candidates[0].angle
@@ -171,10 +171,10 @@ def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozens
         if c.variable in prismatic:
             rule = "linear" if len(c.form) == 2 else "quadratic"
             # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
-            rank = (1 if c.form[0].is_number else 5) if rule == "linear" else 4
+            rank = (1 if c.form[0].is_number else 5) if rule == "linear" else _two_roots_rank(c, True, witness)
             options.append(((kind_rank(c), rank, _form_length(c.form)), rule, [c]))
         else:
-            options.append(((kind_rank(c), 4, _form_length(c.form)), "one", [c]))
+            options.append(((kind_rank(c), _two_roots_rank(c, False, witness), _form_length(c.form)), "one", [c]))
     by_source: dict = {}
     for c in singles:
         if c.variable not in prismatic:
@@ -210,6 +210,14 @@ def _first(options, witness):
             key = (key[0], 2 if _signs[forms] else 3, key[2])
         pending.append((key, index, "pair", candidates))
     return None
+
+
+def _two_roots_rank(candidate, slide: bool, witness) -> int:
+    """4 for an equation with two roots; 6, after every other rule, where its square root's argument
+    vanishes at the witness pose: an equation can touch an arm of fewer than six joints' poses
+    everywhere (one double root), and its ±√ of rounding noise would cost digits."""
+    argument = sp.root_argument(candidate.form, slide)
+    return 6 if argument is not None and _vanishes(argument, witness) else 4
 
 
 def kind_rank_of(equation, order) -> int:
@@ -318,7 +326,7 @@ def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
     return symbol
 
 
-def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
+def _apply(rule, candidates, derivation, constants, witness=None) -> sympy.Expr:
     """The value of the candidates' unknown (or sum), with its steps, conditions and sign symbol."""
     first = candidates[0]
     angle, variable = first.angle, first.variable
@@ -359,9 +367,12 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     slides = {name: value for name, value in derivation.assignments if value.is_polynomial(*value.free_symbols)}
     a, b, c = (algebra.shorter_with(x, slides) for x in first.form)  # the SCARA's d3 cancels from D
     law = (b == 0 or a == 0)
+    if c != 0 and witness and _vanishes(sp.existence(a, b, c), witness):
+        return _double_root(a, b, c, law, variable, first.equation.where, derivation)
     shape = "A"
     if not law and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
-        a, b, c, shape = min(_variants(a, b, c, sigma), key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
+        a, b, c, shape = min(sp.book_variants(a, b, c, sigma),
+                             key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
     c = _named(derivation, "D" if law else "K", c)
     derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), c,
                                  "law of cosines" if law else "a cos θ + b sin θ = c", (variable,),
@@ -377,17 +388,10 @@ def _apply(rule, candidates, derivation, constants) -> sympy.Expr:
     return sp.one_equation(a, b, c, sigma, shape)
 
 
-def _negated(x):
-    """−x over one denominator, common factors out (a plain sum of monomials is that already)."""
-    negated = algebra.expand(-x)
-    return negated if algebra.plain_sum(negated) else sympy.factor_terms(sympy.together(negated))
-
-
-def _variants(a, b, c, sigma):
-    """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
-    atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
-    placeholder = sympy.Dummy("c")
-    for sign in (1, -1):
-        sa, sb, sc = (x if sign == 1 else _negated(x) for x in (a, b, c))
-        for shape in ("A", "B"):
-            yield sa, sb, sc, shape, sp.one_equation(sa, sb, placeholder, sigma, shape)
+def _double_root(a, b, c, law, variable, where, derivation) -> sympy.Expr:
+    """The one root where a² + b² = c² at every pose of the arm (see subproblems.double_root)."""
+    c = _named(derivation, "D" if law else "K", c)
+    derivation.steps.append(Step(a * sympy.cos(variable) + b * sympy.sin(variable), c,
+                                 ("law of cosines" if law else "a cos θ + b sin θ = c") + ", one double root",
+                                 (variable,), f"{where}; a² + b² = c² at every pose of the arm"))
+    return sp.double_root(a, b, c)

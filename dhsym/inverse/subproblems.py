@@ -294,3 +294,43 @@ def degenerate_pair(det, shown, forms) -> str:
 
 def unsigned(expr):
     return -expr if expr.could_extract_minus_sign() else expr
+
+
+def root_argument(form, slide: bool = False) -> sympy.Expr | None:
+    """The argument of the square root of a two-root form: a² + b² − c² (or 1 − (c/a)²) for
+    a cos θ + b sin θ = c, b² − 4ac for a slide's a d² + b d + c = 0; None where there is none.
+
+    >>> a, b, c = sympy.symbols("a b c", real=True)
+    >>> root_argument((a, b, c)), root_argument((a, b, c), slide=True)
+    (a**2 + b**2 - c**2, -4*a*c + b**2)
+    """
+    if slide:
+        a, b, c = form
+        return b ** 2 - 4 * a * c
+    return existence(*form)
+
+
+def double_root(a, b, c) -> sympy.Expr:
+    """The one root of a cos θ + b sin θ = c where a² + b² = c²: (cos θ, sin θ) = c (a, b)/(a² + b²).
+
+    >>> x, y = sympy.symbols("x y", real=True)
+    >>> double_root(x, y, -sympy.sqrt(x**2 + y**2))   # θ points against (x, y)
+    atan2(-y*sqrt(x**2 + y**2), -x*sqrt(x**2 + y**2))
+    """
+    return sympy.atan2(b * c, a * c)
+
+
+def negated(x):
+    """−x over one denominator, common factors out (a plain sum of monomials is that already)."""
+    negated_x = algebra.expand(-x)
+    return negated_x if algebra.plain_sum(negated_x) else sympy.factor_terms(sympy.together(negated_x))
+
+
+def book_variants(a, b, c, sigma):
+    """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
+    atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
+    placeholder = sympy.Dummy("c")
+    for sign in (1, -1):
+        sa, sb, sc = (x if sign == 1 else negated(x) for x in (a, b, c))
+        for shape in ("A", "B"):
+            yield sa, sb, sc, shape, one_equation(sa, sb, placeholder, sigma, shape)
