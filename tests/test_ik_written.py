@@ -148,3 +148,23 @@ def _denominators(text: str) -> list[int]:
     import re
 
     return [int(m) for m in re.findall(r"/\(?(\d+)(?![.\d])", text)]
+
+
+OFFSET_ARM = """name: planar 3R with decimal offsets
+convention: standard
+joints:
+  - {{joint: R, theta: q_1 + {first}, d: 0, a: 0.3, alpha: 0}}
+  - {{joint: R, theta: q_2 - {second}, d: 0, a: 0.25, alpha: 0}}
+  - {{joint: R, theta: q_3 + 0.5, d: 0, a: 0.1, alpha: 0}}
+"""
+
+
+@pytest.mark.parametrize("first, second, constant", [("0.25", "0.125", "0.625"),
+                                                     ("0.1234567", "0.7654321", "0.1419754")])
+def test_a_sum_of_the_files_offsets_prints_as_a_decimal(first, second, constant, tmp_path):
+    # q3 = φ1 − q1 − q2 − (its offsets): the constant is the file's decimals added, not the algebra's
+    # own fraction (it printed as 5/8, and a 16-digit fraction on the SO-100)
+    path = tmp_path / "offsets.yaml"
+    path.write_text(OFFSET_ARM.format(first=first, second=second))
+    text = str(inverse_kinematics(load(str(path))).text())
+    assert f"{constant}" in next(line for line in text.splitlines() if line.strip().startswith("q3 ="))

@@ -52,8 +52,8 @@ class WrittenNumbers:
             return None
         if (10 ** (2 * self.places)) % value.q:
             return None
-        if self.folded and _places(value.q) > FRACTION_PLACES:
-            return decimal_text(value)  # the algebra's own fractions are short: this one came from the decimals
+        if self.folded and (_places(value.q) > FRACTION_PLACES or alone and _places(value.q) <= self.places):
+            return decimal_text(value)  # from the decimals (a long one; a sum of offsets): not the algebra's own
         if (self.folded or value.q in self.fractions) and not (alone and abs(value) in self.values):
             return None
         return decimal_text(value)
