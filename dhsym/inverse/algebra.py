@@ -100,6 +100,18 @@ def factor_terms(expr) -> sympy.Expr:
     return expr if plain_sum(expr) else sympy.factor_terms(expr)
 
 
+def over_one_denominator(expr) -> sympy.Expr:
+    """`expr` multiplied out, then over one denominator with common factors out; a plain sum of
+    monomials (see `plain_sum`) is that already, and is given back at once.
+
+    >>> x, a = sympy.symbols("x a", real=True)
+    >>> over_one_denominator((x - a**2) / (2 * a)), over_one_denominator(-(x - 2 * a))
+    ((-a**2 + x)/(2*a), 2*a - x)
+    """
+    expanded = expand(expr)
+    return expanded if plain_sum(expanded) else sympy.factor_terms(sympy.together(expanded))
+
+
 def plain_sum(expr) -> bool:
     """Whether `expr` is a sum of monomials (integer coefficients, whole powers of symbols and
     cos/sin of symbols) with nothing for factor_terms or together to take out: the coefficients'
@@ -185,6 +197,6 @@ def shorter_with(expr, known: dict):
     used = {name: value for name, value in known.items() if name in expr.free_symbols - inside}
     if not used:
         return expr
-    written = sympy.factor_terms(sympy.together(expand(expr.xreplace(used))))
+    written = over_one_denominator(expr.xreplace(used))
     return written if length(written) < length(expr) else expr
 

@@ -171,10 +171,11 @@ def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozens
         if c.variable in prismatic:
             rule = "linear" if len(c.form) == 2 else "quadratic"
             # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
-            rank = (1 if c.form[0].is_number else 5) if rule == "linear" else _two_roots_rank(c, True, witness)
+            rank = (1 if c.form[0].is_number else 5) if rule == "linear" else (6 if _touches(c, True, witness) else 4)
             options.append(((kind_rank(c), rank, _form_length(c.form)), rule, [c]))
         else:
-            options.append(((kind_rank(c), _two_roots_rank(c, False, witness), _form_length(c.form)), "one", [c]))
+            rank = 6 if _touches(c, False, witness) else 4  # two roots; last where they are one
+            options.append(((kind_rank(c), rank, _form_length(c.form)), "one", [c]))
     by_source: dict = {}
     for c in singles:
         if c.variable not in prismatic:
@@ -212,12 +213,12 @@ def _first(options, witness):
     return None
 
 
-def _two_roots_rank(candidate, slide: bool, witness) -> int:
-    """4 for an equation with two roots; 6, after every other rule, where its square root's argument
-    vanishes at the witness pose: an equation can touch an arm of fewer than six joints' poses
-    everywhere (one double root), and its ±√ of rounding noise would cost digits."""
+def _touches(candidate, slide: bool, witness) -> bool:
+    """Whether the square root's argument of a two-root equation vanishes at the witness pose: an
+    equation can touch an arm of fewer than six joints' poses everywhere (one double root), and
+    its ±√ of rounding noise would cost digits."""
     argument = sp.root_argument(candidate.form, slide)
-    return 6 if argument is not None and _vanishes(argument, witness) else 4
+    return argument is not None and bool(witness) and _vanishes(argument, witness)
 
 
 def kind_rank_of(equation, order) -> int:
@@ -367,7 +368,7 @@ def _apply(rule, candidates, derivation, constants, witness=None) -> sympy.Expr:
     slides = {name: value for name, value in derivation.assignments if value.is_polynomial(*value.free_symbols)}
     a, b, c = (algebra.shorter_with(x, slides) for x in first.form)  # the SCARA's d3 cancels from D
     law = (b == 0 or a == 0)
-    if c != 0 and witness and _vanishes(sp.existence(a, b, c), witness):
+    if _touches(first, False, witness):
         return _double_root(a, b, c, law, variable, first.equation.where, derivation)
     shape = "A"
     if not law and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest

@@ -90,7 +90,6 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
     numbers = witness(robot)
     definitions: list = []
     wrist_joints = []
-    pieper_used = False
     if structure.wrist and len(unknowns) > 3:
         wrist_joints = [chain.joint_variables[j - 1] for j in structure.wrist]
         holder, local, in_last = centre(chain, structure.wrist)
@@ -101,17 +100,10 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
             numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
             point = sympy.Matrix(names)
         arm = [v for v in unknowns if v not in wrist_joints]
-        kept = dict(numbers)
-        try:
-            scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder), arm, prismatic, derivation,
-                 constants=constants, witness=numbers, unique=unique)
-        except UserError as refusal:  # no sub-problem: Pieper's elimination, a quartic in tan(θ3/2)
-            derivation, numbers = Derivation(), kept
-            try:
-                pieper(robot, point, local, holder, arm, derivation, taken=[n for n, _ in definitions])
-            except UserError:
-                raise refusal from None
-            pieper_used = True
+        derivation, numbers, pieper_used = _arm(
+            robot, point_equations(robot, point, sum(x ** 2 for x in point), local, holder), arm, prismatic,
+            constants, numbers, unique, lambda fresh: pieper(robot, point, local, holder, arm, fresh,
+                                                               taken=[n for n, _ in definitions]))
         scan(transform_equations(robot, target, position=False, start=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers, unique=unique)
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.wrist)} meet at the wrist "
@@ -129,18 +121,11 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
         numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
         point = sympy.Matrix(names)
         arm = [v for v in unknowns if v not in wrist_joints]
-        kept = dict(numbers)
-        try:
-            scan(point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
-                 arm, prismatic, derivation, constants=constants, witness=numbers, unique=unique)
-        except UserError as refusal:  # as above, the arm counted from the end
-            derivation, numbers = Derivation(), kept
-            try:
-                pieper(robot, point, local, holder, arm[::-1], derivation, taken=[n for n, _ in definitions],
-                       known_in=chain.last_frame)
-            except UserError:
-                raise refusal from None
-            pieper_used = True
+        derivation, numbers, pieper_used = _arm(  # as above, the arm counted from the end
+            robot, point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
+            arm, prismatic, constants, numbers, unique,
+            lambda fresh: pieper(robot, point, local, holder, arm[::-1], fresh, taken=[n for n, _ in definitions],
+                                 known_in=chain.last_frame))
         scan(transform_equations(robot, target, position=False, end=holder), wrist_joints, prismatic, derivation,
              prefer=("orientation",), constants=constants, witness=numbers, unique=unique)
         method = (f"kinematic decoupling: the axes of joints {_joints(robot, structure.first_wrist)} meet at a "
@@ -161,6 +146,22 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
         if structure.parallel and len(unknowns) == 6:  # the joints after the parallel ones turn the tool
             wrist_joints = [chain.joint_variables[j - 1] for j in structure.unknowns if j > structure.parallel[-1]]
     return derivation, definitions, wrist_joints, method
+
+
+def _arm(robot, equations, arm, prismatic, constants, numbers, unique, by_pieper):
+    """(derivation, witness numbers, whether Pieper's quartic was used) for the position of a wrist
+    centre: the sub-problems, else `by_pieper(fresh derivation)`, else the sub-problems' refusal."""
+    derivation, kept = Derivation(), dict(numbers)
+    try:
+        scan(equations, arm, prismatic, derivation, constants=constants, witness=numbers, unique=unique)
+        return derivation, numbers, False
+    except UserError as refusal:  # no sub-problem: Pieper's elimination, a quartic in tan(θ3/2)
+        derivation = Derivation()
+        try:
+            by_pieper(derivation)
+        except UserError:
+            raise refusal from None
+        return derivation, kept, True
 
 
 def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:

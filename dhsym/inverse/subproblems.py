@@ -80,10 +80,7 @@ def _divided(value, factor):
     """value / factor over one denominator ((K − a2²)/(2 a2), not K/(2 a2) − a2/2)."""
     if factor in (1, -1):
         return factor * value
-    divided = algebra.expand(value / factor)
-    if algebra.plain_sum(divided):  # a and b, which the factor divides: nothing to put over one denominator
-        return divided
-    return sympy.factor_terms(sympy.together(divided))
+    return algebra.over_one_denominator(value / factor)
 
 
 def _common_constant(a, b, constants) -> sympy.Expr:
@@ -320,17 +317,11 @@ def double_root(a, b, c) -> sympy.Expr:
     return sympy.atan2(b * c, a * c)
 
 
-def negated(x):
-    """−x over one denominator, common factors out (a plain sum of monomials is that already)."""
-    negated_x = algebra.expand(-x)
-    return negated_x if algebra.plain_sum(negated_x) else sympy.factor_terms(sympy.together(negated_x))
-
-
 def book_variants(a, b, c, sigma):
     """(a, b, c, shape, the angle with c as a placeholder) for both signs of the equation and both
     atan2 identities: Craig writes θ1 = atan2(py, px) − atan2(d3, ±√(px² + py² − d3²))."""
     placeholder = sympy.Dummy("c")
     for sign in (1, -1):
-        sa, sb, sc = (x if sign == 1 else negated(x) for x in (a, b, c))
+        sa, sb, sc = (x if sign == 1 else algebra.over_one_denominator(-x) for x in (a, b, c))
         for shape in ("A", "B"):
             yield sa, sb, sc, shape, one_equation(sa, sb, placeholder, sigma, shape)
