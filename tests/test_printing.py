@@ -203,3 +203,25 @@ def test_json_form_reads_back_to_the_same_expression_with_no_extra_sign():
         for element in robot.fk():
             names = {symbol.name: symbol for symbol in element.free_symbols}
             assert sympy.sympify(exact.doprint(element), locals=names) == element, (name, element)
+
+
+def test_an_ik_printer_prints_the_same_whatever_it_printed_before():
+    # The IK printer keeps what it printed (the branches share most assignments); a solver's sentence
+    # reads its decimals back under other number rules, and must not get the other rule's text.
+    from dhsym.core.numbers import WrittenNumbers
+    from dhsym.printing.ik import text_printer
+
+    px = sympy.Symbol("px", real=True)
+    value = sympy.Rational(17, 40) * px
+
+    def printed(read_back_first: bool) -> tuple:
+        printer = text_printer(load("planar2r").chain)
+        printer.numbers = WrittenNumbers(places=3, values=frozenset({sympy.Rational(17, 40)}), folded=True)
+        with printer.numbers_read_back():
+            read = printer.doprint(value) if read_back_first else None
+        plain = printer.doprint(value)
+        with printer.numbers_read_back():
+            read = printer.doprint(value) if not read_back_first else read
+        return plain, read
+
+    assert printed(True) == printed(False) == ("(17 px)/40", "0.425 px")

@@ -58,9 +58,10 @@ class _InverseNotation:
             if type(expr) in _FUNCTION and expr.args[0] in named else joint_abbreviation(expr))
 
     def doprint(self, expr):
-        if expr not in self._printed:  # the branches share most of their assignments
-            self._printed[expr] = super().doprint(by_target(expr))
-        return self._printed[expr]
+        key = (expr, self.numbers)  # the branches share most of their assignments; read-back numbers differ
+        if key not in self._printed:
+            self._printed[key] = super().doprint(by_target(expr))
+        return self._printed[key]
 
     def _signed(self, term) -> tuple[bool, str]:
         """(is negative, text of its magnitude), the sign decided by how the terms print, not by
