@@ -58,7 +58,7 @@ from ..core.robot import as_chain
 from ..velocity.geometry import poses, wrist_centre
 from .branches import WORDS
 from .pointwise import BranchValues
-from .sides import MEASURES, Arm
+from .sides import MEASURES, TOLERANCE, Arm
 from .solution import Branch
 
 POSES = 12  # the words must hold at every one of these poses
@@ -96,7 +96,7 @@ def checked_names(solution):
     chain = solution.chain
     joints = [_root_joint(solution, parts, k) for k in range(len(parts[0]))]
     chosen = [None] * len(joints)
-    arm = Arm(as_chain(chain), wrist_centre(chain), chain.sample, getattr(chain, "frame_offset", 0))
+    arm = Arm(as_chain(chain), wrist_centre(chain), chain.sample, chain.frame_offset)
     if any(joints):
         measured = _measured(solution, arm, parts, joints)
         chosen = [_first_holding(measured, parts, k, role) if joints[k] else None
@@ -200,9 +200,9 @@ def _first_holding(measured, parts, k, role):
     same at every pose of each branch and opposite in two branches that differ in choice k only;
     None if no measure holds."""
     for key in _candidates(role):
-        tolerance, words = MEASURES[key].tolerance, []
+        words = []
         for values in measured:
-            seen = [v > 0 for v in (at[(key, k)] for at in values) if v is not None and abs(v) > tolerance]
+            seen = [v > 0 for v in (at[(key, k)] for at in values) if v is not None and abs(v) > TOLERANCE]
             if len(set(seen)) != 1 or len(seen) < CHECKED_AT_LEAST:
                 break
             words.append(0 if seen[0] else 1)

@@ -54,7 +54,8 @@ class BranchValues:
             steps = [(printer.slot(name), function(value)) for name, value in branch.assignments if name in kept]
             self._branches.append(([name for name, _ in branch.assignments if name in kept], steps))
         self._shared = [(printer.slot(name), function(value)) for name, value in solution.definitions]
-        self._constants = [s for s in self._slots if s not in set(target_symbols())]
+        targets = set(target_symbols())
+        self._constants = [s for s in self._slots if s not in targets]
 
     def __call__(self, target, constants: dict) -> list:
         values = [math.nan] * len(self._slots)
@@ -90,8 +91,7 @@ class _MathCode(PythonCodePrinter):
     def _print_Symbol(self, expr):
         return f"v[{self.slot(expr)}]"
 
-    def _print_Dummy(self, expr):
-        return f"v[{self.slot(expr)}]"
+    _print_Dummy = _print_Symbol
 
     def _print_Pow(self, expr, rational=False):
         if expr.exp == sympy.S.Half:

@@ -13,14 +13,23 @@ of the arm, a signed number per word pair, positive for the first word ("right",
 """
 from __future__ import annotations
 
-import math
 import random
 from dataclasses import dataclass
 from typing import Callable
 
-from ..velocity.geometry import axis_line, cross, distance_to_axis, dot, minus, poses, sample_values
+from ..velocity.geometry import (
+    axis_line,
+    cross,
+    distance_to_axis,
+    dot,
+    minus,
+    nearest_point,
+    norm,
+    poses,
+    sample_values,
+)
 
-TOLERANCE = 1e-7
+TOLERANCE = 1e-7  # a measure smaller than this says nothing (the pose is between two words)
 
 
 @dataclass(frozen=True)
@@ -28,7 +37,6 @@ class Measure:
     role: str  # printed before the word: "shoulder", "elbow", "wrist", "slide", or "" (righty, lefty)
     words: tuple[str, str]  # (for a positive number, for a negative one)
     measure: Callable  # (Arm, frames, the joint (1..n) whose formula holds the choice) -> float | None
-    tolerance: float = TOLERANCE  # a smaller number says nothing
 
 
 class Arm:
@@ -56,7 +64,7 @@ class Arm:
             for j in range(min(chain.n, 6), 4, -1):
                 line, before = axis_line(chain, j, frames), axis_line(chain, j - 1, frames)
                 if not _parallel(line[1], before[1]):
-                    point = _nearest(line, before)
+                    point = nearest_point(line, before)
                     if distance_to_axis(point, before) < TOLERANCE:
                         return point, f"wrist (where axes {j - 1 + self.offset} and {j + self.offset} meet)"
         return frames[chain.last_frame][1], "end point (the target's origin)"
@@ -119,7 +127,7 @@ def _right(arm, frames, joint):
         return None
     reach = minus(arm.wrist(frames)[0], shoulder)
     offset = [dot(across, reach) * a for a in across]
-    if _length(offset) < TOLERANCE:
+    if norm(offset) < TOLERANCE:
         return None  # no offset along axis 2: the shoulder's words are front and back
     return -dot(cross(_flat(reach, up), offset), up)
 
@@ -132,7 +140,7 @@ def _front(arm, frames, joint):
     base = axis_line(arm.chain, 1, frames)[0]
     apart = _flat(minus(shoulder, base), up)
     apart = [a - dot(across, apart) * c for a, c in zip(apart, across)]  # the common normal of axes 1 and 2
-    if _length(apart) < TOLERANCE:
+    if norm(apart) < TOLERANCE:
         return None
     return dot(apart, _flat(minus(arm.wrist(frames)[0], base), up))
 
@@ -149,7 +157,7 @@ def _ahead(end: bool):
             return None  # the same as the wrist's word
         base = axis_line(arm.chain, 1, frames)[0]
         x1 = _flat([row[0] for row in frames[1][0]], up)
-        if _length(x1) < TOLERANCE:
+        if norm(x1) < TOLERANCE:
             return None
         return dot(x1, _flat(minus(frames[arm.chain.last_frame][1] if end else point, base), up))
     return measure
@@ -173,7 +181,7 @@ def _up(outward: bool):
         reach, bend, out = (minus(a, b) for a, b in ((wrist, shoulder), (elbow, shoulder), (wrist, start)))
         reach, bend, out = ([x - dot(across, v) * a for x, a in zip(v, across)] for v in (reach, bend, out))
         flat = _flat(out, up)
-        length = _length(flat)
+        length = norm(flat)
         if length < TOLERANCE:
             return 0.0  # the wrist straight above the start: neither
         forward = [x / length for x in flat]
@@ -198,7 +206,7 @@ def _forward(arm, frames, joint):
     if axes is None:
         return None
     slide = axis_line(arm.chain, axes[0], frames)
-    foot = _nearest(slide, axis_line(arm.chain, axes[1], frames))
+    foot = nearest_point(slide, axis_line(arm.chain, axes[1], frames))
     return dot(minus(arm.slide_point(frames)[0], foot), slide[1])
 
 
@@ -240,15 +248,6 @@ MEASURES = {"right": Measure("shoulder", ("right", "left"), _right),
             "flip": Measure("wrist", ("not flipped", "flipped"), _unflipped)}
 
 
-def _nearest(line, other) -> list:
-    """The point of `line` nearest the line `other` (not parallel to it): p + t d."""
-    (p, d), (q, e) = line, other
-    w = minus(q, p)
-    cosine = dot(d, e)
-    t = (dot(w, d) - dot(w, e) * cosine) / (1 - cosine * cosine)
-    return [a + t * b for a, b in zip(p, d)]
-
-
 def _flat(vector, up) -> list:
     """`vector` without its part along `up`."""
     along = dot(vector, up)
@@ -256,8 +255,4 @@ def _flat(vector, up) -> list:
 
 
 def _parallel(u, v) -> bool:
-    return _length(cross(u, v)) < TOLERANCE
-
-
-def _length(vector) -> float:
-    return math.sqrt(sum(x * x for x in vector))
+    return norm(cross(u, v)) < TOLERANCE

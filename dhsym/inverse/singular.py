@@ -18,7 +18,7 @@ import random
 import sympy
 
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
-from ..velocity.geometry import axis_line, poses, sample_values, wrist_centre
+from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
 from .subproblems import LINED_UP_UNSAID, factor_bases
 
@@ -82,8 +82,8 @@ def lined_up(chain, angle) -> str:
         reference = axis_line(chain, start, frame_poses)[1]
         run, j = [], start
         while 1 <= j <= chain.n and chain.rows[j - 1].joint == "R":
-            along = sum(x * y for x, y in zip(reference, axis_line(chain, j, frame_poses)[1]))
-            if abs(abs(along) - 1) > 1e-9:
+            along = dot(reference, axis_line(chain, j, frame_poses)[1])
+            if abs(abs(along) - 1) > TOLERANCE:
                 break
             run.append((j, 1 if along > 0 else -1))
             j += step
@@ -91,8 +91,8 @@ def lined_up(chain, angle) -> str:
 
     before, towards = parallel_run(k - 1, -1)
     after, away = parallel_run(k + 1, 1)
-    alike = sum(x * y for x, y in zip(towards, away))
-    if not before or not after or abs(abs(alike) - 1) > 1e-9:
+    alike = dot(towards, away)
+    if not before or not after or abs(abs(alike) - 1) > TOLERANCE:
         return LINED_UP_UNSAID
 
     def total(run, sign=1):

@@ -19,13 +19,12 @@ parameters with --free (e.g. --free theta_3)
 """
 from __future__ import annotations
 
-import math
 import random
 from dataclasses import dataclass
 
 from ..core.robot import as_chain, as_robot
 from ..errors import UserError
-from ..velocity.geometry import axis_line, cross, dot, minus, poses, sample_values
+from ..velocity.geometry import axis_line, cross, distance_to_axis, nearest_point, norm, poses, sample_values
 
 TOLERANCE = 1e-7
 TRIALS = 3
@@ -76,22 +75,13 @@ def analyse(chain, free=()) -> Structure:
 
 def _meet(config: dict, joints) -> bool:
     """Whether the axes of `joints` pass through one point (the first two not parallel)."""
-    (p1, u1), (p2, u2) = config[joints[0]], config[joints[1]]
-    normal = cross(u1, u2)
-    if math.sqrt(dot(normal, normal)) < TOLERANCE:
+    first, second = config[joints[0]], config[joints[1]]
+    if norm(cross(first[1], second[1])) < TOLERANCE:
         return False
-    w = minus(p1, p2)
-    b, d, e = dot(u1, u2), dot(u1, w), dot(u2, w)
-    s = (b * e - d) / (1 - b * b)
-    point = [p + s * u for p, u in zip(p1, u1)]
-    return all(_distance(point, config[j]) < TOLERANCE for j in joints)
+    point = nearest_point(first, second)
+    return all(distance_to_axis(point, config[j]) < TOLERANCE for j in joints)
 
 
 def _parallel(config: dict, joints) -> bool:
     first = config[joints[0]][1]
-    return all(math.sqrt(dot(c, c)) < TOLERANCE for c in (cross(first, config[j][1]) for j in joints[1:]))
-
-
-def _distance(point, line) -> float:
-    offset = cross(line[1], minus(point, line[0]))
-    return math.sqrt(dot(offset, offset))
+    return all(norm(cross(first, config[j][1])) < TOLERANCE for j in joints[1:])

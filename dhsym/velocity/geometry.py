@@ -19,8 +19,8 @@ from ..core.vectors import cross, dot
 from .jacobian import axis_frame
 
 # cross and dot live in core.vectors; they are named here too for the modules that take them from here
-__all__ = ["TOLERANCE", "axis_line", "cross", "distance_to_axis", "dot", "minus", "poses", "sample_values",
-           "wrist_centre"]
+__all__ = ["TOLERANCE", "axis_line", "cross", "distance_to_axis", "dot", "minus", "nearest_point", "norm", "poses",
+           "sample_values", "wrist_centre"]
 
 TOLERANCE = 1e-9
 
@@ -68,9 +68,26 @@ def minus(u, v) -> list:
     return [a - b for a, b in zip(u, v)]
 
 
+def norm(vector) -> float:
+    return math.sqrt(dot(vector, vector))
+
+
 def distance_to_axis(point, line) -> float:
     """How far `point` is from the line (point, unit direction)."""
-    return math.sqrt(sum(x * x for x in cross(line[1], minus(point, line[0]))))
+    return norm(cross(line[1], minus(point, line[0])))
+
+
+def nearest_point(line, other) -> list:
+    """The point of `line` nearest the line `other`, both (point, unit direction), not parallel.
+
+    >>> nearest_point(([0, 0, 0], [1, 0, 0]), ([2, 1, 5], [0, 0, 1]))
+    [2.0, 0.0, 0.0]
+    """
+    (p, d), (q, e) = line, other
+    w = minus(q, p)
+    cosine = dot(d, e)
+    t = (dot(w, d) - dot(w, e) * cosine) / (1 - cosine * cosine)
+    return [a + t * b for a, b in zip(p, d)]
 
 
 def wrist_centre(chain, trials: int = 3, sample=None):
