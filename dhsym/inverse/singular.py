@@ -20,7 +20,7 @@ import sympy
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
-from .subproblems import LINED_UP_UNSAID, factor_bases
+from .subproblems import LINED_UP_UNSAID, factor_bases, lined_up_angle
 
 
 def tie_to_jacobian(chain, derivation) -> None:
@@ -56,9 +56,9 @@ def wrist_factors(chain) -> list:
 def say_lined_up(chain, derivation) -> None:
     """Where sin θk = 0 lines up two axes, say which of the sum or the difference is determined."""
     for expr, index in derivation.vanishing:
-        bases, sentence = factor_bases(expr), derivation.degenerate[index]
-        if LINED_UP_UNSAID in sentence and len(bases) == 1 and isinstance(base := bases.pop(), sympy.sin):
-            derivation.degenerate[index] = sentence.replace(LINED_UP_UNSAID, lined_up(chain, base.args[0]))
+        angle, sentence = lined_up_angle(expr), derivation.degenerate[index]
+        if angle is not None and LINED_UP_UNSAID in sentence:
+            derivation.degenerate[index] = sentence.replace(LINED_UP_UNSAID, lined_up(chain, angle))
 
 
 def lined_up(chain, angle) -> str:

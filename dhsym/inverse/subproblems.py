@@ -265,6 +265,21 @@ def factor_bases(expr) -> set:
     return {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
 
 
+def lined_up_angle(det):
+    """θk where a pair's determinant is a power of sin θk alone (the wrist's s5), else None.
+
+    >>> t, x = sympy.symbols("theta_5 x", real=True)
+    >>> lined_up_angle(-sympy.sin(t)**2), lined_up_angle(x * sympy.sin(t))
+    (theta_5, None)
+    """
+    bases = factor_bases(det)
+    if len(bases) == 1:
+        (base,) = bases
+        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
+            return base.args[0]
+    return None
+
+
 def degenerate_pair(det, shown, forms) -> str:
     """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
     (the wrist's s5), the axes on either side of joint k line up: a one-parameter family. A pair
@@ -274,13 +289,11 @@ def degenerate_pair(det, shown, forms) -> str:
     >>> degenerate_pair(x**2 + y**2, t, ((x, -y, 1), (y, x, 2)))
     'x = 0 and y = 0: t is not determined by these equations'
     """
-    bases = factor_bases(det)
-    if len(bases) == 1:
-        (base,) = bases
-        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
-            return (f"{base} = 0: {shown} is not determined on its own: the axes on either side of "
-                    f"{base.args[0]} line up, and {LINED_UP_UNSAID}, a one-parameter family (a numeric "
-                    "evaluation gives one member)")
+    angle = lined_up_angle(det)
+    if angle is not None:
+        return (f"{sympy.sin(angle)} = 0: {shown} is not determined on its own: the axes on either side of "
+                f"{angle} line up, and {LINED_UP_UNSAID}, a one-parameter family (a numeric "
+                "evaluation gives one member)")
     a1, b1, _ = forms[0]
     # α = 0 and β = 0 where that is shorter than α² + β² expanded (pz² + (px c1 + py s1)²)
     if rotation_sign(*forms) is not None and length(a1) + length(b1) < length(det):
