@@ -83,18 +83,8 @@ class _InverseNotation:
                 return True, self._print(spread)[len(self.minus.strip()):]
         return negative, self._product(coefficient, factors)
 
-    def _sign_parts(self, term):
-        """(negative, |coefficient|, factors) of a product, each bracket turned to start with a plus."""
-        coefficient, rest = term.as_coeff_Mul()
-        negative, factors = bool(coefficient.is_negative), []
-        for factor in sympy.Mul.make_args(rest):
-            if factor.is_Add and self._leads_negative(factor):
-                factor, negative = -factor, not negative
-            factors.append(factor)
-        return negative, abs(coefficient), factors
-
     def _leads_negative(self, total) -> bool:
-        """Whether a sum, printed in its order, starts with a minus."""
+        """Whether a sum, printed in its order, starts with a minus (as the terms print)."""
         return self._prints_negative(min(total.args, key=self.notation.term_key))
 
     def _prints_negative(self, term) -> bool:

@@ -162,14 +162,22 @@ class _TextbookMixin:
         if not term.is_Mul:
             negative = term.could_extract_minus_sign()
             return negative, self._print(-term if negative else term)
+        negative, coefficient, factors = self._sign_parts(term)
+        return negative, self._product(coefficient, factors)
+
+    def _sign_parts(self, term):
+        """(negative, |coefficient|, factors) of a product, each bracket turned to start with a plus."""
         coefficient, rest = term.as_coeff_Mul()
-        negative = bool(coefficient.is_negative)
-        factors = []
+        negative, factors = bool(coefficient.is_negative), []
         for factor in sympy.Mul.make_args(rest):
-            if factor.is_Add and min(factor.args, key=self.notation.term_key).could_extract_minus_sign():
+            if factor.is_Add and self._leads_negative(factor):
                 factor, negative = -factor, not negative
             factors.append(factor)
-        return negative, self._product(abs(coefficient), factors)
+        return negative, abs(coefficient), factors
+
+    def _leads_negative(self, total) -> bool:
+        """Whether a sum, printed in its order, starts with a minus."""
+        return min(total.args, key=self.notation.term_key).could_extract_minus_sign()
 
     def _product(self, coefficient, factors) -> str:
         factors = sorted(factors, key=self.notation.factor_key)
