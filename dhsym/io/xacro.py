@@ -13,8 +13,11 @@ taken out of its hands.
 - `xacro:include` reads only .xacro, .urdf and .xml files, and `load_yaml` only .yaml and .yml
   files, inside those trees, each a regular file of at most 2 MiB (YAML: 1 MiB), no DOCTYPE, at
   most 200 files and 8 MiB in all; no wildcards.
-- Expansion stops after 50,000 elements, 64 nested macro calls, 32 MiB of text worked through
-  (a macro that copies a long text at each level) or 1,000,000 expression parts evaluated.
+- Expansion stops after 50,000 elements, 64 nested macro calls, 16 MiB of text worked through
+  (a macro that copies a long text at each level), 20,000 substitutions worked out (a macro that
+  repeats `${p}` many times) or 100,000 expression parts evaluated, and a text whose length
+  times its `$` signs passes 50 million (xacro's lexer copies the rest of the text at each) is
+  refused before xacro reads it: every bound a count made as the expansion goes.
 - Tags written without the `xacro:` prefix are read as ROS 1's xacro read them (`xacroros1`).
   `expand_xacro(path, warnings)` appends the warnings of the expansion to `warnings`.
 
@@ -63,7 +66,9 @@ MAX_FILES = 200
 MAX_TOTAL_BYTES = 8 << 20
 MAX_ELEMENTS = 50_000
 MAX_MACRO_DEPTH = 64
-MAX_TEXT_WORK = 32 << 20
+MAX_TEXT_WORK = 16 << 20
+MAX_SUBSTITUTIONS = 20_000  # ${…} and $(…) worked out in one expansion; a UR5e's takes 639
+MAX_LEX_WORK = 50_000_000  # a text's length times its `$` signs: xacro's lexer copies the rest at each one
 INCLUDABLE = (".xacro", ".urdf", ".xml")
 YAML_SUFFIXES = (".yaml", ".yml")
 _EXPRESSION = re.compile(r"(?<!\$)\$\{([^}]*)\}")
@@ -109,7 +114,7 @@ class _Expander:
         self.texts = {}
         self.ros1 = Ros1Tags()
         self.work = Work(self.load_yaml)
-        self.files = self.bytes = self.elements = self.text_work = 0
+        self.files = self.bytes = self.elements = self.text_work = self.substitutions = 0
 
     @contextlib.contextmanager
     def guarded(self):
@@ -154,7 +159,17 @@ class _Expander:
         return self.original["eval_all"](node, macros, symbols)
 
     def eval_text(self, text, symbols):
-        """xacro's evaluation of a text, counting the characters read and made."""
+        """xacro's evaluation of a text, counting the characters read and made and the
+        substitutions worked out, before the work."""
+        if isinstance(text, str) and "$" in text:
+            dollars = text.count("$")
+            if len(text) * dollars > MAX_LEX_WORK:
+                raise UserError(f"a text of {len(text):,} characters with {dollars:,} substitutions is more than a "
+                                "robot file needs", Location(str(self.top)))
+            self.substitutions += text.count("${") + text.count("$(")
+            if self.substitutions > MAX_SUBSTITUTIONS:
+                raise UserError(f"the expansion works out more than {MAX_SUBSTITUTIONS:,} ${{…}} and $(…) "
+                                "substitutions (a macro that repeats one many times?)", Location(str(self.top)))
         self.count_text(text)
         result = self.original["eval_text"](text, symbols)
         self.count_text(result)
