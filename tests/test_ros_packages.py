@@ -59,6 +59,7 @@ def command(relative, base, tip, arguments, package_paths, *more):
     return argv
 
 
+@pytest.mark.slow  # a second each: SymPy's product and yourdfpy's reading (the expansion test below is fast)
 @pytest.mark.parametrize("convention", ["standard", "modified"])
 @pytest.mark.parametrize("label, relative, base, tip, arguments, package_paths", LAYOUTS, ids=[c[0] for c in LAYOUTS])
 def test_each_layout_imports_with_the_kinematics_of_xacros_own_expansion(label, relative, base, tip, arguments,
@@ -167,3 +168,11 @@ def test_the_search_is_bounded_and_says_so(tmp_path, monkeypatch):
                    '  <xacro:include filename="$(find gripper)/g.xacro"/></robot>')
     status, _, stderr = run_dhsym("import", str(top))
     assert status == 2 and "(the search stopped after 3 folders)" in stderr
+
+
+def test_xacro_arguments_for_a_plain_urdf_are_ignored_with_a_warning():
+    urdf = Path(__file__).parent / "data" / "ur5.urdf"
+    status, stdout, stderr = run_dhsym("import", str(urdf), "--tip", "tool0", "--xacro-arg", "ur_type:=ur5e")
+    assert status == 0 and stdout.startswith('name: "ur5"')
+    ignored = f"dhsym: warning: {urdf}: --xacro-arg is ignored: the file is a URDF, not a xacro file"
+    assert ignored in stderr.splitlines()

@@ -23,6 +23,7 @@ def doubling(body: str, levels: int, prelude: str = "") -> str:
 MEGABYTE = "a" * (1 << 20)
 
 
+@pytest.mark.slow  # reading and checking a megabyte takes a second or two; the corpus has a small one
 @pytest.mark.parametrize("body", [f'<link name="l" note="{MEGABYTE}"/>', f'<link name="l">{MEGABYTE}</link>'],
                          ids=["attribute", "text"])
 def test_a_megabyte_doubled_twelve_times_is_refused_by_counting_bytes(body, tmp_path):
@@ -43,6 +44,7 @@ def test_a_text_of_many_dollar_signs_is_refused_before_xacro_reads_it(tmp_path):
                       "robot file needs\n")
 
 
+@pytest.mark.slow  # xacro's own work up to the bound, a second or two; the corpus has a small one
 def test_millions_of_evaluations_are_refused_by_counting_them(tmp_path):
     path = tmp_path / "evaluations.xacro"
     prelude = '  <xacro:property name="p" value="1"/>\n'
