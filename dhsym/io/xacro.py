@@ -114,6 +114,7 @@ class _Expander:
         self.texts = {}
         self.ros1 = Ros1Tags()
         self.work = Work(self.load_yaml)
+        self.original = {}  # xacro's own functions, while the hooks stand in for them
         self.files = self.bytes = self.elements = self.text_work = self.substitutions = 0
 
     @contextlib.contextmanager
@@ -121,13 +122,12 @@ class _Expander:
         xacro = self.xacro
         hooked = ("parse", "safe_eval", "eval_extension", "get_include_files", "eval_all", "eval_text",
                   "handle_macro_call")
-        saved = {name: getattr(xacro, name) for name in hooked}
+        saved = self.original = {name: getattr(xacro, name) for name in hooked}
         xacro.parse, xacro.eval_all, xacro.eval_text = self.parse, self.eval_all, self.eval_text
         xacro.handle_macro_call = self.handle_macro_call
         xacro.safe_eval = lambda expr, symbols, locals=None: self.evaluate(expr, symbols)
         xacro.eval_extension = self.extension
         xacro.get_include_files = self.include_files
-        self.original = saved
         try:
             with contextlib.redirect_stderr(io.StringIO()):  # xacro's own chatter; its errors are raised
                 yield
