@@ -147,11 +147,11 @@ def screws(robot):
 
 
 def import_urdf(path, base: str | None = None, tip: str | None = None, convention: str = "standard",
-                variables: str = "q"):
+                variables: str = "q", xacro_args: dict | None = None, package_paths=()):
     """A DH robot derived from a URDF (or .xacro) file's base → tip path, as `dhsym import`:
     `.robot` (its notes name each variable's URDF joint, its warnings are the reader's) and
-    `.joint_names`; `variables="urdf"` names the joint
-    variables after the URDF's joints.
+    `.joint_names`; `variables="urdf"` names the joint variables after the URDF's joints;
+    `xacro_args` ({"ur_type": "ur5e"}) and `package_paths` as `--xacro-arg` and `--package-path`.
 
     >>> import dhsym, pathlib, tempfile
     >>> urdf = pathlib.Path(tempfile.mkdtemp(), "arm.urdf")
@@ -165,7 +165,7 @@ def import_urdf(path, base: str | None = None, tip: str | None = None, conventio
     """
     from .io.urdfimport import import_urdf as imported
 
-    return imported(path, base, tip, convention, variables)
+    return imported(path, base, tip, convention, variables, xacro_args, package_paths)
 
 
 def ik(robot, free=()):

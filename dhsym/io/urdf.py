@@ -143,6 +143,7 @@ class _Reader:
         roots = [name for name in self.links if name not in self.joints]
         if not roots:
             raise UserError("every link has a parent: the joints form a closed loop", self.where(self.root))
+        self.check_tree(roots)
         base = base or self.only(roots, "root links", "--base")
         if base not in self.links:
             raise UserError(f"no link {base!r}; the links are {_listed(self.links)}")
@@ -152,6 +153,27 @@ class _Reader:
         path = self.path(base, tip)
         self.check_size(base, tip, path)
         return self.walk(base, tip, path)
+
+    def check_tree(self, roots: list) -> None:
+        """Refuse links that no root reaches: their joints close a loop (urdfdom refuses it too)."""
+        reached, waiting = set(roots), list(roots)
+        while waiting:
+            for child in self.children.get(waiting.pop(), []):
+                if child not in reached:
+                    reached.add(child)
+                    waiting.append(child)
+        if len(reached) == len(self.links):
+            return
+        loop, link = [], next(name for name in self.links if name not in reached)
+        while link not in loop:
+            loop.append(link)
+            link = self.joints[link].find("parent").get("link").strip()
+        loop = loop[loop.index(link):]
+        loop = [loop[0], *reversed(loop[1:])]  # parent to child, from the first link of the file
+        edges = [*loop[1:], loop[0]]
+        joints = ", ".join(repr(self.joints[name].get("name")) for name in edges)
+        raise UserError(f"joints {joints} close a loop of links ({' → '.join([*loop, loop[0]])}) that no root link "
+                        "reaches; the links of a URDF form one tree", self.where(self.joints[edges[0]]))
 
     def only(self, choices: list, what: str, option: str) -> str:
         if len(choices) == 1:

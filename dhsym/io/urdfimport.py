@@ -45,19 +45,13 @@ class Imported:
 
 
 def import_urdf(path: str | Path, base: str | None = None, tip: str | None = None, convention: str = "standard",
-                variables: str = "q") -> Imported:
-    """The DH chain of a URDF's base → tip path; a `.xacro` file is expanded first (see io.xacro)."""
-    from .urdf import read_urdf, read_urdf_text  # lxml only when a URDF is read
-
-    expansion_warnings = []
-    if str(path).lower().endswith(".xacro"):
-        from .xacro import expand_xacro
-
-        urdf = read_urdf_text(expand_xacro(path, expansion_warnings), f"{path} (expanded by xacro)", base, tip)
-    else:
-        urdf = read_urdf(path, base, tip)
+                variables: str = "q", xacro_args: dict | None = None, package_paths=()) -> Imported:
+    """The DH chain of a URDF's base → tip path; a `.xacro` file, or any file that holds xacro
+    elements, is expanded first with the xacro arguments `xacro_args` (NAME → VALUE) and ROS
+    packages found in `package_paths` too (see io.xacro, io.packages)."""
     if variables not in ("q", "urdf"):
         raise UserError(f"unknown variable style {variables!r}; use q or urdf")
+    urdf, expansion_warnings = read_chain(path, base, tip, xacro_args, package_paths)
     symbols = joint_symbols(urdf.joint_names, variables)
     notes = "Derived by dhsym import; joint variables: " + ", ".join(
         f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
@@ -65,6 +59,28 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
         name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}", notes=notes,
         warnings=[*expansion_warnings, *urdf.warnings])
     return Imported(robot, list(urdf.joint_names))
+
+
+def read_chain(path, base, tip, xacro_args=None, package_paths=()):
+    """(the URDF's base → tip chain, the warnings of its expansion): a file is expanded by xacro
+    when it is named .xacro or holds xacro elements (with one warning then)."""
+    from .urdf import read_urdf_text  # lxml only when a URDF is read
+    from .xmlsource import read_regular_file, xacro_element
+
+    warnings = []
+    data = read_regular_file(path)
+    used = None if str(path).lower().endswith(".xacro") else xacro_element(data, str(path))
+    if not str(path).lower().endswith(".xacro") and used is None:
+        if xacro_args:
+            warnings.append(f"{path}: --xacro-arg is ignored: the file is a URDF, not a xacro file")
+        return read_urdf_text(data, str(path), base, tip), warnings
+    from .xacro import expand_xacro
+
+    if used is not None:
+        warnings.append(f"{used[0]}: <{used[1]}> is a xacro element, so the file is expanded by xacro although it is "
+                        f"named {Path(path).suffix or 'without .xacro'}")
+    expanded = expand_xacro(path, warnings, xacro_args, package_paths)
+    return read_urdf_text(expanded, f"{path} (expanded by xacro)", base, tip), warnings
 
 
 def joint_symbols(names: list[str], style: str) -> list[sympy.Symbol]:

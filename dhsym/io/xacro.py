@@ -3,24 +3,23 @@
 taken out of its hands.
 
 - `${…}` is worked out by `xacroexpr` (numbers, property names, arithmetic, a few math
-  functions), never by xacro's eval; each expression of each file is checked, with its
-  FILE:LINE:COL, before anything is expanded.
+  functions, YAML data), never by xacro's eval; each expression of each file is checked, with
+  its FILE:LINE:COL, before anything is expanded.
 - `$(…)`: only `$(arg NAME)` and `$(find PKG)`; `$(eval …)`, `$(env …)`, `$(optenv …)`,
-  `$(dirname)`, `$(cwd)` and `$(anon …)` are refused. `$(find PKG)` looks for a folder PKG
-  (or PKG_description, or PKG without _support) in the robot's own tree: the file's folder, or
-  for a file in a package's `urdf/` or `robots/` folder, the folder that holds the package.
-- `xacro:include` reads only .xacro, .urdf and .xml files inside that tree, each a regular file
-  of at most 2 MiB, no DOCTYPE, at most 200 files and 8 MiB in all; no wildcards.
-- Expansion stops after 50,000 elements (macros can call themselves, or double at each level)
-  or 64 nested macro calls.
-- Tags written without the `xacro:` prefix are read as ROS 1's xacro (up to 1.13, Melodic) read
-  them, with a deprecation warning, where xacro 2 leaves them as plain XML: `<property>`,
-  `<macro>`, `<arg>`, `<if>`, `<unless>`, `<insert_block>`; `<include>` only when it holds nothing
-  but text (one with elements inside, such as Gazebo's `<include><uri>…`, stays XML); and an
-  element named like a macro that a `<macro>` tag defined is a call of it (ROS 1 let any macro be
-  called so; a file written for ROS 2 that has a plain element named like one of its xacro:macros
-  keeps it as XML). Each file that has them gets one warning, at the first of them
-  (`expand_xacro(path, warnings)` appends it to `warnings`).
+  `$(dirname)`, `$(cwd)` and `$(anon …)` are refused. Arguments come from the caller
+  (`--xacro-arg NAME:=VALUE`) or from `<xacro:arg>` defaults, in document order as xacro reads
+  them. Packages are found as ROS finds them (see `packages`): the package that holds the file,
+  its workspace, and the folders given as `package_paths`, never elsewhere.
+- `xacro:include` reads only .xacro, .urdf and .xml files, and `load_yaml` only .yaml and .yml
+  files, inside those trees, each a regular file of at most 2 MiB (YAML: 1 MiB), no DOCTYPE, at
+  most 200 files and 8 MiB in all; no wildcards.
+- Expansion stops after 50,000 elements, 64 nested macro calls, 16 MiB of text worked through
+  (a macro that copies a long text at each level), 20,000 substitutions worked out (a macro that
+  repeats `${p}` many times) or 100,000 expression parts evaluated, and a text whose length
+  times its `$` signs passes 50 million (xacro's lexer copies the rest of the text at each) is
+  refused before xacro reads it: every bound a count made as the expansion goes.
+- Tags written without the `xacro:` prefix are read as ROS 1's xacro read them (`xacroros1`).
+  `expand_xacro(path, warnings)` appends the warnings of the expansion to `warnings`.
 
 >>> from pathlib import Path
 >>> import tempfile
@@ -52,29 +51,36 @@ import os
 import re
 from pathlib import Path
 
+from lxml import etree
+
 from ..errors import Location, UserError
-from .xacroexpr import Refused, check_syntax, evaluate
+from .packages import Packages
+from .xacroexpr import Refused, Work, check_syntax, evaluate
+from .xacroros1 import Ros1Tags, blank_markup, place
+from .xacroyaml import yaml_data
 from .xmlsource import MAX_XML_BYTES, decode_xml, read_regular_file
+from .yamlsafe import MAX_FILE_BYTES as MAX_YAML_BYTES
+from .yamlsafe import decode_utf8
 
 MAX_FILES = 200
 MAX_TOTAL_BYTES = 8 << 20
 MAX_ELEMENTS = 50_000
 MAX_MACRO_DEPTH = 64
+MAX_TEXT_WORK = 16 << 20
+MAX_SUBSTITUTIONS = 20_000  # ${…} and $(…) worked out in one expansion; a UR5e's takes 639
+MAX_LEX_WORK = 50_000_000  # a text's length times its `$` signs: xacro's lexer copies the rest at each one
 INCLUDABLE = (".xacro", ".urdf", ".xml")
-PACKAGE_FOLDERS = ("urdf", "robots", "xacro", "model", "models")
+YAML_SUFFIXES = (".yaml", ".yml")
 _EXPRESSION = re.compile(r"(?<!\$)\$\{([^}]*)\}")
 _EXTENSION = re.compile(r"(?<!\$)\$\(\s*(\S*)([^)]*)\)")
 _DECLARATION = re.compile(r"<!(DOCTYPE|ENTITY)", re.IGNORECASE)
 _COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
-# ROS 1's xacro took these without the prefix (and `include` holding only text); see adopt_ros1_tags.
-ROS1_TAGS = ("property", "macro", "arg", "if", "unless", "insert_block")
-_NOT_MARKUP = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>", re.DOTALL)
-_START_TAG = re.compile(r"<(?![/!?])([^\s/>]+)")
 
 
-def expand_xacro(path: str | Path, warnings: list | None = None) -> bytes:
-    """The URDF that xacro makes of the file, as UTF-8 bytes; see the module's docstring. The
-    warnings of the expansion (FILE:LINE:COL: message) are appended to `warnings` if given."""
+def expand_xacro(path: str | Path, warnings: list | None = None, arguments: dict | None = None,
+                 package_paths=()) -> bytes:
+    """The URDF that xacro makes of the file, as UTF-8 bytes; see the module's docstring.
+    `arguments` are the xacro arguments NAME → VALUE (`xacro FILE NAME:=VALUE`)."""
     try:
         import xacro
     except ImportError:
@@ -82,10 +88,10 @@ def expand_xacro(path: str | Path, warnings: list | None = None) -> bytes:
                         "the file yourself: xacro FILE.xacro > FILE.urdf", Location(str(path))) from None
     top = Path(path)
     read_regular_file(top)  # a folder, pipe, missing or huge file: one clear line before xacro sees it
-    expander = _Expander(xacro, top)
+    expander = _Expander(xacro, top, Packages(top, package_paths))
     with expander.guarded():
         try:
-            document = xacro.process_file(str(top.resolve()))
+            document = xacro.process_file(str(top.resolve()), mappings=dict(arguments or {}))
         except UserError:
             raise
         except Exception as error:  # xacro's own errors (XacroException, ExpatError, NameError…)
@@ -94,58 +100,31 @@ def expand_xacro(path: str | Path, warnings: list | None = None) -> bytes:
     if len(text) > 4 * MAX_XML_BYTES:
         raise UserError("the expanded URDF is larger than 8 MiB", Location(str(path)))
     if warnings is not None:
-        warnings.extend(expander.ros1_warnings())
+        warnings.extend(expander.ros1.warnings(expander.texts, expander.names, str(top)))
     return text.encode("utf-8")
 
 
 class _Expander:
     """Stands between xacro and the files, the expressions and the substitutions."""
 
-    def __init__(self, xacro, top: Path):
-        self.xacro, self.top = xacro, top
-        folder = top.resolve().parent
-        self.tree = folder.parent.parent if folder.name in PACKAGE_FOLDERS and folder.parent.parent != folder.parent \
-            else folder
+    def __init__(self, xacro, top: Path, packages: Packages):
+        self.xacro, self.top, self.packages = xacro, top, packages
         self.names = {}  # resolved path -> the name the user knows it by
         self.written = {}  # the path xacro opens -> the include's filename as written
         self.texts = {}
-        self.starts = {}  # resolved path -> [(tag name, offset)] of its start tags, in document order
-        self.ros1 = {}  # resolved path -> {offset: tag name} of the unprefixed tags read as xacro
-        self.ros1_macros = set()  # the names of macros defined by <macro>, which ROS 1 let <name/> call
-        self.files = self.bytes = self.elements = 0
+        self.ros1 = Ros1Tags()
+        self.work = Work(self.load_yaml)
+        self.original = {}  # xacro's own functions, while the hooks stand in for them
+        self.files = self.bytes = self.elements = self.text_work = self.substitutions = 0
 
     @contextlib.contextmanager
     def guarded(self):
         xacro = self.xacro
-        saved = {name: getattr(xacro, name) for name in ("parse", "safe_eval", "eval_extension", "get_include_files",
-                                                         "eval_all", "handle_macro_call")}
-        original_parse, original_eval_all, original_call = xacro.parse, xacro.eval_all, xacro.handle_macro_call
-
-        def parse(inp, filename=None):
-            if inp is None:
-                document = original_parse(self.read(filename))
-                self.adopt_ros1_tags(document, Path(filename).resolve())
-                return document
-            return original_parse(inp, filename)
-
-        def handle_macro_call(node, macros, symbols):
-            if ":" not in node.tagName and node.tagName.rsplit(".", 1)[-1] in self.ros1_macros \
-                    and self.is_macro(node.tagName, macros, symbols):
-                self.note_ros1_call(node.tagName)  # ROS 1: <name/> calls the macro name
-                node.tagName = node.nodeName = "xacro:" + node.tagName
-            return original_call(node, macros, symbols)
-
-        def eval_all(node, macros, symbols):
-            self.elements += 1
-            if self.elements > MAX_ELEMENTS:
-                raise UserError(f"the expansion passes {MAX_ELEMENTS:,} elements (a macro that calls itself, or "
-                                "doubles at each level?)", Location(str(self.top)))
-            if len(xacro.macrostack or []) > MAX_MACRO_DEPTH:
-                raise UserError(f"macros nest deeper than {MAX_MACRO_DEPTH} calls (a macro that calls itself?)",
-                                Location(str(self.top)))
-            return original_eval_all(node, macros, symbols)
-
-        xacro.parse, xacro.eval_all, xacro.handle_macro_call = parse, eval_all, handle_macro_call
+        hooked = ("parse", "safe_eval", "eval_extension", "get_include_files", "eval_all", "eval_text",
+                  "handle_macro_call")
+        saved = self.original = {name: getattr(xacro, name) for name in hooked}
+        xacro.parse, xacro.eval_all, xacro.eval_text = self.parse, self.eval_all, self.eval_text
+        xacro.handle_macro_call = self.handle_macro_call
         xacro.safe_eval = lambda expr, symbols, locals=None: self.evaluate(expr, symbols)
         xacro.eval_extension = self.extension
         xacro.get_include_files = self.include_files
@@ -156,48 +135,106 @@ class _Expander:
             for name, value in saved.items():
                 setattr(xacro, name, value)
 
+    def parse(self, inp, filename=None):
+        if inp is None:
+            document = self.original["parse"](self.read(filename))
+            self.ros1.adopt(document, Path(filename).resolve())
+            return document
+        return self.original["parse"](inp, filename)
+
+    def handle_macro_call(self, node, macros, symbols):
+        if self.ros1.is_call(node.tagName) and self.is_macro(node.tagName, macros, symbols):
+            self.ros1.note_call(node.tagName, self.current_file())  # ROS 1: <name/> calls the macro name
+            node.tagName = node.nodeName = "xacro:" + node.tagName
+        return self.original["handle_macro_call"](node, macros, symbols)
+
+    def eval_all(self, node, macros, symbols):
+        self.elements += 1
+        if self.elements > MAX_ELEMENTS:
+            raise UserError(f"the expansion passes {MAX_ELEMENTS:,} elements (a macro that calls itself, or "
+                            "doubles at each level?)", Location(str(self.top)))
+        if len(self.xacro.macrostack or []) > MAX_MACRO_DEPTH:
+            raise UserError(f"macros nest deeper than {MAX_MACRO_DEPTH} calls (a macro that calls itself?)",
+                            Location(str(self.top)))
+        return self.original["eval_all"](node, macros, symbols)
+
+    def eval_text(self, text, symbols):
+        """xacro's evaluation of a text, counting the characters read and made and the
+        substitutions worked out, before the work."""
+        if isinstance(text, str) and "$" in text:
+            dollars = text.count("$")
+            if len(text) * dollars > MAX_LEX_WORK:
+                raise UserError(f"a text of {len(text):,} characters with {dollars:,} substitutions is more than a "
+                                "robot file needs", Location(str(self.top)))
+            self.substitutions += text.count("${") + text.count("$(")
+            if self.substitutions > MAX_SUBSTITUTIONS:
+                raise UserError(f"the expansion works out more than {MAX_SUBSTITUTIONS:,} ${{…}} and $(…) "
+                                "substitutions (a macro that repeats one many times?)", Location(str(self.top)))
+        self.count_text(text)
+        result = self.original["eval_text"](text, symbols)
+        self.count_text(result)
+        return result
+
+    def count_text(self, text) -> None:
+        if isinstance(text, str):
+            self.text_work += len(text)
+            if self.text_work > MAX_TEXT_WORK:
+                raise UserError(f"the expansion works through more than {MAX_TEXT_WORK >> 20} MiB of text (a macro "
+                                "that copies a long text at each level?)", Location(str(self.top)))
+
+    def current_file(self) -> Path:
+        """The file being read: where the macro being expanded is defined, else the open file."""
+        stack = self.xacro.macrostack or []
+        written = stack[-1].history[-1][-1] if stack and stack[-1].history and stack[-1].history[-1] \
+            else (self.xacro.filestack or [None])[-1]
+        return Path(written).resolve() if written else self.top.resolve()
+
     def read(self, filename: str) -> str:
-        """One file's text, checked: inside the tree, a kind xacro includes, within the limits,
+        """One file's text, checked: inside the trees, a kind xacro includes, within the limits,
         and every expression and substitution in it of an allowed form."""
         path = Path(filename).resolve()
         written = self.written.get(filename, filename)
-        shown = str(self.top) if path == self.top.resolve() else self.shown(path)
         if path != self.top.resolve():
             if path.suffix.lower() not in INCLUDABLE:
                 raise self.refuse(f"xacro:include of {written}: only .xacro, .urdf and .xml files are included",
                                   written)
-            if not path.is_relative_to(self.tree):
-                raise self.refuse(f"xacro:include of {written}: outside the robot's folder {self.shown(self.tree)}",
-                                  written)
-        self.files += 1
-        if self.files > MAX_FILES:
-            raise self.refuse(f"more than {MAX_FILES} files included")
-        data = read_regular_file(path, MAX_XML_BYTES, "xacro files")
-        self.bytes += len(data)
-        if self.bytes > MAX_TOTAL_BYTES:
-            raise self.refuse("the included files pass 8 MiB in all")
+            self.check_inside(path, f"xacro:include of {written}", written)
+            if not path.exists():
+                raise self.refuse(f"xacro:include of {written}: no such file", written)
+        data = self.take(path, MAX_XML_BYTES, "xacro files")
+        shown = str(self.top) if path == self.top.resolve() else self.shown(path)
         text = decode_xml(data, shown)
         self.names[path], self.texts[path] = shown, text
         _check_text(text, shown)
-        blank = _NOT_MARKUP.sub(lambda m: " " * len(m.group(0)), text)
-        self.starts[path] = [(m.group(1), m.start()) for m in _START_TAG.finditer(blank)]
+        self.ros1.note_text(path, text)
         return re.sub(r"^\s*<\?xml[^>]*\?>", "", text)
 
-    def adopt_ros1_tags(self, document, path: Path) -> None:
-        """Rename the tags ROS 1's xacro took without the prefix to xacro:NAME, as it read them:
-        `include` only when it holds no element (Gazebo's <include><uri>… is not xacro's)."""
-        elements = [document.documentElement, *document.documentElement.getElementsByTagName("*")]
-        starts = self.starts.get(path, [])
-        placed = len(starts) == len(elements) and all(e.tagName == name for e, (name, _) in zip(elements, starts))
-        for index, element in enumerate(elements):
-            name = element.tagName
-            children = element.childNodes
-            only_text = not children or (len(children) == 1 and children[0].nodeType == children[0].TEXT_NODE)
-            if name in ROS1_TAGS or (name == "include" and only_text):
-                element.tagName = element.nodeName = "xacro:" + name
-                self.ros1.setdefault(path, {})[starts[index][1] if placed else -1] = name
-                if name == "macro":
-                    self.ros1_macros.add(element.getAttribute("name"))
+    def take(self, path: Path, limit: int, what: str) -> bytes:
+        """A file's bytes, counted against the limits on files and bytes in all."""
+        self.files += 1
+        if self.files > MAX_FILES:
+            raise self.refuse(f"more than {MAX_FILES} files included")
+        data = read_regular_file(path, limit, what)
+        self.bytes += len(data)
+        if self.bytes > MAX_TOTAL_BYTES:
+            raise self.refuse("the included files pass 8 MiB in all")
+        return data
+
+    def check_inside(self, path: Path, what: str, needle: str) -> None:
+        if not self.packages.contains(path):
+            folders = " and ".join(self.shown(root) for root in self.packages.roots)
+            raise self.refuse(f"{what}: outside the robot's folder {folders}", needle)
+
+    def load_yaml(self, name: str):
+        """The data of a YAML file in the trees (`load_yaml` in an expression)."""
+        path = Path(self.xacro.abs_filename_spec(name)).resolve()
+        if path.suffix.lower() not in YAML_SUFFIXES:
+            raise Refused(f"load_yaml of {name}: only .yaml and .yml files are read")
+        self.check_inside(path, f"load_yaml of {name}", name)
+        shown = self.shown(path)
+        if not path.exists():
+            raise Refused(f"load_yaml of {shown}: no such file")
+        return yaml_data(decode_utf8(self.take(path, MAX_YAML_BYTES, "YAML files"), shown), shown)
 
     def is_macro(self, name: str, macros, symbols) -> bool:
         try:
@@ -206,38 +243,9 @@ class _Expander:
             return False
         return True
 
-    def note_ros1_call(self, name: str) -> None:
-        """Remember where the unprefixed macro call <name> is written: in the file that defines
-        the macro being expanded, else in the file being read."""
-        stack = self.xacro.macrostack or []
-        written = stack[-1].history[-1][-1] if stack and stack[-1].history and stack[-1].history[-1] \
-            else (self.xacro.filestack or [None])[-1]
-        current = Path(written).resolve() if written else self.top.resolve()
-        for path in sorted(self.starts, key=lambda path: path != current):
-            offset = next((offset for tag, offset in self.starts[path] if tag == name), None)
-            if offset is not None:
-                self.ros1.setdefault(path, {})[offset] = name
-                return
-        self.ros1.setdefault(current, {})[-1] = name
-
-    def ros1_warnings(self) -> list[str]:
-        """One line per file with unprefixed xacro tags, at the first of them."""
-        lines = []
-        for path, found in self.ros1.items():
-            names = list(dict.fromkeys(found[offset] for offset in sorted(found)))
-            first = min(found)
-            where = _place(self.texts[path], self.names[path], first) if first >= 0 \
-                else Location(self.names.get(path, str(self.top)))
-            one = len(names) == 1
-            lines.append(f"{where}: {', '.join(f'<{name}>' for name in names)} without the xacro: prefix "
-                         f"{'is read as a xacro tag' if one else 'are read as xacro tags'}, as ROS 1's xacro "
-                         f"read {'it' if one else 'them'} (deprecated there; ROS 2's xacro leaves "
-                         f"{'it' if one else 'them'} as plain XML)")
-        return lines
-
     def evaluate(self, expression: str, symbols):
         try:
-            return evaluate(str(expression), symbols)
+            return evaluate(str(expression), symbols, self.work)
         except Refused as refusal:
             raise self.refuse(f"${{{expression}}}: {refusal}", expression) from None
 
@@ -248,21 +256,25 @@ class _Expander:
         if kind == "arg":
             arguments = self.xacro.substitution_args_context.get("arg", {})
             if argument not in arguments:
-                raise self.refuse(f"$(arg {argument}): no xacro:arg of that name", f"$(arg {argument}")
+                raise self.refuse(self.unknown_argument(argument), f"$(arg {argument}")
             return arguments[argument]
         if kind == "find":
-            return str(self.find(argument))
+            folder = self.packages.find(argument)
+            if folder is None:
+                raise self.refuse(self.packages.missing(argument, self.shown), f"$(find {argument}")
+            return str(folder)
         raise self.refuse(f"{text}: only $(arg NAME) and $(find PACKAGE) are allowed", text)
 
-    def find(self, package: str) -> Path:
-        names = {package, package + "_description", package.removesuffix("_support"),
-                 package.removesuffix("_description")}
-        for folder in [self.tree, *sorted(self.tree.iterdir()), *sorted(self.tree.glob("*/*"))]:
-            if folder.is_dir() and folder.name in names:
-                return folder
-        raise self.refuse(f"$(find {package}): the ROS package {package} is not in the robot's folder "
-                          f"{self.shown(self.tree)} "
-                          "(dhsym does not search ROS_PACKAGE_PATH)", f"$(find {package}")
+    def unknown_argument(self, name: str) -> str:
+        """Why $(arg name) has no value: declared later (xacro reads in document order), or never."""
+        declared = re.compile(rf"""<(?:xacro:)?arg\s[^>]*?name\s*=\s*["']{re.escape(name)}["']""")
+        for path, text in self.texts.items():
+            found = declared.search(blank_markup(text))
+            if found:
+                return (f"$(arg {name}) is used before <xacro:arg name=\"{name}\"> declares it at "
+                        f"{place(text, self.names[path], found.start())} (xacro reads arguments in document order); "
+                        f"give it with --xacro-arg {name}:=VALUE")
+        return f"$(arg {name}): no <xacro:arg name=\"{name}\"> declares it; give it with --xacro-arg {name}:=VALUE"
 
     def include_files(self, spec: str, symbols):
         name = str(self.xacro.eval_text(spec, symbols))
@@ -285,7 +297,7 @@ class _Expander:
         for path in sorted(self.texts, key=lambda path: path != current):  # the current file first
             offset = _COMMENT.sub(lambda m: " " * len(m.group(0)), self.texts[path]).find(needle) if needle else -1
             if offset >= 0:
-                return UserError(message, _place(self.texts[path], self.names[path], offset))
+                return UserError(message, place(self.texts[path], self.names[path], offset))
         return UserError(message, Location(self.names.get(current, str(self.top))))
 
     def user_error(self, error: Exception) -> UserError:
@@ -301,22 +313,33 @@ class _Expander:
 
 def _check_text(text: str, shown: str) -> None:
     """Refuse, with its place, a declaration, a `${…}` of a form not allowed, or a `$(…)` other
-    than arg and find, anywhere outside comments."""
-    blank = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+    than arg and find, anywhere outside comments, CDATA and processing instructions; and any
+    DOCTYPE the XML parser sees (entities must never expand)."""
+    blank = blank_markup(text)
     declaration = _DECLARATION.search(blank)
+    if declaration is None and _has_doctype(text):
+        declaration = _DECLARATION.search(text) or re.match("", text)
     if declaration:
         raise UserError("DOCTYPE and entity declarations are not allowed in a xacro file",
-                        _place(text, shown, declaration.start()))
+                        place(text, shown, declaration.start()))
     for match in _EXPRESSION.finditer(blank):
         reason = check_syntax(match.group(1))
         if reason:
-            raise UserError(reason, _place(text, shown, match.start()))
+            raise UserError(reason, place(text, shown, match.start()))
     for match in _EXTENSION.finditer(blank):
         if match.group(1) not in ("arg", "find"):
             raise UserError(f"$({match.group(1)} …) is not allowed in a xacro file read by dhsym; only $(arg NAME) "
-                            "and $(find PACKAGE)", _place(text, shown, match.start()))
+                            "and $(find PACKAGE)", place(text, shown, match.start()))
 
 
-def _place(text: str, shown: str, offset: int) -> Location:
-    line = text.count("\n", 0, offset) + 1
-    return Location(shown, line, offset - (text.rfind("\n", 0, offset) + 1) + 1)
+def _has_doctype(text: str) -> bool:
+    """Whether an XML parser that expands nothing finds a document type declaration."""
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False, recover=True)
+    try:
+        tree = etree.fromstring(re.sub(r"^\s*<\?xml[^>]*\?>", "", text).encode("utf-8"), parser)
+    except etree.XMLSyntaxError:
+        return False
+    if tree is None:
+        return False
+    info = tree.getroottree().docinfo
+    return info.internalDTD is not None or bool(info.doctype)

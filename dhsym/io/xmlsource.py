@@ -170,16 +170,28 @@ def _drop_default_namespace(root) -> None:
             element.tag = element.tag[len(prefix):]
 
 
-def _refuse_xacro(blanked: str, filename: str) -> None:
-    """Refuse what only xacro can read: xacro elements or attributes and ${…}/$(…) substitutions."""
+def xacro_element(data: bytes, filename: str) -> tuple[Location, str] | None:
+    """Where an XML file first uses a xacro element or attribute, and its name (`xacro:property`),
+    or None: such a file is a xacro file whatever its name."""
+    return _xacro_use(_blank(decode_xml(data, filename)), filename)
+
+
+def _xacro_use(blanked: str, filename: str) -> tuple[Location, str] | None:
     prefixes = {m.group(1) for m in re.finditer(r"""xmlns:([\w.-]+)\s*=\s*["']([^"']*)["']""", blanked)
                 if m.group(2).rstrip("/") in XACRO_NAMESPACES} | {"xacro"}
     names = "|".join(map(re.escape, prefixes))
     used = re.search(rf"</?(?:{names}):[\w.-]+|\s(?:{names}):[\w.-]+\s*=", blanked)
     if used is None:
-        return
+        return None
     where = _location(blanked, filename, used.start() + (1 if used.group(0)[0].isspace() else 0))
-    raise UserError(f"<{used.group(0).strip().lstrip('</')}> is a xacro element, not URDF; {_EXPAND}", where)
+    return where, used.group(0).strip().lstrip("</")
+
+
+def _refuse_xacro(blanked: str, filename: str) -> None:
+    """Refuse what only xacro can read: xacro elements or attributes and ${…}/$(…) substitutions."""
+    used = _xacro_use(blanked, filename)
+    if used is not None:
+        raise UserError(f"<{used[1]}> is a xacro element, not URDF; {_EXPAND}", used[0])
 
 
 def _blank(text: str) -> str:

@@ -88,17 +88,18 @@ def decode_utf8(data: bytes, filename: str) -> str:
 
 
 
-def compose(text: str, filename: str) -> yaml.Node:
-    """The root node of the one YAML document in `text`, composed but never constructed."""
+def compose(text: str, filename: str, tags=frozenset(), what: str = "robot file") -> yaml.Node:
+    """The root node of the one YAML document in `text`, composed but never constructed; local
+    `tags` (xacro's `!degrees`) are let through, and messages speak of a `what`."""
     loader = None
     try:
-        loader = _GuardedLoader(text, filename)
+        loader = _GuardedLoader(text, filename, tags, what)
         node = loader.single_node()
     except yaml.reader.ReaderError as exc:
         line = text.count("\n", 0, exc.position) + 1
         column = exc.position - (text.rfind("\n", 0, exc.position) + 1) + 1
         character = exc.character if isinstance(exc.character, str) else chr(exc.character)
-        raise UserError(f"character U+{ord(character):04X} is not allowed in a robot file",
+        raise UserError(f"character U+{ord(character):04X} is not allowed in a {what}",
                         Location(filename, line, column)) from None
     except yaml.MarkedYAMLError as exc:
         message, line, column = explain(exc, text)
@@ -109,7 +110,8 @@ def compose(text: str, filename: str) -> yaml.Node:
         if loader is not None:
             loader.dispose()
     if node is None:
-        raise UserError("file is empty; expected a robot description", Location(filename, 1, 1))
+        raise UserError(f"file is empty; expected a {'robot description' if what == 'robot file' else what}",
+                        Location(filename, 1, 1))
     return node
 
 
@@ -124,16 +126,17 @@ class _GuardedLoader(yaml.SafeLoader):
     file is refused after reading only as much of it as the first offence.
     """
 
-    def __init__(self, text: str, filename: str):
+    def __init__(self, text: str, filename: str, tags=frozenset(), what: str = "robot file"):
         super().__init__(text)
         self.filename, self.depth, self.count = filename, 0, 0
+        self.tags, self.what = tags, what
 
     def single_node(self) -> yaml.Node | None:
         """The one document's root node; a second document is a mistake, not ignored."""
         self.get_event()  # stream start
         root = None if self.check_event(yaml.StreamEndEvent) else self.compose_document()
         if not self.check_event(yaml.StreamEndEvent):
-            raise UserError("a robot file holds one YAML document, but a second one starts here",
+            raise UserError(f"a {self.what} holds one YAML document, but a second one starts here",
                             mark_location(self.filename, self.peek_event().start_mark))
         return root
 
@@ -141,14 +144,14 @@ class _GuardedLoader(yaml.SafeLoader):
         event = self.peek_event()
         where = mark_location(self.filename, event.start_mark)
         if isinstance(event, yaml.AliasEvent):
-            raise UserError("YAML aliases (*name) are not allowed in robot files", where)
+            raise UserError(f"YAML aliases (*name) are not allowed in {self.what}s", where)
         tag = getattr(event, "tag", None)
-        if tag is not None:
+        if tag is not None and tag not in self.tags:
             shown = "!!" + tag[len(YAML_TAG):] if tag.startswith(YAML_TAG) else tag
-            raise UserError(f"YAML tags ({shown}) are not allowed in robot files", where)
+            raise UserError(f"YAML tags ({shown}) are not allowed in {self.what}s", where)
         self.count += 1
         if self.count > MAX_YAML_NODES:
-            raise UserError(f"more than {MAX_YAML_NODES} YAML values; this is not a robot file", where)
+            raise UserError(f"more than {MAX_YAML_NODES} YAML values; this is not a {self.what}", where)
         if self.depth >= MAX_YAML_DEPTH:
             raise UserError(f"YAML nested deeper than {MAX_YAML_DEPTH} levels", where)
         self.depth += 1
