@@ -194,6 +194,22 @@ def test_screws_of_every_builtin_robot_give_its_kinematics(name):
     assert np.allclose(np.array(expected.evalf(), dtype=float), np.array(poe.evalf(), dtype=float), atol=1e-9)
 
 
+def test_a_general_six_link_chain_has_its_screws_and_they_give_its_kinematics():
+    """Symbolic twists, lengths and offsets: the zero pose is too large to simplify, so the screw
+    axes keep the contracted form fk prints; e^[S1]q1 ⋯ e^[S6]q6 M is still the chain's forward kinematics."""
+    symbols = {name: sympy.Symbol(name, real=True) for name in
+               [f"{kind}_{i}" for i in range(1, 7) for kind in ("q", "o", "d", "a", "alpha")]}
+    rows = [DHRow.revolute(symbols[f"q_{i}"] + symbols[f"o_{i}"], symbols[f"d_{i}"], symbols[f"a_{i}"],
+                           symbols[f"alpha_{i}"], variable=symbols[f"q_{i}"]) for i in range(1, 7)]
+    chain = Chain(rows, "standard")
+    rng = random.Random(6)
+    constants = {symbol: rng.uniform(-1, 1) for name, symbol in symbols.items() if not name.startswith("q")}
+    q = [rng.uniform(-2, 2) for _ in range(6)]
+    poe = product_of_exponentials(screw_axes(chain), q).xreplace(constants)
+    expected = chain.fk(raw=True).xreplace({**constants, **dict(zip(chain.joint_variables, q))})
+    assert np.allclose(np.array(poe.evalf(), dtype=float), np.array(expected.evalf(), dtype=float), atol=1e-9)
+
+
 def test_every_step_is_recorded_for_a_notebook():
     urdf = read_urdf(f"{DATA}/ur5.urdf", tip="tool0")
     assignment = assign_frames(urdf.axes, urdf.tool, "standard")
