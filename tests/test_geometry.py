@@ -88,7 +88,7 @@ def test_rounded_angles_become_exact_with_a_warning():
     chain = assign_frames(urdf.axes, urdf.tool, "modified").robot()
     assert all((row.alpha / (sympy.pi / 12)).is_integer for row in chain.rows)
     assert not any(value.has(sympy.Float) for row in chain.rows for value in (row.theta, row.d, row.a, row.alpha))
-    assert urdf.warnings[0].startswith("edge.urdf:9:102: angles read as the multiples of π/12 they were rounded from")
+    assert urdf.warnings[0].startswith("edge.urdf:9:102: angles snapped to the multiples of π/12 they were rounded")
     assert urdf.warnings[0].endswith("this turns any frame by at most 8.6e-06 rad and moves it by at most 5e-07 m")
     assert all(f"{text} → {exact}" in urdf.warnings[0]
                for text, exact in (("1.570796325", "π/2"), ("-1.5708", "-π/2"), ("0.5236", "π/6")))

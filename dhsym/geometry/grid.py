@@ -106,14 +106,14 @@ class Snaps:
         >>> snaps = Snaps()
         >>> snaps.add("1.571", sympy.pi / 2, "arm.urdf:6:32", reach=0.5)
         >>> print(*snaps.warnings())
-        arm.urdf:6:32: angles read as the multiples of π/12 they were rounded from: 1.571 → π/2; this turns any \
+        arm.urdf:6:32: angles snapped to the multiples of π/12 they were rounded from: 1.571 → π/2; this turns any \
 frame by at most 0.00021 rad and moves it by at most 0.00011 m
         """
         if not self.shown:
             return []
         listed = ", ".join(f"{text} → {str(value).replace('pi', 'π')}" for text, value in self.shown.items())
         moved = f" and moves it by at most {_rounded_up(self.shift)} m" if self.lengths and self.shift else ""
-        return [f"{self.where}: angles read as the multiples of π/12 they were rounded from: {listed}; "
+        return [f"{self.where}: angles snapped to the multiples of π/12 they were rounded from: {listed}; "
                 f"this turns any frame by at most {_rounded_up(self.turn)} rad{moved}"]
 
 

@@ -7,8 +7,8 @@ stands for a multiple of π/12 (1.571, 1.5708: the rule is geometry.grid's) is r
 directions within 1e-5 of an exact unit vector are snapped to it, with one warning each per file;
 numbers below 1e-9 (CAD noise such as -2.67276e-51) become 0, with one warning per file. Angles
 that look like degrees (90) or like a cut-off π (3.1415) are kept as written, with the warning a
-robot file gets. Only joints on the base → tip path matter: a mimic
-finger or a floating base elsewhere in the file is not read.
+robot file gets. Only joints on the base → tip path matter: a mimic finger or a floating base
+elsewhere in the file is not read.
 
 >>> robot = read_urdf_text(b'''<robot name="arm">
 ...   <link name="base"/><link name="upper"/><link name="tip"/>
@@ -20,7 +20,7 @@ finger or a floating base elsewhere in the file is not read.
 >>> robot.axes[0].point.T, robot.tool[:3, 3].T
 (Matrix([[0, 0, 1/10]]), Matrix([[1/4, 0, 1/10]]))
 >>> robot.warnings
-['arm.urdf:6:35: angles read as the multiples of π/12 they were rounded from: 1.5708 → π/2; this turns any \
+['arm.urdf:6:35: angles snapped to the multiples of π/12 they were rounded from: 1.5708 → π/2; this turns any \
 frame by at most 3.7e-06 rad']
 """
 from __future__ import annotations
