@@ -29,6 +29,7 @@ from ..core.size import tree_size
 from ..core.transforms import Step, joint_axis_frame
 from ..core.vectors import cross
 from ..errors import UserError
+from .exact import tidy
 from .lines import JointAxis
 
 TIDY_MAX_NODES = 600  # nodes of all the joint frames' and the last frame's entries (a general 3-link chain: 445)
@@ -52,7 +53,8 @@ def zero_poses(chain) -> list[sympy.Matrix]:
     frames = [contract(steps[:end], ()) for end in ends]
     joint_frames = [frames[joint_axis_frame(chain.convention, joint)] for joint in range(1, chain.n + 1)]
     poses = joint_frames + [contract(steps, ())]
-    return [_tidy(p) for p in poses] if _small(poses) else poses
+    small = _small(poses)
+    return [p.applyfunc(lambda e: sympy.simplify(e) if small and e.free_symbols else _numbers(e)) for p in poses]
 
 
 def zero_steps(chain) -> list[Step]:
@@ -91,9 +93,8 @@ def screw_axes(chain) -> Screws:
             columns.append(list(direction) + [-x for x in cross(direction, point)])
         else:
             columns.append([0, 0, 0] + list(direction))
-    matrix = sympy.Matrix(columns).T
-    if _small(poses):  # the poses were simplified, and their products can be too
-        matrix = matrix.applyfunc(lambda e: sympy.simplify(sympy.expand(e)))
+    small = _small(poses)  # the poses were simplified, and their products can be too
+    matrix = sympy.Matrix(columns).T.applyfunc(lambda e: sympy.simplify(sympy.expand(e)) if small else _numbers(e))
     return Screws(matrix, poses[-1])
 
 
@@ -119,8 +120,10 @@ def product_of_exponentials(screws: Screws, values) -> sympy.Matrix:
     return result * screws.home
 
 
-def _tidy(matrix: sympy.Matrix) -> sympy.Matrix:
-    return matrix.applyfunc(lambda e: sympy.simplify(e) if e.free_symbols else e)
+def _numbers(entry: sympy.Expr) -> sympy.Expr:
+    """An entry without symbols in its short exact form (surds combined: (√2/4 + √6/4)(√2/4 − √6/4)
+    is −1/4), else as it is; multiplying out numbers is cheap."""
+    return entry if entry.free_symbols else tidy(entry)
 
 
 def _small(poses: list) -> bool:
