@@ -12,7 +12,6 @@ from __future__ import annotations
 from ..core.estimate import contracted_size, estimated_size
 from ..core.size import expanded_terms, rough_count
 from ..errors import UserError
-from ..geometry.screws import zero_steps
 from ..printing.render import transform_title
 
 MAX_NODES = 200_000  # about 400,000 printed characters, a few seconds of printing
@@ -99,6 +98,8 @@ def propagation_size(chain) -> int:
 def refuse_screws_if_too_large(robot, limit: int = MAX_NODES) -> None:
     """A UserError when the zero pose, contracted as `fk` contracts, is past what dhsym prints: the
     screw axes are its joint frames' z axes and origins (a cross product of two of its columns)."""
+    from ..geometry.screws import zero_steps  # the geometry layer only for the command that uses it
+
     size = contracted_size(zero_steps(robot.chain))
     if size > limit:
         raise UserError(f"{robot.path}: the zero pose of this chain has {rough_count(size)} expression nodes, "

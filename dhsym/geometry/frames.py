@@ -31,10 +31,11 @@ from dataclasses import dataclass, field
 import sympy
 
 from ..core.chain import Chain, DHRow
+from ..core.grid import ANGLE_STEP
 from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, Step
 from ..errors import UserError
-from .exact import ANGLE_STEP, cross, dot, is_zero_vector, tidy_vector, unit
+from .exact import cross, dot, is_zero_vector, tidy_vector, unit
 from .lines import JointAxis, distance_between, normal_feet, relation
 from .rigid import angle, frame_pose, pose_steps, relative
 from .rounding import Rounding, dh_label, fit, joined, rounding_note

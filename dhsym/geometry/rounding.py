@@ -29,7 +29,7 @@ alpha_2 0.927295218001612 (exactly atan(4/3))
 (1/3, '0.333333333333333')
 
 An angle that rounds to the same 15 digits as a multiple of π/12 is written as that multiple
-(the rule of dhsym.geometry.grid at the digits a rounded value keeps); a length never is:
+(the rule of dhsym.core.grid at the digits a rounded value keeps); a length never is:
 
 >>> fit(sympy.atan(sympy.Rational(10**16))), fit(sympy.pi / 2 + sympy.Rational(1, 10**17))
 (pi/2, pi/2)
@@ -45,8 +45,9 @@ import sympy
 from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
+from ..core.grid import ANGLE_STEP
 from ..core.numbers import WrittenNumbers, decimal_text
-from .exact import ANGLE_STEP, is_zero
+from .exact import is_zero
 
 SIGNIFICANT = 15  # digits of a rounded value: a double's precision
 EXACT_DIGITS = 20  # a decimal that ends within this many significant digits is written exactly
@@ -173,7 +174,7 @@ def _fit_number(value: sympy.Expr, decimals: bool, length: bool, alone: bool = T
 
 def _multiple_rounding_to(rounded: sympy.Rational) -> sympy.Expr | None:
     """The multiple of π/12 (not 0) that rounds to the same SIGNIFICANT digits as an angle, if any:
-    the angle is that multiple up to the rounding it would get anyway (geometry.grid's rule, at a
+    the angle is that multiple up to the rounding it would get anyway (core.grid's rule, at a
     double's digits), as when URDF angles of 0.4 and 1.170796326794897 add up to π/2."""
     steps = round(float(rounded) / float(ANGLE_STEP))
     return steps * ANGLE_STEP if steps and _rounded(steps * ANGLE_STEP) == rounded else None

@@ -26,10 +26,10 @@ import sympy
 import yaml
 
 from ..core.chain import Chain, DHRow
+from ..core.grid import Snaps
 from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
-from ..geometry.grid import Snaps
 from .expr import Reading, parse_expression
 from .suspicious import decimal_angle, looks_like_degrees, misplaced_variable, misspelt_pi, printed_key, printed_text
 from .yamlsafe import MAX_JOINTS, YAML_TAG, compose, mark_location, read_text_file

@@ -22,9 +22,8 @@ import sympy
 from sympy.printing.conventions import split_super_sub
 from sympy.printing.pretty.pretty_symbology import greek_unicode
 
+from ..core.grid import DOUBLE_DIGITS, Snaps, exact_number, grid_angle
 from ..core.numbers import decimal_text
-from ..geometry.exact import exact_number
-from ..geometry.grid import DOUBLE_DIGITS, Snaps, grid_angle
 
 _PI_SPELLING = re.compile(r"(?i:pi|π|Π)_?(\d*)")
 _SUPERSCRIPT = re.compile(r"[⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺]")
@@ -119,7 +118,7 @@ def decimal_angle(value: sympy.Expr, decimals: list, places: int, snaps: Snaps) 
     """A robot file's constant angle as the file means it, and the warning it gets, if any.
     `decimals`: the (literal, place) of the decimals written in the field, `places` the most places.
     The file's decimals are its own (1.5708 gets a "did you mean pi/2?"), except a lone one that is
-    a multiple of π/12 to a double's precision (geometry.grid): that is the multiple, kept in `snaps`.
+    a multiple of π/12 to a double's precision (core.grid): that is the multiple, kept in `snaps`.
 
     >>> decimal_angle(sympy.Rational("-1.570796326794897"), [("1.570796326794897", "arm.yaml:5:24")], 15, Snaps())
     (-pi/2, None)

@@ -3,7 +3,7 @@ zero configuration and the tip's pose, ready for the frame-assignment algorithm.
 
 The file is decoded, checked and parsed by `xmlsource` (no DOCTYPE, no entities, nothing left for
 xacro; see there). Meshes are never opened. Numbers are read exactly as written; an angle that
-stands for a multiple of π/12 (1.571, 1.5708: the rule is geometry.grid's) is read as it, and
+stands for a multiple of π/12 (1.571, 1.5708: the rule is core.grid's) is read as it, and
 directions within 1e-5 of an exact unit vector are snapped to it, with one warning each per file;
 numbers below 1e-9 (CAD noise such as -2.67276e-51) become 0, with one warning per file. Angles
 that look like degrees (90) or like a cut-off π (3.1415) are kept as written, with the warning a
@@ -32,10 +32,10 @@ from pathlib import Path
 
 import sympy
 
+from ..core.grid import ANGLE_STEP, Snaps, exact_number, snap_angle
 from ..core.transforms import rotation
 from ..errors import Location, UserError
-from ..geometry.exact import ANGLE_STEP, LENGTH_NOISE, exact_number, rational_turn, snap_direction, tidy_vector, vector
-from ..geometry.grid import Snaps, snap_angle
+from ..geometry.exact import LENGTH_NOISE, rational_turn, snap_direction, tidy_vector, vector
 from ..geometry.lines import JointAxis
 from .suspicious import looks_like_degrees, near_multiple_of_pi
 from .xmlsource import MAX_XML_BYTES, parse_xml_text, read_regular_file
@@ -86,7 +86,7 @@ class _Reader:
     def __init__(self, source):
         self.source, self.root, self.filename = source, source.root, source.filename
         self.warnings: list[str] = []
-        self.snaps = Snaps()  # angles read as multiples of π/12 (geometry.grid)
+        self.snaps = Snaps()  # angles read as multiples of π/12 (core.grid)
         self.reach = 0.0  # metres beyond the origin being read: how far a changed angle there moves the tip
         self.free_angles: dict = {}
         self.snapped_directions: list = []
@@ -267,7 +267,7 @@ class _Reader:
 
     def turn(self, axis: int, written: sympy.Rational, text: str, element) -> sympy.Matrix:
         """The rotation by a written angle: exact on the π/12 grid (read as a multiple of π/12 by
-        the rule of geometry.grid), else through a rational cosine and sine (see exact.rational_turn)."""
+        the rule of core.grid), else through a rational cosine and sine (see exact.rational_turn)."""
         value, moved = snap_angle(text) if written != 0 else (written, False)
         if moved:
             self.snaps.add(text, value, self.where(element, "rpy", axis), self.reach)
@@ -319,7 +319,7 @@ class _Reader:
 
 
 def _on_grid(word: str) -> bool:
-    """Whether a written angle is 0 or stands for a multiple of π/12 (geometry.grid)."""
+    """Whether a written angle is 0 or stands for a multiple of π/12 (core.grid)."""
     try:
         return abs(float(word)) < LENGTH_NOISE or (value := snap_angle(word)[0]) == 0 or (value / ANGLE_STEP).is_integer
     except ValueError:

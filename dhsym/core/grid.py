@@ -28,16 +28,18 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 import sympy
 
 from ..errors import Location
-from .exact import ANGLE_STEP, ANGLE_TOLERANCE, exact_number
 
+ANGLE_STEP = sympy.pi / 12
+ANGLE_TOLERANCE = 1e-5  # radians, whatever the places: 1.57079 (a cut-off π/2) is 6.3e-6 from it
 MIN_PLACES = 2  # decimal places a decimal needs before it is read as a multiple of π/12 it rounds from
 MIN_DIGITS = 3  # significant digits it needs: 1.57 is π/2, 0.26 may be any angle near 15°
 DOUBLE_DIGITS = 15  # significant digits of a double: a robot file's decimal this precise is a program's π/2
-_MANTISSA = re.compile(r"[+-]?(?P<whole>\d*)\.?(?P<fraction>\d*)(?:[eE](?P<exponent>[+-]?\d+))?")
+_MANTISSA = re.compile(r"[+-]?(?P<whole>\d*)\.?(?P<fraction>\d*)(?:[eE](?P<exponent>[+-]?\d{1,4}))?")
 
 
 def precision(text: str) -> tuple[int, int]:
@@ -52,6 +54,23 @@ def precision(text: str) -> tuple[int, int]:
     exponent = int(match.group("exponent") or 0)
     digits = (match.group("whole") + match.group("fraction")).lstrip("0")
     return max(0, len(match.group("fraction")) - exponent), len(digits)
+
+
+def exact_number(text: str) -> sympy.Rational:
+    """A plain decimal as written, exactly ('0.1' is 1/10); ValueError for anything else, or one
+    longer than 40 characters or with an exponent past 30.
+
+    >>> exact_number("-1.571"), exact_number("2.5e-3")
+    (-1571/1000, 1/400)
+    >>> exact_number("1e999999")
+    Traceback (most recent call last):
+    ValueError: not a number of a robot's size: '1e999999'
+    """
+    match = _MANTISSA.fullmatch(text.strip())
+    if not match or not (match.group("whole") or match.group("fraction")) or len(text.strip()) > 40 \
+            or abs(int(match.group("exponent") or 0)) > 30:
+        raise ValueError(f"not a number of a robot's size: {text.strip()!r}")
+    return sympy.Rational(Fraction(text.strip()))
 
 
 def grid_angle(text: str, least_digits: int = MIN_DIGITS, tolerance: float = ANGLE_TOLERANCE) -> sympy.Expr | None:
