@@ -116,3 +116,12 @@ def test_fk_takes_the_frames_the_chain_takes():
 def test_each_command_module_imports_on_its_own(module):
     """The dispatcher imports only the command's module, so no command may rely on another having been imported."""
     assert _probe(f"import dhsym.cli.{module}\nprint('ok')") == ["ok"]
+
+
+def test_a_name_longer_than_a_file_name_may_be_is_a_user_error():
+    from dhsym.errors import UserError
+
+    for name in ("arm_" * 64, "arms/" * 900):  # 256 characters; a path past PATH_MAX
+        with pytest.raises(UserError) as raised:
+            dhsym.load(name)
+        assert "\n" not in str(raised.value) and len(str(raised.value)) < 5000

@@ -15,6 +15,7 @@ from cli_runner import run_dhsym
 
 import dhsym
 from dhsym import Chain, DHRow, real_symbol
+from dhsym.cli import options
 from dhsym.core import chain as chain_module
 from dhsym.core.budget import BudgetExceeded, CommandTooSlow, time_budget
 from dhsym.errors import UserError
@@ -64,12 +65,21 @@ def test_whether_a_determinant_is_factored_is_decided_by_counting_terms(monkeypa
                            "7,000 that dhsym factors: not computed.")
 
 
-def test_the_safety_net_stops_a_command_with_one_line_that_says_what_it_is():
-    status, stdout, stderr = run_dhsym("fk", "planar2r", "--timeout", "0.2", read=never_finishes)
+def test_the_safety_net_stops_a_command_with_one_line_that_says_what_it_is(monkeypatch):
+    monkeypatch.setattr(options, "SAFETY_NET_SECONDS", 0.2)  # the default limit, as if 600 s had passed
+    status, stdout, stderr = run_dhsym("fk", "planar2r", read=never_finishes)
     assert (status, stdout) == (2, "")
     assert stderr == ("dhsym: error: planar2r: stopped by the safety net after 0.2 s (--timeout); no normal input "
                       "takes this long, and the size estimates did not foresee it; please report the robot file on "
                       "the dhsym issue tracker\n")
+
+
+def test_a_limit_the_user_set_too_short_is_said_to_be_too_short():
+    status, stdout, stderr = run_dhsym("fk", "puma560", "--timeout", "1e-7", read=never_finishes)
+    assert (status, stdout) == (2, "")
+    assert stderr == ("dhsym: error: puma560: stopped after 1e-07 s, the limit set with --timeout, before the work "
+                      "was done; that limit is too short for this command: give a longer one, or leave --timeout out "
+                      "(the default, 600 s, is a safety net far above any normal case)\n")
 
 
 def test_without_an_interval_timer_commands_still_work(monkeypatch):

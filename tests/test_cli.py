@@ -6,8 +6,10 @@ streams, 100 columns); a real process where only one shows it: the demo, the has
 terminal and no $COLUMNS, a full disk, a closed or abandoned standard output."""
 import json
 import os
+import re
 import stat
 import subprocess
+from pathlib import Path
 
 import pytest
 import sympy
@@ -97,6 +99,13 @@ def test_help_at_every_level():
     for args in (("--help",), ("fk", "--help"), ("table", "--help"), ("links", "--help"), ("list", "--help")):
         result = run(*args)
         assert result.status == 0 and "usage: dhsym" in result.stdout
+
+
+def test_version_is_the_installed_package_s():
+    pyproject = (Path(__file__).parent.parent / "pyproject.toml").read_text()
+    written = re.search(r'^version = "(.+)"', pyproject, re.M).group(1)
+    assert run("--version") == (0, f"dhsym {written}\n", "")
+    assert run("--version", "fk", "puma560") == (0, f"dhsym {written}\n", "")  # as --help: nothing else is done
 
 
 def test_list_shows_sources():

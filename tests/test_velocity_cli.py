@@ -38,6 +38,26 @@ def test_wide_jacobian_is_listed_element_by_element_and_fits_the_width():
     assert max(len(line) for line in out.splitlines()[:-3] if line.startswith(("J", " "))) <= 80
 
 
+GENERAL_3R = """name: general 3R
+convention: standard
+joints:
+  - {joint: R, theta: q_1, d: 0.2433, a: 0.011, alpha: pi/2}
+  - {joint: R, theta: q_2, d: 0.03, a: 0.28, alpha: pi/3}
+  - {joint: R, theta: q_3, d: 0.02, a: 0.13, alpha: pi/2}
+"""
+
+
+@pytest.mark.parametrize("width", [60, 80])
+def test_a_singular_factor_longer_than_the_line_keeps_its_meaning_in_whole_words(width, tmp_path):
+    """The factor takes the whole line: it breaks like a matrix element and its meaning follows."""
+    (tmp_path / "arm.yaml").write_text(GENERAL_3R)
+    out = run("jacobian", tmp_path / "arm.yaml", "--point", "3", "--width", width).stdout
+    singular = out.split("singular where\n")[1].split("\n\n")[0].splitlines()
+    assert " ".join(line.strip() for line in singular).endswith(
+        "= 0: the joint velocities are dependent here (no simpler description found)")
+    assert all(len(line) <= width for line in singular) and singular[-1].startswith("    ")
+
+
 def test_json_reads_back_and_has_the_documented_keys():
     data = json.loads(run("jacobian", "stanford", "--format", "json").stdout)
     assert set(data) == {"robot", "convention", "frame", "point", "joint_variables", "matrix", "determinant",

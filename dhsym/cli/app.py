@@ -33,7 +33,7 @@ from ..io import library
 from ..io.robotfile import load_robot_text
 from ..io.yamlsafe import MAX_FILE_BYTES, decode_utf8
 from .messages import printable, warn
-from .options import Parser, text_width
+from .options import Parser, VersionAction, default_limit, safety_net, text_width
 
 # Each command and the module (in dhsym.cli) that registers it, in the order `dhsym --help` lists them.
 COMMANDS = {"list": "listing", "table": "kinematics", "links": "kinematics", "fk": "kinematics", "latex": "latex",
@@ -55,6 +55,7 @@ def build_parser(argv=None) -> Parser:
     parser = Parser(prog="dhsym", description="Denavit–Hartenberg tables to textbook-form kinematics: "
                     "link matrices, products iTj and 0Tn in c1/s23/c123 notation, as text, LaTeX or JSON.",
                     epilog="ROBOT is a built-in name (see 'dhsym list') or a path to a robot YAML file.")
+    parser.add_argument("--version", action=VersionAction)
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     commands.required = True
     for module in command_modules(argv):
@@ -63,14 +64,17 @@ def build_parser(argv=None) -> Parser:
 
 
 def command_modules(argv=None) -> list[str]:
-    """The modules to import for `argv`: the command's, else (help, no command, a typo) all of them.
+    """The modules to import for `argv`: the command's, none for --version, else (help, no command, a
+    typo) all of them.
 
-    >>> command_modules(["fk", "puma560"]), len(command_modules(["--help"]))
-    (['kinematics'], 10)
+    >>> command_modules(["fk", "puma560"]), command_modules(["--version"]), len(command_modules(["--help"]))
+    (['kinematics'], [], 10)
     """
     argv = sys.argv[1:] if argv is None else argv
     if argv and argv[0] in COMMANDS:
         return [COMMANDS[argv[0]]]
+    if argv == ["--version"]:
+        return []
     return list(dict.fromkeys(COMMANDS.values()))
 
 
@@ -79,7 +83,7 @@ def main(argv=None, read=library.read) -> int:
     args = None
     try:
         args = build_parser(argv).parse_args(argv)
-        with time_budget(getattr(args, "timeout", None), CommandTooSlow):
+        with time_budget(safety_net(args), CommandTooSlow):
             return _dispatch(args, read)
     except BrokenPipeError:  # `dhsym fk iiwa7 | head -0`: the reader left; say so, the output is cut short
         _silence_stdout()
@@ -90,9 +94,7 @@ def main(argv=None, read=library.read) -> int:
         print(f"dhsym: error: {printable(str(error))}", file=sys.stderr)
         return EXIT_USER_ERROR
     except CommandTooSlow:
-        print(f"dhsym: error: {printable(args.robot)}: stopped by the safety net after {args.timeout:g} s (--timeout); "
-              f"no normal input takes this long, and the size estimates did not foresee it; please report the "
-              f"robot file on {ISSUE_URL}", file=sys.stderr)
+        print(f"dhsym: error: {printable(args.robot)}: {_stopped(args.timeout, safety_net(args))}", file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt:
         print("dhsym: interrupted", file=sys.stderr)
@@ -106,6 +108,21 @@ def main(argv=None, read=library.read) -> int:
               f"not a mistake in your input; please report it on {ISSUE_URL} with the command and the robot file)",
               file=sys.stderr)
         return EXIT_INTERNAL_ERROR
+
+
+def _stopped(given: float | None, limit: float) -> str:
+    """Why a command stopped on the clock: the limit the user `given` (too short for this work), or
+    the default safety net, which no normal input reaches (then dhsym's estimates missed something).
+
+    >>> _stopped(1e-07, 1e-07)[:70]
+    'stopped after 1e-07 s, the limit set with --timeout, before the work w'
+    """
+    if given is not None:
+        return (f"stopped after {given:g} s, the limit set with --timeout, before the work was done; that limit is "
+                f"too short for this command: give a longer one, or leave --timeout out (the default, "
+                f"{default_limit():g} s, is a safety net far above any normal case)")
+    return (f"stopped by the safety net after {limit:g} s (--timeout); no normal input takes this long, and the "
+            f"size estimates did not foresee it; please report the robot file on {ISSUE_URL}")
 
 
 def _silence_stdout() -> None:

@@ -9,9 +9,8 @@ chain: 203,000 nodes estimated, 200,000 built).
 """
 from __future__ import annotations
 
-from ..core.estimate import estimated_size, product_size
+from ..core.estimate import contracted_size, estimated_size
 from ..core.size import expanded_terms, rough_count
-from ..core.transforms import product
 from ..errors import UserError
 from ..printing.render import transform_title
 
@@ -21,10 +20,6 @@ CHARACTERS_PER_NODE = 2  # measured: 1 (textbook robots) to 1.9 (general chains)
 # 0T5 of a general chain (6,900 nodes) takes seconds, 0T6 (18,000) a minute. The largest
 # built-in result is the iiwa7's 0T7, 1,600 nodes; its Jacobian 3,300.
 LATEX_MAX_NODES = 8_000
-# The screw axes are simplified one by one (sympy.simplify), in time that grows fast with the size
-# of the zero pose: a general 3-link chain's takes 2 s, 4 links (422 nodes) 5 s, 5 links (916) 16 s;
-# the built-ins' zero poses have at most 12 nodes.
-SCREWS_MAX_NODES = 300
 # Velocity propagation applies the sum formulas at every step: its size is the sum of the sizes of
 # each frame's transforms to the axes before it. The iiwa7 has 6,700 (1.4 s), a planar 12R arm 7,900
 # (4 s), a general 4-link chain 5,300 (8 s), a general 5-link chain 16,000 (minutes).
@@ -100,21 +95,16 @@ def propagation_size(chain) -> int:
     return sum(estimated_size(chain, frames[k], frames[a]) for k in range(1, len(frames)) for a in axes if a < k)
 
 
-def refuse_screws_if_too_large(robot) -> None:
-    """A UserError when the zero pose is too large to simplify into screw axes."""
-    size = zero_pose_size(robot.chain)
-    if size > SCREWS_MAX_NODES:
+def refuse_screws_if_too_large(robot, limit: int = MAX_NODES) -> None:
+    """A UserError when the zero pose, contracted as `fk` contracts, is past what dhsym prints: the
+    screw axes are its joint frames' z axes and origins (a cross product of two of its columns)."""
+    from ..geometry.screws import zero_steps  # the geometry layer only for the command that uses it
+
+    size = contracted_size(zero_steps(robot.chain))
+    if size > limit:
         raise UserError(f"{robot.path}: the zero pose of this chain has {rough_count(size)} expression nodes, "
-                        f"more than the {SCREWS_MAX_NODES:,} whose screw axes dhsym simplifies; print the link "
-                        f"matrices with 'dhsym links' and set the joint variables to zero by hand")
-
-
-def zero_pose_size(chain) -> int:
-    """Estimated nodes of base → tool with every joint variable zero, link by link, as the screw axes take it."""
-    zero = {v: 0 for v in chain.joint_variables}
-    links = [product(row.steps(chain.convention)).xreplace(zero) for row in chain.rows]
-    base, tool = ([product([step]) for step in steps] for steps in (chain.base, chain.tool))
-    return product_size([*base, *links, *tool])
+                        f"more than the {limit:,} that dhsym prints; print the link matrices with 'dhsym links' "
+                        f"and set the joint variables to zero by hand")
 
 
 def refuse_long_entries(robot) -> None:

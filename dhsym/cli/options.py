@@ -24,15 +24,50 @@ class Parser(argparse.ArgumentParser):
         raise UserError(f"{message} (see '{self.prog} --help')")
 
 
+class VersionAction(argparse.Action):
+    """--version: `dhsym 0.1.0`, from the installed package's metadata (looked up only when asked)."""
+
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS, nargs=0,
+                         help="print dhsym's version and exit")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            number = version("dhsym")
+        except PackageNotFoundError:  # run from a source folder that was never installed
+            number = "(not installed: no version)"
+        print(f"dhsym {number}")
+        parser.exit()
+
+
 def robot_options() -> argparse.ArgumentParser:
     """ROBOT and --timeout: every command that reads a robot takes them."""
     parent = argparse.ArgumentParser(add_help=False)
     parent.add_argument("robot", metavar="ROBOT", help="built-in robot name or path to a robot YAML file")
-    parent.add_argument("--timeout", type=seconds, default=SAFETY_NET_SECONDS, metavar="SECONDS",
+    parent.add_argument("--timeout", type=seconds, default=None, metavar="SECONDS",
                         help="a safety net only: stop with an error after this long (default "
                              f"{SAFETY_NET_SECONDS:g}). What is worked out is decided from size estimates made "
                              "before the work, never from the clock, so no normal input comes near it")
     return parent
+
+
+def safety_net(args) -> float | None:
+    """The seconds a command may run: --timeout as given, else SAFETY_NET_SECONDS for a command that
+    reads a robot, else no limit.
+
+    >>> safety_net(argparse.Namespace(timeout=None)), safety_net(argparse.Namespace())
+    (600.0, None)
+    """
+    if not hasattr(args, "timeout"):
+        return None
+    return args.timeout or default_limit()
+
+
+def default_limit() -> float:
+    """--timeout's default (read when asked, so that a test can lower it)."""
+    return SAFETY_NET_SECONDS
 
 
 def format_options() -> argparse.ArgumentParser:

@@ -9,7 +9,7 @@ import json
 
 from ..geometry.screws import screw_axes
 from ..printing import render
-from .limits import refuse_long_entries, refuse_screws_if_too_large
+from .limits import LATEX_MAX_NODES, MAX_NODES, refuse_long_entries, refuse_screws_if_too_large
 from .options import format_options, robot_options
 
 
@@ -25,7 +25,7 @@ def add_parsers(commands) -> None:
 def run(robot, args) -> str:
     chain = robot  # the printers and the screw axes read its rows, numbers and numbering
     refuse_long_entries(robot)
-    refuse_screws_if_too_large(robot)
+    refuse_screws_if_too_large(robot, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
     screws = screw_axes(chain)
     variables = chain.joint_variables
     if args.format == "json":  # exact, with the decimals as the file wrote them, as every JSON output
@@ -43,8 +43,32 @@ def run(robot, args) -> str:
     lines = [title, "S_i = (ωx, ωy, ωz; vx, vy, vz)", ""]
     for i, variable in enumerate(variables):
         column = [printer.doprint(x) for x in screws.matrix[:, i]]
-        joint = robot.joints[i]  # numbered as the table numbers its rows
-        lines.append(f"S{joint} ({printer.doprint(variable)}) = ({', '.join(column[:3])}; {', '.join(column[3:])})")
+        name = f"S{robot.joints[i]} ({printer.doprint(variable)})"  # numbered as the table numbers its rows
+        lines += _screw_lines(name, column, args.width)
     lines += ["", "M =", render.text_matrix(screws.home, printer, args.width)]
     text = "\n".join(lines)
     return text.replace("ω", "w").replace("−", "-") if args.ascii else text
+
+
+def _screw_lines(name: str, column: list[str], width: int) -> list[str]:
+    """`S2 (θ2) = (ωx, ωy, ωz; vx, vy, vz)` on one line, or, when that is wider than `width`, one
+    line per component, broken like a matrix element (a general chain's axes are long).
+
+    >>> print(*_screw_lines("S2 (θ2)", ["0", "0", "1", "0", "−a1", "0"], 40), sep="\\n")
+    S2 (θ2) = (0, 0, 1; 0, −a1, 0)
+    >>> print(*_screw_lines("S2 (θ2)", ["0", "0", "1", "0", "−a1 c2 − a2 c23 − a3 c234 − a4 c2345", "0"], 40),
+    ...       sep="\\n")
+    S2 (θ2):
+      ωx = 0
+      ωy = 0
+      ωz = 1
+      vx = 0
+      vy = −a1 c2 − a2 c23 − a3 c234
+             − a4 c2345
+      vz = 0
+    """
+    line = f"{name} = ({', '.join(column[:3])}; {', '.join(column[3:])})"
+    if render.display_width(line) <= width:
+        return [line]
+    parts = zip(("ωx", "ωy", "ωz", "vx", "vy", "vz"), column)
+    return [f"{name}:"] + [render.break_element(f"  {part} = ", text, width) for part, text in parts]

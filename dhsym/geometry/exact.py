@@ -1,10 +1,7 @@
 """Exact vectors and numbers for geometry: zero tests, unit vectors, and snapping of the
-rounded floats that robot files contain (1.5708 for π/2) to exact values.
+rounded floats that robot files contain to exact values (directions such as 0.7071 0 0.7071;
+angles such as 1.5708 follow dhsym.core.grid).
 
->>> snap_angle("1.5708")
-(pi/2, True)
->>> snap_angle("0.3")
-(3/10, False)
 >>> snap_length("-1.2e-17"), snap_length("0.425")
 (0, 17/40)
 >>> unit(vector(0, 3, 4)).T
@@ -13,37 +10,19 @@ Matrix([[0, 3/5, 4/5]])
 from __future__ import annotations
 
 import functools
-import re
-from fractions import Fraction
 
 import sympy
 
 from ..core import vectors
+from ..core.grid import ANGLE_STEP, exact_number
 
-ANGLE_TOLERANCE = 1e-5  # radians: 1.5708 is 3.7e-6 from π/2
 DIRECTION_TOLERANCE = 1e-5  # per component of a unit vector
 LENGTH_NOISE = 1e-9  # metres: a written -1.2e-17 is rounding noise, not a length
-ANGLE_STEP = sympy.pi / 12
-_DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)(?:[eE](?P<exponent>[+-]?\d{1,4}))?")
 
 
 def vector(*components) -> sympy.Matrix:
     """A 3-vector of exact numbers or expressions."""
     return sympy.Matrix([sympy.sympify(c) for c in components])
-
-
-def exact_number(text: str) -> sympy.Rational:
-    """The decimal as written, exactly: '0.1' is 1/10 (never the float's 0.1000000000000000055…).
-    Raises ValueError for anything but a plain decimal of at most 40 characters and exponent 30.
-
-    >>> exact_number("1e999999")
-    Traceback (most recent call last):
-    ValueError: not a number of a robot's size: '1e999999'
-    """
-    match = _DECIMAL.fullmatch(text.strip())
-    if not match or len(text.strip()) > 40 or abs(int(match.group("exponent") or 0)) > 30:
-        raise ValueError(f"not a number of a robot's size: {text.strip()!r}")
-    return sympy.Rational(Fraction(text.strip()))
 
 
 def is_zero(value) -> bool:
@@ -102,17 +81,6 @@ def cross(u: sympy.Matrix, v: sympy.Matrix) -> sympy.Matrix:
 def dot(u: sympy.Matrix, v: sympy.Matrix):
     """u · v (core.vectors), tidied."""
     return tidy(vectors.dot(u, v))
-
-
-def snap_angle(text: str) -> tuple[sympy.Expr, bool]:
-    """An angle written in radians: the nearest multiple of π/12 when within ANGLE_TOLERANCE,
-    else the decimal exactly. The flag says whether the value was snapped (moved)."""
-    written = exact_number(text)
-    steps = round(float(written) / float(ANGLE_STEP))
-    snapped = steps * ANGLE_STEP
-    if abs(float(written) - float(snapped)) <= ANGLE_TOLERANCE:
-        return snapped, written != snapped
-    return written, False
 
 
 def rational_turn(angle: sympy.Rational, digits: int = 20) -> tuple[sympy.Rational, sympy.Rational]:

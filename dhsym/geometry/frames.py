@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 import sympy
 
 from ..core.chain import Chain, DHRow
+from ..core.grid import ANGLE_STEP
 from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, Step
 from ..errors import UserError
@@ -175,25 +176,79 @@ def _tabulate(convention, axes, steps, tool_pose, variables, decimals) -> Assign
         frames += [Frame(str(s.index), s.near_foot, s.x, a.direction) for s, a in zip(steps, axes)]
     roundings: list = []
 
-    def fitted(value, label: str, length: bool):
-        written = fit(value, decimals, length)
+    def fitted(value, label: str, length: bool, written=None):
+        written = written if written is not None else fit(value, decimals, length)
         if written is not value:
             roundings.append(Rounding(label, written, value))
         return written
 
+    exact = [_row(convention, frames[i - 1], frames[i]) for i in range(1, n + 1)]
+    base_steps, tool_steps = pose_steps(frames[0].pose), pose_steps(relative(frames[n].pose, tool_pose))
+    turns = _z_turns(convention, exact, base_steps, tool_steps)
+    written = dict(zip([place for place, _, _ in turns], _summing_to_grid(turns, decimals)))
     rows = []
-    for i in range(1, n + 1):
+    for i, values in enumerate(exact, 1):
         joint = axes[i - 1].joint
         moving = "theta" if joint == "R" else "d"
-        values = _row(convention, frames[i - 1], frames[i])
-        values = {key: fitted(value, dh_label(convention, i, key, moving=key == moving), key in ("a", "d"))
+        values = {key: fitted(value, dh_label(convention, i, key, moving=key == moving), key in ("a", "d"),
+                              written[i] if key == "theta" else None)
                   for key, value in values.items()}
         values[moving] = variables[i - 1] + values[moving]
         rows.append((joint, values["theta"], values["d"], values["a"], values["alpha"]))
-    base = [Step(s.kind, fitted(s.value, f"base {s.kind}", s.kind[0] == "T")) for s in pose_steps(frames[0].pose)]
-    tool = [Step(s.kind, fitted(s.value, f"tool {s.kind}", s.kind[0] == "T"))
-            for s in pose_steps(relative(frames[n].pose, tool_pose))]
+    base = [Step(s.kind, fitted(s.value, f"base {s.kind}", s.kind[0] == "T", _turn(written, "base", s)))
+            for s in base_steps]
+    tool = [Step(s.kind, fitted(s.value, f"tool {s.kind}", s.kind[0] == "T", _turn(written, "tool", s)))
+            for s in tool_steps]
     return Assignment(convention, list(axes), frames, steps, rows, list(variables), base, tool, roundings)
+
+
+def _z_turns(convention: str, exact: list, base_steps: list, tool_steps: list) -> list:
+    """(place, angle, twist from the z axis before) of each turn about a z axis along the chain:
+    the base's when it turns about z alone, each row's θ constant (place: the row number), and the
+    tool's first turn when it is about z; the twist is None where no z axis comes before."""
+    base_turns = [step for step in base_steps if step.kind[0] == "R"]
+    turns = [("base", base_turns[0].value, None)] if [s.kind for s in base_turns] == ["Rz"] else []
+    for i, values in enumerate(exact):
+        twist = exact[i - 1]["alpha"] if convention == "standard" else values["alpha"]
+        twist = twist if i else (0 if turns else None)
+        turns.append((i + 1, values["theta"], twist))
+    tool_turns = [step for step in tool_steps if step.kind[0] == "R"]
+    if tool_turns and tool_turns[0].kind == "Rz":
+        turns.append(("tool", tool_turns[0].value, exact[-1]["alpha"] if convention == "standard" else 0))
+    return turns
+
+
+def _turn(written: dict, place: str, step: Step):
+    """The written angle of the base's or tool's turn about z, None for any other step."""
+    return written.get(place) if step.kind == "Rz" else None
+
+
+def _summing_to_grid(turns: list, decimals: bool) -> list:
+    """The angles of `turns` (see _z_turns) as written: each fitted, except that where the turns
+    about a run of parallel z axes add up to a multiple of π/12 (the forward kinematics prints
+    their sum, as in cos(q2 + q3 + π/2)), a rounded one is written as that multiple less the others
+    as written, so that the sum stays exact. An anti-parallel pair (twist π) subtracts instead.
+
+    >>> from dhsym.geometry.rounding import written_text
+    >>> thetas = [sympy.atan(sympy.Rational(221, 12)), sympy.atan(sympy.Rational(12, 221))]  # a sum of π/2
+    >>> [written_text(theta) for theta in _summing_to_grid([(1, thetas[0], None), (2, thetas[1], 0)], True)]
+    ['1.51655095372531', '-1.51655095372531 + pi/2']
+    """
+    written, exact_sum, written_sum, sign = [], sympy.Integer(0), sympy.Integer(0), 1
+    for _, theta, twist in turns:
+        if twist not in (0, sympy.pi):
+            exact_sum, written_sum, sign = sympy.Integer(0), sympy.Integer(0), 1
+        elif twist == sympy.pi:
+            sign = -sign
+        value = fit(theta, decimals)
+        exact_sum += sign * theta
+        if value is not theta and theta.is_number:
+            total = fit(exact_sum, decimals)
+            if total != 0 and (total / ANGLE_STEP).is_integer:
+                value = sign * (total - written_sum)
+        written_sum += sign * value
+        written.append(value)
+    return written
 
 
 def _row(convention, before: Frame, after: Frame) -> dict:

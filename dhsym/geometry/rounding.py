@@ -27,6 +27,14 @@ alpha_2 0.927295218001612 (exactly atan(4/3))
 (3*sqrt(2)/20, pi/2, 17/40)
 >>> fit(sympy.Rational(1, 3), decimals=False), decimal_text(fit(sympy.Rational(1, 3)))
 (1/3, '0.333333333333333')
+
+An angle that rounds to the same 15 digits as a multiple of π/12 is written as that multiple
+(the rule of dhsym.core.grid at the digits a rounded value keeps); a length never is:
+
+>>> fit(sympy.atan(sympy.Rational(10**16))), fit(sympy.pi / 2 + sympy.Rational(1, 10**17))
+(pi/2, pi/2)
+>>> decimal_text(fit(sympy.atan(sympy.Rational(10**16)), length=True))
+'1.5707963267949'
 """
 from __future__ import annotations
 
@@ -37,6 +45,7 @@ import sympy
 from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
+from ..core.grid import ANGLE_STEP
 from ..core.numbers import WrittenNumbers, decimal_text
 from .exact import is_zero
 
@@ -150,17 +159,25 @@ def written_text(value, numbers: WrittenNumbers | None = None) -> str:
     return _WrittenPrinter(numbers or WrittenNumbers()).doprint(sympy.sympify(value))
 
 
-def _fit_number(value: sympy.Expr, decimals: bool, length: bool) -> sympy.Expr:
+def _fit_number(value: sympy.Expr, decimals: bool, length: bool, alone: bool = True) -> sympy.Expr:
+    """`alone`: the number is a value, not a symbol's coefficient (only a value can be an angle)."""
     if value.is_Rational:
-        return value if _short_decimal(value) or (not decimals and _short_fraction(value)) else _rounded(value)
-    if length and value.has(sympy.pi):
+        if _short_decimal(value) or (not decimals and _short_fraction(value)):
+            return value
+    elif length and value.has(sympy.pi):
         return _rounded(value)
-    turns = value / sympy.pi
-    if turns.is_Rational and _short_fraction(turns):
+    elif (value / sympy.pi).is_Rational and _short_fraction(value / sympy.pi) or not decimals and _short_surd(value):
         return value
-    if not decimals and _short_surd(value):
-        return value
-    return _rounded(value)
+    rounded = _rounded(value)
+    return rounded if length or not alone else _multiple_rounding_to(rounded) or rounded
+
+
+def _multiple_rounding_to(rounded: sympy.Rational) -> sympy.Expr | None:
+    """The multiple of π/12 (not 0) that rounds to the same SIGNIFICANT digits as an angle, if any:
+    the angle is that multiple up to the rounding it would get anyway (core.grid's rule, at a
+    double's digits), as when URDF angles of 0.4 and 1.170796326794897 add up to π/2."""
+    steps = round(float(rounded) / float(ANGLE_STEP))
+    return steps * ANGLE_STEP if steps and _rounded(steps * ANGLE_STEP) == rounded else None
 
 
 def _fit_symbolic(value: sympy.Expr, decimals: bool, length: bool) -> sympy.Expr:
@@ -169,7 +186,7 @@ def _fit_symbolic(value: sympy.Expr, decimals: bool, length: bool) -> sympy.Expr
     changed, terms = False, []
     for term in sympy.Add.make_args(value):
         coefficient, rest = term.as_independent(*symbols, as_Mul=True)
-        fitted = _fit_number(coefficient, decimals, length)
+        fitted = _fit_number(coefficient, decimals, length, alone=rest == 1)
         changed = changed or fitted is not coefficient
         terms.append(fitted * rest)
     return sympy.Add(*terms) if changed else value

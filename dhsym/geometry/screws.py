@@ -2,6 +2,13 @@
 section 4.1): the space-frame screw axes S_i = (ω_i, v_i) and the home pose M, symbolically,
 and the joint axes of any chain at its zero configuration.
 
+The screw axis of a joint is its axis at the zero configuration: ω the axis's direction and
+v = p × ω for a point p on it. Both come from the joint's frame at q = 0, worked out by the
+contraction that `fk` uses (so any chain that `fk` prints has its screws). A zero pose of at
+most TIDY_MAX_NODES nodes (no entry past TIDY_MAX_ENTRY; every built-in robot, a general 3-link
+chain) is simplified further with sympy.simplify, whose time grows fast with the size (a general
+4-link chain's would take seconds, 6 links minutes); a larger one keeps the contracted form.
+
 >>> from dhsym.io.library import load
 >>> screws = screw_axes(load("planar2r"))
 >>> screws.matrix.T
@@ -17,10 +24,16 @@ from dataclasses import dataclass
 
 import sympy
 
-from ..core.transforms import Step, joint_axis_frame, product
+from ..core.simplify import contract
+from ..core.size import tree_size
+from ..core.transforms import Step, joint_axis_frame
 from ..core.vectors import cross
 from ..errors import UserError
+from .exact import tidy
 from .lines import JointAxis
+
+TIDY_MAX_NODES = 600  # nodes of all the joint frames' and the last frame's entries (a general 3-link chain: 445)
+TIDY_MAX_ENTRY = 80  # nodes of the largest entry (one of 73 takes sympy.simplify a second)
 
 
 @dataclass(frozen=True)
@@ -35,13 +48,20 @@ class Screws:
 def zero_poses(chain) -> list[sympy.Matrix]:
     """The pose of each joint's frame at the zero configuration (the frame whose z is the
     joint axis: i−1 in standard DH, i in modified), then the last frame's pose (tool, else n)."""
-    zero = {v: 0 for v in chain.joint_variables}
-    frames = [product(chain.base)]  # frame 0, then 1..n
-    for row in chain.rows:
-        steps = [Step(step.kind, step.value.xreplace(zero)) for step in row.steps(chain.convention)]
-        frames.append(frames[-1] * product(steps))
+    steps = zero_steps(chain)
+    ends = [len(chain.base) + 4 * k for k in range(chain.n + 1)]  # where frames 0..n end in the steps
+    frames = [contract(steps[:end], ()) for end in ends]
     joint_frames = [frames[joint_axis_frame(chain.convention, joint)] for joint in range(1, chain.n + 1)]
-    return [_tidy(p) for p in joint_frames + [frames[-1] * product(chain.tool)]]
+    poses = joint_frames + [contract(steps, ())]
+    small = _small(poses)
+    return [p.applyfunc(lambda e: sympy.simplify(e) if small and e.free_symbols else _numbers(e)) for p in poses]
+
+
+def zero_steps(chain) -> list[Step]:
+    """The chain's steps, base to tool, with every joint variable zero."""
+    zero = {v: 0 for v in chain.joint_variables}
+    links = [step for row in chain.rows for step in row.steps(chain.convention)]
+    return [Step(step.kind, step.value.xreplace(zero)) for step in [*chain.base, *links, *chain.tool]]
 
 
 def rate(row) -> sympy.Expr:
@@ -73,7 +93,8 @@ def screw_axes(chain) -> Screws:
             columns.append(list(direction) + [-x for x in cross(direction, point)])
         else:
             columns.append([0, 0, 0] + list(direction))
-    matrix = sympy.Matrix(columns).T.applyfunc(lambda e: sympy.simplify(sympy.expand(e)))
+    small = _small(poses)  # the poses were simplified, and their products can be too
+    matrix = sympy.Matrix(columns).T.applyfunc(lambda e: sympy.simplify(sympy.expand(e)) if small else _numbers(e))
     return Screws(matrix, poses[-1])
 
 
@@ -99,5 +120,13 @@ def product_of_exponentials(screws: Screws, values) -> sympy.Matrix:
     return result * screws.home
 
 
-def _tidy(matrix: sympy.Matrix) -> sympy.Matrix:
-    return matrix.applyfunc(lambda e: sympy.simplify(e) if e.free_symbols else e)
+def _numbers(entry: sympy.Expr) -> sympy.Expr:
+    """An entry without symbols in its short exact form (surds combined: (√2/4 + √6/4)(√2/4 − √6/4)
+    is −1/4), else as it is; multiplying out numbers is cheap."""
+    return entry if entry.free_symbols else tidy(entry)
+
+
+def _small(poses: list) -> bool:
+    """Whether sympy.simplify takes the zero pose's entries in moments (see the module)."""
+    sizes = [tree_size(entry) for pose in poses for entry in pose[:3, :]]
+    return sum(sizes) <= TIDY_MAX_NODES and max(sizes) <= TIDY_MAX_ENTRY

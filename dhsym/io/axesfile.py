@@ -3,7 +3,9 @@ at the zero configuration, in the base frame) plus `tool:` (the tool frame at th
 configuration, as steps from the base frame) instead of `joints:`. The DH table in the file's
 `convention` is derived by dhsym.geometry.frames; joint variables are `q_1..q_n` unless an axis
 names its own with `var:`. At most 24 axes, as for `joints:`; a point is made of numbers and
-constants (a joint variable there would move the axis). When the file writes decimals, the
+constants (a joint variable there would move the axis), each of at most MAX_TERMS terms when
+multiplied out, counted before any work (the frame assignment simplifies sums and products of
+them). When the file writes decimals, the
 table shows decimals: values that are not exact decimals are rounded to 15 significant digits
 and the notes say so (see dhsym.geometry.rounding).
 
@@ -23,6 +25,7 @@ from __future__ import annotations
 import sympy
 
 from ..core.numbers import decimal_text
+from ..core.size import expanded_terms, rough_count
 from ..core.transforms import product
 from ..errors import UserError
 from ..geometry.exact import is_zero_vector, unit
@@ -32,6 +35,7 @@ from ..geometry.rounding import rounding_note
 from .expr import Reading, parse_expression, real_symbol
 
 AXIS_KEYS = ("joint", "point", "direction", "var")
+MAX_TERMS = 40  # of a point's coordinate or a tool step multiplied out: (l_1 + l_2 + l_3 + l_4)^4 has 35
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 
 
@@ -66,6 +70,8 @@ def axes_chain(reader, top: dict, convention: str):
             raise UserError(f"axis {number} point: {moving[0]} is a joint variable; the axes are given at the zero "
                             "configuration, in numbers and constants", reader.where(point_node))
     tool_steps = reader.steps(top["tool"][1], "tool", set(variables))
+    for number, step in enumerate(tool_steps, 1):
+        _refuse_long(step.value, f"tool step {number} {step.kind}", reader.where(top["tool"][1]))
     try:
         assignment = assign_frames(axes, product(tool_steps), convention, variables,
                                    decimals=reader.reading.places > 0)
@@ -119,4 +125,24 @@ def _triple(reader, node, what: str) -> sympy.Matrix:
     values = reader.sequence(node, what)
     if len(values) != 3:
         raise UserError(f"{what} must be a list of 3 values [x, y, z], not {len(values)}", reader.where(node))
-    return sympy.Matrix([reader.expression(value, f"{what}") for value in values])
+    triple = sympy.Matrix([reader.expression(value, f"{what}") for value in values])
+    for value, value_node in zip(triple, values):
+        _refuse_long(value, what, reader.where(value_node))
+    return triple
+
+
+def _refuse_long(value: sympy.Expr, what: str, where) -> None:
+    """A UserError for a value that multiplies out to more than MAX_TERMS terms, from a count made
+    before any work: the frame assignment simplifies sums and products of such values.
+
+    >>> _refuse_long(sympy.sympify("(l_1 + l_2 + l_3 + l_4)^16"), "axis 2 point", "arm.yaml:4:30")
+    Traceback (most recent call last):
+    dhsym.errors.UserError: arm.yaml:4:30: axis 2 point: this value would multiply out to about 969 terms, more than \
+the 40 that dhsym's frame assignment takes; name it as a constant (a symbol such as l_1) and give its value in the \
+robot file's sample
+    """
+    terms = expanded_terms(value)
+    if terms > MAX_TERMS:
+        raise UserError(f"{what}: this value would multiply out to {rough_count(terms)} terms, more than the "
+                        f"{MAX_TERMS} that dhsym's frame assignment takes; name it as a constant (a symbol such as "
+                        "l_1) and give its value in the robot file's sample", where)

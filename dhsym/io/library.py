@@ -49,10 +49,29 @@ def read(name_or_path: str) -> Robot:
     if name_or_path in names:
         return load_robot_file(ROBOTS_DIR / f"{name_or_path}.yaml")
     path = Path(name_or_path)
-    if name_or_path.strip() and (path.suffix in (".yaml", ".yml") or path.exists() or "/" in name_or_path):
+    if name_or_path.strip() and (path.suffix in (".yaml", ".yml") or "/" in name_or_path or _is_file(path)):
         return load_robot_file(path)
     hint = difflib.get_close_matches(name_or_path.lower(), names, n=1, cutoff=0.5)
     if not hint:
         hint = [name for name in names if name_or_path and name.startswith(name_or_path.lower())][:1]
     suggestion = f"; did you mean {hint[0]!r}?" if hint else ""
-    raise UserError(f"unknown robot {name_or_path!r}; built-in robots are: {', '.join(names)}{suggestion}")
+    raise UserError(f"unknown robot {_shown(name_or_path)}; built-in robots are: {', '.join(names)}{suggestion}")
+
+
+def _is_file(path: Path) -> bool:
+    """Whether `path` names something on disk; a name the system refuses (too long) names nothing."""
+    try:
+        return path.exists()
+    except (OSError, ValueError):  # ENAMETOOLONG, or a NUL character
+        return False
+
+
+def _shown(name: str, most: int = 60) -> str:
+    """A name as an error quotes it, cut short past `most` characters.
+
+    >>> _shown("puma")
+    "'puma'"
+    >>> print(_shown("arm_" * 64))
+    'arm_arm_arm_arm_arm_arm_arm_arm_arm_arm_arm_arm_arm_arm_arm_'… (256 characters)
+    """
+    return repr(name) if len(name) <= most else f"{name[:most]!r}… ({len(name)} characters)"

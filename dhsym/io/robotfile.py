@@ -26,17 +26,17 @@ import sympy
 import yaml
 
 from ..core.chain import Chain, DHRow
+from ..core.grid import Snaps
 from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
 from .expr import Reading, parse_expression
-from .suspicious import misplaced_variable, misspelt_pi, near_multiple_of_pi, printed_key, printed_text
+from .suspicious import decimal_angle, looks_like_degrees, misplaced_variable, misspelt_pi, printed_key, printed_text
 from .yamlsafe import MAX_JOINTS, YAML_TAG, compose, mark_location, read_text_file
 
 TOP_KEYS = ("name", "source", "convention", "joints", "axes", "base", "tool", "sample", "notes", "first_frame")
 ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
-_DEGREE_LOOKING = {15, 30, 45, 60, 90, 120, 135, 150, 180, 270, 360}
 LENGTHS = ("a", "d", "Tx", "Ty", "Tz")  # fields that hold distances; the others hold angles
 
 
@@ -75,6 +75,7 @@ class _Reader:
     def __init__(self, filename: str):
         self.filename = filename
         self.warnings: list[str] = []
+        self.snaps = Snaps(lengths=False)  # angles read as multiples of π/12: one warning at the end
         self.reading = Reading()  # of the table's fields: how numbers were written, where names stand
 
     def where(self, node: yaml.Node) -> Location:
@@ -147,12 +148,11 @@ class _Reader:
                 raise UserError(f"{what}: {field_name} is a length and cannot be {unit}; angles go in {angles}",
                                 where)
 
-    def warn_decimal_angle(self, value: sympy.Expr, reading: Reading, what: str) -> None:
-        """`alpha: 1.5708` is not π/2; say so where the decimal stands."""
-        if reading.decimals:
-            message = near_multiple_of_pi(value, reading.places)
-            if message:
-                self.warnings.append(f"{reading.decimals[0][1]}: {what}: {message}")
+    def decimal_angle(self, value: sympy.Expr, reading: Reading, what: str) -> sympy.Expr:
+        """`alpha: 1.5708` is not π/2, say so where the decimal stands; a double's π/2 is (io.suspicious)."""
+        angle, message = decimal_angle(value, reading.decimals, reading.places, self.snaps)
+        self.warnings += [f"{reading.decimals[0][1]}: {what}: {message}"] if message else []
+        return angle
 
     def optional_text(self, top: dict, key: str, default: str) -> str:
         if key not in top:
@@ -198,7 +198,7 @@ class _Reader:
         return Robot(chain, name=self.optional_text(top, "name", Path(self.filename).stem),
                      source=self.optional_text(top, "source", ""), notes=notes, sample=sample,
                      numbers=self.reading.numbers,  # how the table's fields wrote numbers, for the printers
-                     frame_offset=first_frame, file=self.filename, warnings=self.warnings)
+                     frame_offset=first_frame, file=self.filename, warnings=self.warnings + self.snaps.warnings())
 
     def dh_chain(self, top: dict, convention: str) -> Chain:
         """The chain of a file that gives DH rows under `joints:`."""
@@ -244,10 +244,10 @@ class _Reader:
                 raise UserError(f"{what} {key}: joint variable {variable} also appears here; only {moving} "
                                 f"may hold it", self.where(nodes[key]))
         self.warn_degrees(values["alpha"], nodes["alpha"], f"{what} alpha")
-        self.warn_decimal_angle(values["alpha"], readings["alpha"], f"{what} alpha")
+        values["alpha"] = self.decimal_angle(values["alpha"], readings["alpha"], f"{what} alpha")
         constant_angle = values["theta"] - variable if kind == "R" else values["theta"]
         self.warn_degrees(constant_angle, nodes["theta"], f"{what} theta", offset=kind == "R")
-        self.warn_decimal_angle(constant_angle, readings["theta"], f"{what} theta")
+        values["theta"] += self.decimal_angle(constant_angle, readings["theta"], f"{what} theta") - constant_angle
         dh = DHRow(kind, values["theta"], values["d"], values["a"], values["alpha"], variable)
         return _Row(number, dh, nodes)
 
@@ -329,7 +329,7 @@ class _Reader:
     def warn_degrees(self, value: sympy.Expr, node: yaml.Node, what: str, offset: bool = False) -> None:
         """Warn about an angle such as 90 that was almost certainly meant in degrees."""
         constant = value.as_coeff_Add()[0] if value.is_Add else value
-        if constant.is_Integer and abs(int(constant)) in _DEGREE_LOOKING:
+        if looks_like_degrees(constant):
             kind = "the offset " if offset or constant != value else ""
             self.warn(node, f"{what}: {kind}{constant} is taken as radians; write {constant}deg if you meant degrees")
 
@@ -349,7 +349,7 @@ class _Reader:
                                 self.where(value_node))
             if kind[0] == "R":
                 self.warn_degrees(value, value_node, f"{step_what} {kind}")
-                self.warn_decimal_angle(value, reading, f"{step_what} {kind}")
+                value = self.decimal_angle(value, reading, f"{step_what} {kind}")
             steps.append(Step(kind, value))
         return steps
 

@@ -22,6 +22,7 @@ import sympy
 from sympy.printing.conventions import split_super_sub
 from sympy.printing.pretty.pretty_symbology import greek_unicode
 
+from ..core.grid import DOUBLE_DIGITS, Snaps, exact_number, grid_angle
 from ..core.numbers import decimal_text
 
 _PI_SPELLING = re.compile(r"(?i:pi|π|Π)_?(\d*)")
@@ -111,6 +112,31 @@ def near_multiple_of_pi(value: sympy.Expr, places: int) -> str | None:
         return None
     angle = steps * sympy.pi / 12
     return f"{decimal_text(value)} is not exactly {_pi_text(angle, 'π')}; did you mean {_pi_text(angle, 'pi')}?"
+
+
+def decimal_angle(value: sympy.Expr, decimals: list, places: int, snaps: Snaps) -> tuple[sympy.Expr, str | None]:
+    """A robot file's constant angle as the file means it, and the warning it gets, if any.
+    `decimals`: the (literal, place) of the decimals written in the field, `places` the most places.
+    The file's decimals are its own (1.5708 gets a "did you mean pi/2?"), except a lone one that is
+    a multiple of π/12 to a double's precision (core.grid): that is the multiple, kept in `snaps`.
+
+    >>> decimal_angle(sympy.Rational("-1.570796326794897"), [("1.570796326794897", "arm.yaml:5:24")], 15, Snaps())
+    (-pi/2, None)
+    >>> decimal_angle(sympy.Rational("1.5708"), [("1.5708", "arm.yaml:5:23")], 4, Snaps())
+    (3927/2500, '1.5708 is not exactly π/2; did you mean pi/2?')
+    """
+    if not decimals:
+        return value, None
+    if value.is_Rational and len(decimals) == 1:
+        literal, where = decimals[0]
+        try:
+            multiple = grid_angle(literal, DOUBLE_DIGITS, tolerance=0)
+        except ValueError:  # not a plain decimal (1_000.5): nothing to read as a multiple
+            multiple = None
+        if multiple is not None and abs(value) == exact_number(literal):
+            snaps.add(literal, multiple, where)
+            return sympy.sign(value) * multiple, None
+    return value, near_multiple_of_pi(value, places)
 
 
 def looks_like_degrees(value: sympy.Expr) -> bool:

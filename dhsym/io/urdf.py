@@ -2,12 +2,13 @@
 zero configuration and the tip's pose, ready for the frame-assignment algorithm.
 
 The file is decoded, checked and parsed by `xmlsource` (no DOCTYPE, no entities, nothing left for
-xacro; see there). Meshes are never opened. Numbers are read exactly as written; angles within
-1e-5 rad of a multiple of π/12, and directions within 1e-5 of an exact unit vector, are snapped
-to it with a warning; numbers below 1e-9 (CAD noise such as -2.67276e-51) become 0, with one
-warning per file. Angles that look like degrees (90) or like a rounded π/2 (1.57) are kept as
-written, with the warning a robot file gets. Only joints on the base → tip path matter: a mimic
-finger or a floating base elsewhere in the file is not read.
+xacro; see there). Meshes are never opened. Numbers are read exactly as written; an angle that
+stands for a multiple of π/12 (1.571, 1.5708: the rule is core.grid's) is read as it, and
+directions within 1e-5 of an exact unit vector are snapped to it, with one warning each per file;
+numbers below 1e-9 (CAD noise such as -2.67276e-51) become 0, with one warning per file. Angles
+that look like degrees (90) or like a cut-off π (3.1415) are kept as written, with the warning a
+robot file gets. Only joints on the base → tip path matter: a mimic finger or a floating base
+elsewhere in the file is not read.
 
 >>> robot = read_urdf_text(b'''<robot name="arm">
 ...   <link name="base"/><link name="upper"/><link name="tip"/>
@@ -19,29 +20,22 @@ finger or a floating base elsewhere in the file is not read.
 >>> robot.axes[0].point.T, robot.tool[:3, 3].T
 (Matrix([[0, 0, 1/10]]), Matrix([[1/4, 0, 1/10]]))
 >>> robot.warnings
-['arm.urdf:6:35: angles snapped to exact multiples of π/12 (within 1e-05 rad): 1.5708 → π/2']
+['arm.urdf:6:35: angles snapped to the multiples of π/12 they were rounded from: 1.5708 → π/2; this turns any \
+frame by at most 3.7e-06 rad']
 """
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import sympy
 
+from ..core.grid import ANGLE_STEP, Snaps, exact_number, snap_angle
 from ..core.transforms import rotation
 from ..errors import Location, UserError
-from ..geometry.exact import (
-    ANGLE_STEP,
-    ANGLE_TOLERANCE,
-    LENGTH_NOISE,
-    exact_number,
-    rational_turn,
-    snap_angle,
-    snap_direction,
-    tidy_vector,
-    vector,
-)
+from ..geometry.exact import LENGTH_NOISE, rational_turn, snap_direction, tidy_vector, vector
 from ..geometry.lines import JointAxis
 from .suspicious import looks_like_degrees, near_multiple_of_pi
 from .xmlsource import MAX_XML_BYTES, parse_xml_text, read_regular_file
@@ -92,11 +86,12 @@ class _Reader:
     def __init__(self, source):
         self.source, self.root, self.filename = source, source.root, source.filename
         self.warnings: list[str] = []
-        self.snapped_angles: dict = {}
+        self.snaps = Snaps()  # angles read as multiples of π/12 (core.grid)
+        self.reach = 0.0  # metres beyond the origin being read: how far a changed angle there moves the tip
         self.free_angles: dict = {}
         self.snapped_directions: list = []
         self.noise: list = []  # (text, place) of numbers below 1e-9 read as 0
-        self.first_snap = None
+        self.first_direction = None
         self.links = {}
         for link in self.root.findall("link"):
             name = self.attribute(link, "name")
@@ -233,7 +228,7 @@ class _Reader:
 
     def walk(self, base: str, tip: str, path: list) -> UrdfChain:
         pose, axes, names = sympy.eye(4), [], []
-        for joint in path:
+        for joint, self.reach in zip(path, _reaches(path)):
             name, kind = joint.get("name").strip(), self.attribute(joint, "type")
             if kind in UNSUPPORTED:
                 raise UserError(f"joint {name!r} is {kind}: {UNSUPPORTED[kind]}; dhsym handles revolute, continuous, "
@@ -293,12 +288,11 @@ class _Reader:
         return result
 
     def turn(self, axis: int, written: sympy.Rational, text: str, element) -> sympy.Matrix:
-        """The rotation by a written angle: exact on the π/12 grid (snapped there within 1e-5 rad),
-        else through a rational cosine and sine (see exact.rational_turn)."""
+        """The rotation by a written angle: exact on the π/12 grid (read as a multiple of π/12 by
+        the rule of core.grid), else through a rational cosine and sine (see exact.rational_turn)."""
         value, moved = snap_angle(text) if written != 0 else (written, False)
         if moved:
-            self.snapped_angles.setdefault(text, value)
-            self.first_snap = (element, axis) if self.first_snap is None else self.first_snap
+            self.snaps.add(text, value, self.where(element, "rpy", axis), self.reach)
         if (value / ANGLE_STEP).is_integer:
             return rotation(axis, value)
         self.free_angles.setdefault(text, self.where(element, "rpy", axis))
@@ -327,17 +321,11 @@ class _Reader:
                             self.where(element, "xyz") if element is not None else self.where(joint)) from None
         if moved:
             self.snapped_directions.append(" ".join(element.get("xyz").split()))
-            self.first_snap = (element, None) if self.first_snap is None else self.first_snap
+            self.first_direction = self.first_direction or self.where(element, "xyz")
         return direction
 
     def report(self) -> None:
-        snap = self.first_snap
-        where = self.where(snap[0], "rpy" if snap[1] is not None else "xyz", snap[1]) if snap else self.filename
-        if self.snapped_angles:
-            shown = ", ".join(f"{text} → {str(value).replace('pi', 'π')}"
-                              for text, value in self.snapped_angles.items())
-            self.warnings.insert(0, f"{where}: angles snapped to exact multiples of π/12 (within {ANGLE_TOLERANCE:g} "
-                                 f"rad): {shown}")
+        self.warnings[:0] = self.snaps.warnings()
         if self.noise:
             shown = ", ".join(dict.fromkeys(text for text, _ in self.noise[:3]))
             more = f" and {len(self.noise) - 3} more" if len(self.noise) > 3 else ""
@@ -348,18 +336,38 @@ class _Reader:
                                  "through rational cosines and sines (within 1e-20 rad); table values that depend on "
                                  "them are rounded to 15 significant digits")
         if self.snapped_directions:
-            self.warnings.append(f"{where}: axis directions snapped to exact unit vectors: "
+            self.warnings.append(f"{self.first_direction}: axis directions snapped to exact unit vectors: "
                                  f"{', '.join(self.snapped_directions)}")
 
 
 def _on_grid(word: str) -> bool:
-    """Whether a written angle is 0 or within the snapping tolerance of a multiple of π/12."""
+    """Whether a written angle is 0 or stands for a multiple of π/12 (core.grid)."""
     try:
-        value = float(word)
+        return abs(float(word)) < LENGTH_NOISE or (value := snap_angle(word)[0]) == 0 or (value / ANGLE_STEP).is_integer
     except ValueError:
         return True  # reported with its place when the origin is read
-    steps = round(value / float(ANGLE_STEP))
-    return abs(value) < LENGTH_NOISE or abs(value - steps * float(ANGLE_STEP)) <= ANGLE_TOLERANCE
+
+
+def _reaches(path: list) -> list[float]:
+    """For each joint of the path, how far the tip can be from its origin (metres): the lengths
+    of the later origins and the travel of this and later prismatic joints (their limits)."""
+    reaches, total = [], 0.0
+    for joint in reversed(path):
+        if joint.get("type", "").strip() == "prismatic":
+            total += max((abs(_float(joint.find("limit"), key)) for key in ("lower", "upper")), default=0.0)
+        reaches.append(total)
+        total += math.hypot(*(_float(joint.find("origin"), "xyz", axis) for axis in range(3)))
+    return reaches[::-1]
+
+
+def _float(element, key: str, word: int = 0) -> float:
+    """A number of an attribute as a float, 0 where there is none (errors are reported where the
+    number is read exactly)."""
+    try:
+        value = float((element.get(key) or "").split()[word]) if element is not None else 0.0
+    except (ValueError, IndexError):
+        return 0.0
+    return value if math.isfinite(value) else 0.0
 
 
 def _listed(names, shown: int = 12) -> str:

@@ -100,17 +100,45 @@ def text_determinant(result, found, printer: TextPrinter, width: int = 100) -> s
     if result.value is not None:
         lines.extend(render.break_element(label, printer.doprint(result.value), width).splitlines())
     if result.note:
-        lines.append(textwrap.fill(result.note, width))
+        lines.append(render.wrap(result.note, width))
     if found:
         lines.append("singular where")
         for singularity in found:
-            first = f"  {printer.doprint(singularity.factor)} = 0: "
-            lines.append(textwrap.fill(singularity.describe(joint_label(printer)), width, initial_indent=first,
-                                       subsequent_indent="    "))
+            lines += singular_lines(printer.doprint(singularity.factor), singularity.describe(joint_label(printer)),
+                                    width)
     elif result.value is not None:
         lines.append("no factor with joint variables: never singular" if result.value != 0
                      else "identically zero: singular in every configuration")
     return "\n".join(lines)
+
+
+def singular_lines(factor: str, meaning: str, width: int) -> list[str]:
+    """`  factor = 0: meaning`, wrapped at `width` with every word whole: the meaning starts on the
+    factor's line when its first word fits there, else on the next; a factor longer than the line
+    breaks like a matrix element.
+
+    >>> print(*singular_lines("s5", "wrist: axes 4 and 6 line up", 40), sep="\\n")
+      s5 = 0: wrist: axes 4 and 6 line up
+    >>> print(*singular_lines("1.596 s2 c3 c4 s5 + 6.86 s2 s3 s5 − 0.057 s23 c4² c5", "the joint velocities "
+    ...                       "are dependent here", 40), sep="\\n")
+      1.596 s2 c3 c4 s5 + 6.86 s2 s3 s5
+        − 0.057 s23 c4² c5 = 0:
+        the joint velocities are dependent
+        here
+    """
+    head = f"  {factor} = 0:"
+    first_word = meaning.split(" ", 1)[0]
+    if render.display_width(head) + 1 + len(first_word) <= width:
+        return _words(meaning, width, head + " ")
+    return render.break_element("  ", f"{factor} = 0:", width).splitlines() + _words(meaning, width, "    ")
+
+
+def _words(text: str, width: int, first: str) -> list[str]:
+    """Prose wrapped at `width` after the `first` line's start, continuation lines indented four;
+    never a word broken (a combining mark takes no column)."""
+    room = width - render.display_width(first) + len(first)  # textwrap counts characters, the terminal columns
+    return textwrap.wrap(text, room, initial_indent=first, subsequent_indent="    ", break_long_words=False,
+                         break_on_hyphens=False)
 
 
 def joint_label(printer):
