@@ -124,7 +124,7 @@ def _without_control_characters(text: str, json_format: bool) -> str:
     >>> _without_control_characters("arm\\x1b[31m\\n", False), _without_control_characters('"a\\x7f"', True)
     ('arm\\\\x1b[31m\\n', '"a\\\\u007f"')
     """
-    if text.isprintable():
+    if text.replace("\n", "").replace("\t", "").isprintable():
         return text
     return "".join(ch if ch.isprintable() or ch in "\n\t" else
                    json.dumps(ch)[1:-1] if json_format else ascii(ch)[1:-1] for ch in text)
