@@ -49,6 +49,7 @@ SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_t
               "test_check_and_too_large_advice_use_the_printed_numbers",
               # dhsym started as a real process (the rest of these files runs in process)
               "test_demo_output", "test_same_output_under_any_hash_seed", "test_a_full_disk_is_an_error_not_a_bug",
+              "test_a_signal_during_an_output_write_leaves_no_temporary_file",
               "test_a_closed_standard_output_or_pipe_is_not_a_bug",
               "test_the_textbook_forms_print_unchanged_at_the_default_width",
               "test_an_ascii_terminal_gets_advice_not_a_traceback",
