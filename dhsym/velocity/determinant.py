@@ -44,11 +44,12 @@ MIDDLE_FRAMES = (4, 3, 5, 2, 1)  # frames by their distance from the middle of a
 
 
 class TooManyTerms(Exception):
-    """A determinant that would expand to more than FACTOR_MAX_TERMS terms."""
+    """A determinant that would expand to more than FACTOR_MAX_TERMS terms; of several matrices,
+    `position` is that of the one whose count is least."""
 
-    def __init__(self, terms: int):
+    def __init__(self, terms: int, position: int = 0):
         super().__init__(terms)
-        self.terms = terms
+        self.terms, self.position = terms, position
 
 
 @dataclass(frozen=True)
@@ -116,21 +117,20 @@ def _block(candidates, moving, rows, robot) -> Determinant:
     what = "the rows that move" if rows == moving else "the velocity of the point" if rows[0] < 3 else "the axes"
     note = f"J is 6×{n}; the determinant is that of its {n}×{n} block of {block} ({what})."
     squares = [candidate.extract(rows, list(range(n))) for candidate in candidates]
-    result = _result(robot, fewest_terms(squares)[0], block, note)
+    result = _result(robot, fewest_terms(squares), block, note)
     if _same_sign(result.value, squares[0]):
         return result
     return _result(robot, -result.value, block, note)
 
 
-def fewest_terms(matrices) -> tuple[sympy.Expr, int]:
-    """(the determinant multiplied out, the position of its matrix) of the matrix, among several
-    whose determinants are equal up to sign, whose determinant has the fewest terms (the first on
-    a tie). Raises TooManyTerms, before any work, when each could have more than FACTOR_MAX_TERMS."""
+def fewest_terms(matrices) -> sympy.Expr:
+    """Of several matrices whose determinants are equal up to sign, the determinant multiplied out
+    that has the fewest terms (the first on a tie). Raises TooManyTerms, before any work, when each
+    could have more than FACTOR_MAX_TERMS."""
     bounds = [leibniz_terms(matrix) for matrix in matrices]
     if min(bounds) > FACTOR_MAX_TERMS:
-        raise TooManyTerms(min(bounds))
-    dets = [(_multiplied_out(m), k) for k, (m, bound) in enumerate(zip(matrices, bounds)) if bound <= FACTOR_MAX_TERMS]
-    return min(dets, key=lambda det: term_count(det[0]))
+        raise TooManyTerms(min(bounds), bounds.index(min(bounds)))
+    return min((_multiplied_out(m) for m, bound in zip(matrices, bounds) if bound <= FACTOR_MAX_TERMS), key=term_count)
 
 
 def _multiplied_out(matrix) -> sympy.Expr:
@@ -170,9 +170,9 @@ def _full(chain, robot) -> Determinant:
     places = [(c, min(MIDDLE_FRAMES, key=lambda f: jacobian_size(c, f, c.last_frame))) for c in chains]
     matrices = [jacobian(c, frame) for c, frame in places]
     try:
-        det, _ = fewest_terms(matrices)
+        det = fewest_terms(matrices)
     except TooManyTerms as error:
-        c, frame = places[[leibniz_terms(m) for m in matrices].index(error.terms)]
+        c, frame = places[error.position]
         where = f"frame {robot.frame_number(frame)}" + (f" of the {c.convention} convention" if c is other else "")
         return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
                            f"determinant would expand to {rough_count(error.terms)} terms even in {where}, where "
