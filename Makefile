@@ -20,6 +20,7 @@ $(RUNTIME): pyproject.toml requirements.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(PIP) -r requirements.txt
 	$(PIP) --no-deps -e .
+	$(BIN)/python -m compileall -q dhsym  # bytecode even where PYTHONDONTWRITEBYTECODE keeps Python from writing it
 	touch $(RUNTIME)
 
 $(DEV): $(RUNTIME) requirements-dev.txt

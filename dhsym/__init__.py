@@ -124,7 +124,7 @@ def check(a, b):
         from .geometry.compare import compare
         from .io.library import load
 
-        reference = load(os.fspath(b)) if isinstance(b, (str, os.PathLike)) else b
+        reference = load(b) if isinstance(b, (str, os.PathLike)) else b
         return compare(_robot_of(a), _robot_of(reference))
     from .checking.verify import check as equal
 

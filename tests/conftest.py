@@ -36,6 +36,8 @@ SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_t
               "test_a_factored_determinant_keeps_the_decimals_as_written",
               "test_the_ur5_determinant_does_not_depend_on_the_machine",
               "test_whether_a_determinant_is_factored_is_decided_by_counting_terms",
+              "test_an_offset_wrist_arm_has_the_same_determinant_in_both_conventions",
+              "test_the_determinant_of_a_general_three_link_arm_is_its_linear_block",
               "test_puma_json_and_module_reach_random_poses_with_all_eight_branches",
               "test_documents_with_the_derivation_compile_and_fit", "test_too_many_yaml_values_are_refused",
               "test_every_robot_command_reads_the_robot_file_from_standard_input",
@@ -47,6 +49,7 @@ SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_t
               "test_check_and_too_large_advice_use_the_printed_numbers",
               # dhsym started as a real process (the rest of these files runs in process)
               "test_demo_output", "test_same_output_under_any_hash_seed", "test_a_full_disk_is_an_error_not_a_bug",
+              "test_a_signal_during_an_output_write_leaves_no_temporary_file",
               "test_a_closed_standard_output_or_pipe_is_not_a_bug",
               "test_the_textbook_forms_print_unchanged_at_the_default_width",
               "test_an_ascii_terminal_gets_advice_not_a_traceback",

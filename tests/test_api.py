@@ -5,6 +5,7 @@ import argparse
 import importlib
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -125,3 +126,43 @@ def test_a_name_longer_than_a_file_name_may_be_is_a_user_error():
         with pytest.raises(UserError) as raised:
             dhsym.load(name)
         assert "\n" not in str(raised.value) and len(str(raised.value)) < 5000
+
+
+IMPORTED = str(Path(__file__).parent / "data" / "imported" / "long_decimals.yaml")
+
+
+@pytest.mark.parametrize("name", ["puma560", "spherical_wrist", "ur5", "finger_rrr", IMPORTED])
+def test_a_robot_and_its_chain_survive_pickle_and_deepcopy_with_their_kinematics(name):
+    """A notebook's robot can be pickled (multiprocessing, a saved session) or deep-copied: the copy has
+    the same kinematics, frame numbers, sample values and written numbers, and prints the same."""
+    import copy
+    import pickle
+
+    from dhsym.printing.render import text_matrix, text_printer
+
+    robot = dhsym.load(name)
+    robot.fk()  # what it worked out stays behind: the copy works it out again
+    for twin in (pickle.loads(pickle.dumps(robot)), copy.deepcopy(robot)):
+        assert twin.fk() == robot.fk() and twin.fk(raw=True) == robot.fk(raw=True)
+        assert (twin.name, twin.frames, twin.warnings, twin.numbers) == (robot.name, robot.frames, robot.warnings,
+                                                                         robot.numbers)
+        assert dict(twin.sample) == dict(robot.sample) and twin.joint_variables == robot.joint_variables
+        assert text_matrix(twin.fk(), text_printer(twin)) == text_matrix(robot.fk(), text_printer(robot))
+    for chain in (pickle.loads(pickle.dumps(robot.chain)), copy.deepcopy(robot.chain)):
+        assert chain.fk() == robot.chain.fk() and chain.rows == robot.chain.rows
+
+
+def test_load_takes_a_path_as_a_str_or_any_path_like():
+    file = Path(dhsym.__file__).parent / "robots" / "planar2r.yaml"
+
+    class PathLike:
+        def __fspath__(self):
+            return str(file)
+
+    assert dhsym.load(file).fk() == dhsym.load(str(file)).fk() == dhsym.load(PathLike()).fk() == \
+        dhsym.load("planar2r").fk()
+    assert dhsym.load(file).file == str(file)
+    with pytest.raises(dhsym.UserError, match="planar2r: cannot read file: No such file or directory"):
+        dhsym.load(Path("planar2r"))  # a path is a path, never a built-in name
+    with pytest.raises(TypeError, match="by its built-in name or its file's path .str or os.PathLike., not int"):
+        dhsym.load(3)

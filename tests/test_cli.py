@@ -7,8 +7,11 @@ terminal and no $COLUMNS, a full disk, a closed or abandoned standard output."""
 import json
 import os
 import re
+import signal
 import stat
 import subprocess
+import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -308,6 +311,35 @@ def test_a_closed_standard_output_or_pipe_is_not_a_bug():
     assert reader.wait(timeout=60) == 141
     assert reader.stderr.read() == ("dhsym: error: standard output was closed by its reader before all of the output "
                                     "was written (a pipe into head?); the output is incomplete\n").encode()
+
+
+# dhsym's own entry point, with the write's fsync held up: the signal comes while the temporary file exists
+PAUSED_WRITE = ("import os, sys, time; sync = os.fsync; os.fsync = lambda fd: (time.sleep(120), sync(fd)); "
+                "sys.argv = ['dhsym', 'convert', 'planar2r', '--to', 'modified', '-o', 'out.yaml']; "
+                "from dhsym.cli.__main__ import run; run()")
+
+
+@pytest.mark.parametrize("signal_name, old", [("SIGTERM", None), ("SIGHUP", "old contents\n"), ("SIGINT", None)])
+def test_a_signal_during_an_output_write_leaves_no_temporary_file(tmp_path, signal_name, old):
+    """Stopped by SIGTERM or SIGHUP (kill, a closed terminal) as by Ctrl-C: the old file or none,
+    no .out.yaml.XXXX.tmp beside it, one line and the status a shell gives a tool stopped so."""
+    if old is not None:
+        (tmp_path / "out.yaml").write_text(old)
+    process = subprocess.Popen([sys.executable, "-c", PAUSED_WRITE], cwd=tmp_path, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    for _ in range(1200):  # until the temporary file exists (at most a minute)
+        if any(path.name.endswith(".tmp") for path in tmp_path.iterdir()) or process.poll() is not None:
+            break
+        time.sleep(0.05)
+    number = getattr(signal, signal_name)
+    process.send_signal(number)
+    stdout, stderr = process.communicate(timeout=60)
+    expected = (130, "dhsym: interrupted\n") if signal_name == "SIGINT" else (128 + number,
+                                                                               f"dhsym: stopped by {signal_name}\n")
+    assert (process.returncode, stderr) == expected
+    assert [path.name for path in tmp_path.iterdir()] == ([] if old is None else ["out.yaml"])
+    if old is not None:
+        assert (tmp_path / "out.yaml").read_text() == old
 
 
 def test_an_unwritable_output_path_is_one_error_line(tmp_path):

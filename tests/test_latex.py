@@ -478,3 +478,21 @@ def test_cli_from_to_and_inverse():
     assert "% Result: ${}^{3}T_{6}$" in forward and "{}^{0}T_{1}" not in forward.split("% Link")[1]
     backward = run_dhsym("latex", "puma560", "--document", "snippet", "--from", "6", "--to", "3").ok()
     assert "{}^{6}T_{5} =" in backward and "% Result: ${}^{6}T_{3}$" in backward
+
+
+@pytest.mark.parametrize("name", ["puma560", "stanford", "iiwa7", "ur5"])
+def test_widths_up_to_each_break_point_in_one_pass_are_those_measured_alone(name):
+    """How a long element is broken depends on the width of each line up to each break point;
+    measuring them in one pass gives exactly what measuring each prefix alone gives."""
+    from dhsym.printing.render import latex_printer
+
+    robot = load(name)
+    printer = latex_printer(robot)
+    for element in robot.fk():
+        tex = printer.doprint(element)
+        for prefix in ("", "{}"):
+            text = prefix + tex
+            ends = [i + len(prefix) for i, _ in texlayout.break_points(tex)] + [len(text)]
+            for displayed in (False, True):
+                assert texwidth.prefix_widths(text, ends, displayed) == \
+                    [texwidth.math_width(text[:end], displayed) for end in ends], (name, tex)

@@ -99,7 +99,7 @@ def test_settings_by_keyword_or_as_a_dict_like_sympy():
 
 
 def test_greek_letters_come_from_sympys_own_tables():
-    from dhsym.printing.notation import display_name
+    from dhsym.printing.names import display_name
     assert [display_name(n, "latex") for n in ("theta_1", "lamda", "Chi_2", "phi_i")] == [
         "\\theta_{1}", "\\lambda", "\\mathrm{X}_{2}", "\\phi_{i}"]
     assert [display_name(n, "unicode") for n in ("theta_1", "psi_12", "θ₁".replace("₁", "_1"))] == ["θ1", "ψ12", "θ1"]

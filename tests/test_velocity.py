@@ -173,8 +173,8 @@ def test_a_general_six_link_determinant_is_refused_from_its_count_of_terms():
     result = determinant(chain)
     assert result.value is None and result.factors == []
     assert result.note == ("the axes of joints 4–6 do not meet in a point, and the full 6×6 determinant would expand "
-                           "to about 346.0 billion terms even in frame 3, where J is shortest; that is more than the "
-                           "50,000 that dhsym factors: not computed.")
+                           "to about 9.8 million terms even in frame 4 of the modified convention, where J is "
+                           "shortest; that is more than the 50,000 that dhsym factors: not computed.")
 
 
 def test_axes_that_line_up_and_axes_that_are_only_parallel_are_told_apart():

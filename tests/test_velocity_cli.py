@@ -1,6 +1,7 @@
 """`dhsym jacobian` and `dhsym latex --jacobian`: what a user sees, JSON that reads back,
 errors in one line, and documents that compile without overfull boxes."""
 import json
+import random
 import shutil
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
@@ -13,7 +14,7 @@ from dhsym import Chain, DHRow
 from dhsym.checking.verify import check, numeric_error
 from dhsym.io.library import load
 from dhsym.latex.document import document
-from dhsym.velocity import jacobian
+from dhsym.velocity import determinant, jacobian
 
 OVERFULL_TOLERANCE_PT = 1.0
 
@@ -177,3 +178,55 @@ def test_a_general_six_link_jacobian_in_a_middle_frame_is_built():
         z, p = axis[:3, 2], axis[:3, 3]
         columns.append(list(z.cross(origin - p)) + list(z))
     assert numeric_error(jacobian(general, frame), sympy.Matrix(columns).T, trials=3) < 1e-9
+
+
+OFFSET_WRIST = """name: offset-wrist cobot (the Yaskawa HC10's dimensions)
+convention: standard
+joints:
+  - {joint: R, theta: q_1, d: 0.275, a: 0, alpha: -pi/2}
+  - {joint: R, theta: q_2 - pi/2, d: 0, a: 0.7, alpha: pi}
+  - {joint: R, theta: q_3 + pi/2, d: 0, a: 0, alpha: pi/2}
+  - {joint: R, theta: q_4, d: -0.5, a: 0, alpha: -pi/2}
+  - {joint: R, theta: q_5, d: -0.162, a: 0, alpha: pi/2}
+  - {joint: R, theta: q_6, d: -0.13, a: 0, alpha: pi}
+"""
+
+
+def test_an_offset_wrist_arm_has_the_same_determinant_in_both_conventions(tmp_path):
+    """det J does not depend on the convention: the modified table of the same arm (whose own
+    frames would write it out to 114,593 terms the Berkowitz way) prints the same factors."""
+    standard = tmp_path / "cobot.yaml"
+    standard.write_text(OFFSET_WRIST)
+    modified = tmp_path / "cobot_modified.yaml"
+    assert run("convert", standard, "--to", "modified", "-o", modified).status == 0
+    outputs = [run("jacobian", path) for path in (standard, modified)]
+    assert [result.status for result in outputs] == [0, 0]
+    determinants = [result.stdout.split("det J = ")[1].split("\nwhere")[0] for result in outputs]
+    assert determinants[0] == determinants[1] and "not computed" not in determinants[0]
+    assert determinants[0].startswith("−0.35(0.2268 s2 c3 s4 s5 + 0.2268 s2 s3 c4 s4 c5 − 0.7 s2 s3 s5")
+    for path in (standard, modified):
+        arm = load(str(path))
+        assert det_error(determinant(arm).value, jacobian(arm)) < 1e-9
+
+
+def det_error(value, matrix, trials: int = 4) -> float:
+    """The largest difference between `value` and the determinant of `matrix` at random joint values."""
+    rng, worst = random.Random(7), 0.0
+    for _ in range(trials):
+        point = {s: sympy.Float(rng.uniform(-3, 3)) for s in value.free_symbols | matrix.free_symbols}
+        worst = max(worst, abs(float(value.xreplace(point)) - float(matrix.xreplace(point).det())))
+    return worst
+
+
+def test_the_determinant_of_a_general_three_link_arm_is_its_linear_block(tmp_path):
+    """Every DH parameter a symbol: the 3×3 determinant of the point's velocity, multiplied out
+    where it has fewest terms (frame 2: 26, where frame 0 has 212)."""
+    rows = "".join(f"  - {{joint: R, theta: theta_{i}, d: d_{i}, a: a_{i}, alpha: alpha_{i}}}\n" for i in range(1, 4))
+    path = tmp_path / "general3.yaml"
+    path.write_text(f"convention: standard\njoints:\n{rows}")
+    arm = load(str(path))
+    result = determinant(arm)
+    assert result.block == "rows vx, vy, vz"
+    assert det_error(result.value, jacobian(arm)[:3, :]) < 1e-9
+    printed = run("jacobian", path)
+    assert printed.status == 0 and "det J[rows vx, vy, vz] = −a3(" in printed.stdout

@@ -14,7 +14,8 @@ Exit status: 0, with warnings (if any) on stderr; 2 after one `dhsym: error:` li
 the input or the command line, or output that cannot be written: a full disk, a closed standard
 output, an unwritable file); 141, the status of a tool stopped by a closed pipe, after one
 `dhsym: error:` line when the reader of a pipe leaves before the output is written (`| head -0`);
-130 on Ctrl-C; 70 for a bug in dhsym itself.
+130 on Ctrl-C, and 143 or 129 on SIGTERM or SIGHUP to the `dhsym` process, as a shell reports a tool
+stopped by them (a file being written with -o is removed first, as on Ctrl-C); 70 for a bug in dhsym itself.
 
 Whether a result is worked out is decided from estimates made before the work (dhsym.core.estimate,
 cli.limits), so the answer is the same on any machine. `--timeout` is only a safety net, far above
@@ -24,6 +25,7 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 import sys
 from importlib import import_module
 
@@ -44,6 +46,29 @@ EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70
 EXIT_BROKEN_PIPE = 141  # what a shell reports for a tool stopped by SIGPIPE
 ISSUE_URL = "the dhsym issue tracker"
+STOP_SIGNALS = {name: getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name)}
+
+
+class Stopped(BaseException):
+    """SIGTERM or SIGHUP, raised where the process is (a BaseException, as KeyboardInterrupt is, so
+    that what is being written is removed on the way out: io.output.write_atomic)."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
+def stop_cleanly_on_signals() -> None:
+    """Turn SIGTERM and SIGHUP into Stopped, for the `dhsym` process (cli/__main__.py) only: the
+    default action ends the process at once and leaves a half-written -o file's temporary beside it."""
+    for number in STOP_SIGNALS.values():
+        signal.signal(number, _stop)
+
+
+def _stop(signum, frame):
+    for number in STOP_SIGNALS.values():  # a second signal must not cut the clean-up short
+        signal.signal(number, signal.SIG_IGN)
+    raise Stopped(signum)
 
 
 def build_parser(argv=None) -> Parser:
@@ -99,6 +124,13 @@ def main(argv=None, read=library.read) -> int:
     except KeyboardInterrupt:
         print("dhsym: interrupted", file=sys.stderr)
         return 130
+    except Stopped as stop:
+        name = signal.Signals(stop.signum).name
+        try:  # after a hangup the terminal may be gone
+            print(f"dhsym: stopped by {name}", file=sys.stderr)
+        except (OSError, ValueError):
+            pass
+        return 128 + stop.signum
     except UnicodeEncodeError as error:
         print(f"dhsym: error: the output cannot be written as {error.encoding}; use --ascii, or set "
               f"PYTHONIOENCODING=utf-8", file=sys.stderr)
@@ -141,7 +173,7 @@ def _without_control_characters(text: str, json_format: bool) -> str:
     >>> _without_control_characters("arm\\x1b[31m\\n", False), _without_control_characters('"a\\x7f"', True)
     ('arm\\\\x1b[31m\\n', '"a\\\\u007f"')
     """
-    if text.isprintable():
+    if text.replace("\n", "").replace("\t", "").isprintable():
         return text
     return "".join(ch if ch.isprintable() or ch in "\n\t" else
                    json.dumps(ch)[1:-1] if json_format else ascii(ch)[1:-1] for ch in text)

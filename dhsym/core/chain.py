@@ -131,6 +131,11 @@ class Chain:
         joints = "".join(row.joint for row in self.rows)
         return f"Chain({self.convention} DH, {self.n} joint{'s' if self.n > 1 else ''}: {joints})"
 
+    def __getstate__(self) -> dict:
+        """Pickled and deep-copied without what it worked out (transforms, a solution), which a copy
+        works out again when asked."""
+        return {**self.__dict__, "_cache": {}}
+
     def _repr_latex_(self) -> str:
         """Jupyter shows a chain as its DH table."""
         from ..printing.render import latex_table  # printing sits above the math; only this display needs it

@@ -81,6 +81,22 @@ class Robot:
         object.__setattr__(self, "warnings", tuple(self.warnings))
         object.__setattr__(self, "numbers", self.numbers or WrittenNumbers())
 
+    def __reduce__(self):
+        """Pickled and deep-copied as the fields it was made from (its sample a plain dict: a
+        read-only view cannot be pickled); what it worked out is worked out again.
+
+        >>> import copy, pickle, sympy
+        >>> from dhsym.core.chain import DHRow
+        >>> l = sympy.Symbol("l", real=True)
+        >>> arm = Robot(Chain([DHRow.revolute(sympy.Symbol("q", real=True), a=l)], "standard"), sample={l: 1})
+        >>> copy.deepcopy(arm).fk() == arm.fk() == pickle.loads(pickle.dumps(arm)).fk()
+        True
+        >>> pickle.loads(pickle.dumps(arm)).sample
+        mappingproxy({l: 1})
+        """
+        fields = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.init}
+        return type(self), tuple({**fields, "sample": dict(self.sample)}.values())
+
     def __repr__(self) -> str:
         joints = "".join(row.joint for row in self.rows)
         numbers = [f for f in self.frames if isinstance(f, int)]

@@ -8,6 +8,7 @@ True
 from __future__ import annotations
 
 import difflib
+import os
 from pathlib import Path
 
 from ..core.robot import Robot
@@ -26,25 +27,32 @@ def builtin_names() -> list[str]:
     return sorted(p.stem for p in ROBOTS_DIR.glob("*.yaml"))
 
 
-def load(name_or_path: str) -> Robot:
-    """A built-in robot by name, or a robot file by path, with the warnings of its reading
-    (`robot.warnings`).
+def load(name_or_path: str | os.PathLike) -> Robot:
+    """A built-in robot by name, or a robot file by path (a str, or a `pathlib.Path` or any
+    os.PathLike, which is always a path), with the warnings of its reading (`robot.warnings`).
 
     >>> load("planar2r")
     Robot('Planar elbow manipulator (2R)', standard DH, 2 joints: RR, frames 0..2)
     >>> load("spherical_wrist").frames
     [3, 4, 5, 6]
+    >>> load(ROBOTS_DIR / "planar2r.yaml").n
+    2
     """
     return read(name_or_path)
 
 
-def read(name_or_path: str) -> Robot:
+def read(name_or_path: str | os.PathLike) -> Robot:
     """What `load` does (the command line's name for it).
 
     >>> read("puma")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     dhsym.errors.UserError: unknown robot 'puma'; built-in robots are: ..., ur5; did you mean 'puma560'?
     """
+    if isinstance(name_or_path, os.PathLike):
+        return load_robot_file(Path(os.fsdecode(name_or_path)))
+    if not isinstance(name_or_path, str):
+        raise TypeError(f"a robot is loaded by its built-in name or its file's path (str or os.PathLike), "
+                        f"not {type(name_or_path).__name__}")
     names = builtin_names()
     if name_or_path in names:
         return load_robot_file(ROBOTS_DIR / f"{name_or_path}.yaml")

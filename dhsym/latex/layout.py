@@ -33,7 +33,7 @@ import textwrap
 from dataclasses import dataclass
 
 from ..printing.render import ELEMENT_NAMES, bmatrix
-from .width import math_width
+from .width import math_width, prefix_widths
 
 # ---------------------------------------------------------------- pages and measured heights
 
@@ -283,14 +283,16 @@ def break_lines(tex: str, first: float, rest: float, display: bool = False) -> l
     >>> break_lines("\\frac{a + b + c}{2}", 3, 3, display=True)
     ['\\frac{1}{2}(a', '+ b', '+ c)']
     """
-    def width_of(piece: str) -> float:
-        return math_width(piece, display=display)
-
     points, lines, start, width = break_points(tex), [], 0, first
-    while width_of(("{}" if lines else "") + tex[start:]) > width:
+    while True:
         prefix = "{}" if lines else ""
-        later = [(i, depth) for i, depth in points if i > start]
-        fitting = [(i, depth) for i, depth in later if width_of(prefix + tex[start:i]) <= width]
+        remaining, later = prefix + tex[start:], [(i, depth) for i, depth in points if i > start]
+        shift = len(prefix) - start  # the rest of the text, and up to each later point, measured in one pass
+        *widths, whole = prefix_widths(remaining, [i + shift for i, _ in later] + [len(remaining)], display)
+        if whole <= width:
+            break
+        upto = dict(zip((i for i, _ in later), widths))
+        fitting = [(i, depth) for i, depth in later if upto[i] <= width]
         if not fitting:  # the first term alone is too wide: open a fraction or root inside it
             opened = open_group(tex, start, later[0][0] if later else len(tex))
             if opened:
@@ -301,7 +303,7 @@ def break_lines(tex: str, first: float, rest: float, display: bool = False) -> l
         fitting = fitting or later[:1]
         outermost = min(depth for _, depth in fitting)
         cut = max(i for i, depth in fitting if depth == outermost)
-        if width_of(prefix + tex[start:cut]) < width / 2:  # too short a line: fill it instead
+        if upto[cut] < width / 2:  # too short a line: fill it instead
             cut = max(i for i, _ in fitting)
         lines.append(tex[start:cut])
         start, width = cut + 1, rest

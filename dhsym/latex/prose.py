@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from ..printing.notation import GREEK_NAMES, display_name, greek_latex
+from ..printing.names import GREEK_NAMES, display_name, greek_latex
 
 _SIDE = r"(?:\{(\w{1,8})\}|(\d{1,2}))"
 _TRANSFORM = re.compile(r"(?<![\w{}])" + _SIDE + r"T_?(?:\{(\w{1,8})\}|([A-Za-z]\w{0,7}|\d{1,2}))(?![\w{])")

@@ -36,16 +36,37 @@ def math_width(tex: str, display: bool = False) -> float:
     return _Measure(tex).group(1.0, display)
 
 
-class _Measure:
-    """A small reader of the LaTeX the printers write: glyphs, scripts, \\frac, \\sqrt, spaces."""
+def prefix_widths(tex: str, ends: list[int], display: bool = False) -> list[float]:
+    """`[math_width(tex[:end]) for end in ends]` in one pass over `tex`, for ends in increasing
+    order outside any {…} group (where a long element may break: a line's width is the width of
+    the text up to there). An end that the reader steps over (inside a command) is measured alone.
 
-    def __init__(self, tex: str):
+    >>> prefix_widths("a + b + c", [1, 5]) == [math_width("a"), math_width("a + b")]
+    True
+    """
+    measure = _Measure(tex, ends)
+    measure.group(1.0, display)
+    return [measure.at[end] if end in measure.at else math_width(tex[:end], display) for end in ends]
+
+
+class _Measure:
+    """A small reader of the LaTeX the printers write: glyphs, scripts, \\frac, \\sqrt, spaces;
+    `ends`: positions outside any group where the width so far is noted in `at`."""
+
+    def __init__(self, tex: str, ends=()):
         self.tex, self.i = tex, 0
+        self.ends, self.at, self.depth = list(ends), {}, 0
 
     def group(self, scale: float, display: bool) -> float:
         """Width up to the closing brace of the current group, or the end."""
         total, operand, script = 0.0, False, None
+        self.depth += 1
         while self.i < len(self.tex):
+            if self.depth == 1 and self.ends and self.ends[0] <= self.i:
+                if self.ends[0] == self.i:
+                    self.at[self.i] = total
+                self.ends.pop(0)
+                continue
             ch = self.tex[self.i]
             self.i += 1
             if ch == "}":
@@ -70,6 +91,9 @@ class _Measure:
                 total, operand = total + .445 * scale, False
             else:
                 total, operand = total + _glyph(ch) * scale, ch not in "(["
+        self.depth -= 1
+        if self.depth == 0 and self.ends and self.ends[0] == self.i:  # an end at the very end
+            self.at[self.i] = total
         return total
 
     def argument(self, scale: float) -> float:

@@ -28,7 +28,8 @@ from ..inverse.written import Written
 from . import render
 from .ik_lines import assignments_text
 from .ik_sentences import solution_names, text_sentence, wrap_sentence
-from .notation import GREEK_NAMES, Abbreviation, display_name
+from .names import GREEK_NAMES, display_name
+from .notation import Abbreviation
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
 TARGET_LATEX = {name: (f"{name[0]}_{{{name[1:]}}}") for name in TARGET_NAMES}  # r_{11}, p_{x}

@@ -24,7 +24,7 @@ import sympy
 from sympy.printing.conventions import split_super_sub
 
 from . import render
-from .notation import display_name, subscript, superscript
+from .names import display_name, subscript, superscript
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
 

@@ -27,8 +27,6 @@ gives each angle its written offset back before printing (an exact identity).
 >>> mixed = Notation(sympy.symbols("theta_1 phi_2", real=True))
 >>> mixed.abbreviation(sympy.sin(sum(mixed.label)))[1].label("latex")
 's_{\\\\theta 1,\\\\phi 2}'
->>> display_name("theta_1", "unicode"), display_name("theta_1", "latex"), display_name("l_13", "ascii")
-('θ1', '\\\\theta_{1}', 'l13')
 >>> offset = Notation(t[:2], {t[1]: -sympy.pi / 4})
 >>> offset.as_written(sympy.sin(t[0] + t[1] + sympy.pi / 4))
 cos(theta_1 + theta_2 - pi/4)
@@ -40,10 +38,10 @@ from dataclasses import dataclass, field
 
 import sympy
 from sympy.printing.conventions import split_super_sub
-from sympy.printing.latex import translate
-from sympy.printing.pretty.pretty_symbology import greek_unicode, sub, sup
+from sympy.printing.pretty.pretty_symbology import greek_unicode
 
-GREEK_NAMES = {letter: name for name, letter in greek_unicode.items()}  # 'θ' -> 'theta'
+from .names import GREEK_NAMES, display_name, greek_latex, is_word_name
+
 _COMBINING_BAR = "\u0305"
 _MINUS = {"unicode": " − ", "ascii": " - ", "latex": " - "}
 
@@ -89,7 +87,12 @@ class Notation:
         self.offsets = {v: sympy.sympify(o) for v, o in (offsets or {}).items() if o != 0}
         self.write = write or sympy.sstr
         self.write_sympy = write_sympy or sympy.sstr
-        self._found: dict = {}  # abbreviation() of each cos/sin seen: term ordering asks again and again
+        # what the printers ask again and again of the same sub-expressions (a large result shares most
+        # of them: a general 8-link ⁰T₈ holds 131 distinct sums, 7,746 times): each is worked out once
+        self._found: dict = {}  # abbreviation() of each cos/sin seen
+        self._term_keys: dict = {}  # term_key() of each term
+        self._bracket_keys: dict = {}  # the key a sum in a product sorts by (see _atom_keys)
+        self._written: dict = {}  # as_written() of each sub-expression
         labels = [_subscript(s.name) for s in joint_variables]
         if any(is_word_name(s.name) for s in joint_variables):
             labels = _suffix_labels([s.name for s in joint_variables])
@@ -150,26 +153,42 @@ class Notation:
 
         SymPy evaluates cos(θ1 + θ2 − π/4) to sin(θ1 + θ2 + π/4); the two differ by a multiple
         of π/2, so the angle as written comes back exactly: sin(x + π/2) = cos x, and so on.
+        Each distinct sub-expression is visited once, however often it occurs.
         """
         if not self.offsets or not isinstance(expr, sympy.Basic):
             return expr
-        changes = {}
-        for trig in expr.atoms(sympy.cos, sympy.sin):
-            split = self._split_angle(trig.args[0])
-            if split is None or not split[0]:
-                continue
-            terms, constant = split
-            offset = self._offset_of(terms)
-            quarter_turns = (constant - offset) / (sympy.pi / 2)
-            if constant == offset or not quarter_turns.is_Integer:
-                continue
-            angle = trig.args[0] - constant + offset
-            turns = int(quarter_turns) % 4  # f(angle + turns·π/2) in terms of cos/sin(angle)
-            cosine = isinstance(trig, sympy.cos)
-            function = sympy.cos if (turns % 2 == 0) == cosine else sympy.sin
-            negative = turns in (1, 2) if cosine else turns in (2, 3)
-            changes[trig] = (-1 if negative else 1) * function(angle, evaluate=False)
-        return expr.xreplace(changes) if changes else expr
+        return self._rewritten(expr)
+
+    def _rewritten(self, expr):
+        """`as_written` of a sub-expression: a cos/sin with its written angle, else its arguments'."""
+        if expr.is_Atom:
+            return expr
+        found = self._written.get(expr)
+        if found is None:
+            found = self._written_trig(expr) if isinstance(expr, (sympy.cos, sympy.sin)) else None
+            if found is None:
+                args = tuple(self._rewritten(arg) for arg in expr.args)
+                found = expr.func(*args) if args != expr.args else expr
+            self._written[expr] = found
+        return found
+
+    def _written_trig(self, trig):
+        """cos/sin of a signed sum of joint angles with their offsets as written, or None when it
+        already is (or is no such sum)."""
+        split = self._split_angle(trig.args[0])
+        if split is None or not split[0]:
+            return None
+        terms, constant = split
+        offset = self._offset_of(terms)
+        quarter_turns = (constant - offset) / (sympy.pi / 2)
+        if constant == offset or not quarter_turns.is_Integer:
+            return None
+        angle = trig.args[0] - constant + offset
+        turns = int(quarter_turns) % 4  # f(angle + turns·π/2) in terms of cos/sin(angle)
+        cosine = isinstance(trig, sympy.cos)
+        function = sympy.cos if (turns % 2 == 0) == cosine else sympy.sin
+        negative = turns in (1, 2) if cosine else turns in (2, 3)
+        return (-1 if negative else 1) * function(angle, evaluate=False)
 
     def name_of(self, label) -> str:
         """The symbol name of the joint with this label, as the robot file spells it."""
@@ -216,9 +235,11 @@ class Notation:
 
     def term_key(self, term: sympy.Expr) -> tuple:
         """Order terms by joint: constants first, then by the lowest joint they involve."""
-        keys = sorted(self._atom_keys(term))
-        unsigned = -term if term.could_extract_minus_sign() else term
-        return (tuple(keys), sympy.default_sort_key(unsigned))
+        key = self._term_keys.get(term)
+        if key is None:
+            unsigned = -term if term.could_extract_minus_sign() else term
+            key = self._term_keys[term] = (tuple(sorted(self._atom_keys(term))), sympy.default_sort_key(unsigned))
+        return key
 
     def angle_key(self, term: sympy.Expr) -> tuple:
         """Order the terms of an angle (or of a table cell) as people write them: joint variables
@@ -236,10 +257,16 @@ class Notation:
             elif base in self.position:
                 yield (self.position[base], 0, (), False)
             elif base.is_Add:
-                inner = [min(self._atom_keys(t), default=None) for t in base.args]
-                inner = [k for k in inner if k is not None]
-                if inner:
-                    yield tuple(min(inner)[:1]) + (99, (), True)
+                key = self._bracket_key(base)
+                if key:
+                    yield key
+
+    def _bracket_key(self, total: sympy.Expr):
+        """A bracket sorts by the earliest joint inside it, after that joint's cos/sin (or None)."""
+        if total not in self._bracket_keys:
+            inner = [k for k in (min(self._atom_keys(t), default=None) for t in total.args) if k is not None]
+            self._bracket_keys[total] = tuple(min(inner)[:1]) + (99, (), True) if inner else None
+        return self._bracket_keys[total]
 
     def factor_key(self, factor: sympy.Expr) -> tuple:
         """Within a product: lengths, then joint cos/sin in joint order, then other functions
@@ -275,19 +302,6 @@ def written_offsets(rows) -> dict:
         if kept:
             offsets[row.variable] = sympy.Add(*kept)
     return offsets
-
-
-def is_word_name(name: str) -> bool:
-    """Whether a name is a word with underscores, such as a URDF joint's `right_s0` or
-    `shoulder_pan_joint`, rather than a letter with indices (`theta_1`, `l_23`): it prints as
-    written (LaTeX `\\mathrm{right\\_s0}`), since `rights0` would be no one's name.
-
-    >>> is_word_name("right_s0"), is_word_name("theta_1"), is_word_name("elbow_1"), is_word_name("ab_c")
-    (True, False, False, False)
-    """
-    base, supers, subs = split_super_sub(name)
-    numbered = not supers and len(subs) == 1 and subs[0].isdigit()  # elbow_1 stays elbow₁-like: elbow1
-    return "_" in name and len(base) > 2 and base not in greek_unicode and base not in GREEK_NAMES and not numbered
 
 
 def _suffix_labels(names: list) -> list:
@@ -338,54 +352,3 @@ def _index_text(label, sign: int, style: str) -> str:
     if style == "latex":  # a bar over a whole lettered label: \overline{\phi 2}
         return f"\\bar{{{text}}}" if text.isalnum() else f"\\overline{{{text}}}"
     return _COMBINING_BAR.join(text) + _COMBINING_BAR if style == "unicode" else f"-{text}"
-
-
-def display_name(name: str, style: str) -> str:
-    """A symbol name as a textbook writes it: theta_1 -> θ1 (unicode), \\theta_{1} (LaTeX)."""
-    if is_word_name(name):
-        return "\\mathrm{" + name.replace("_", "\\_") + "}" if style == "latex" else name
-    base, supers, subs = split_super_sub(name)
-    subs = [s.strip("{}") for s in subs]
-    supers = [s.strip("{}") for s in supers]
-    if style == "latex":
-        base = _latex_base(base)
-        text = base + "".join(f"_{{{s}}}" for s in subs[:1])
-        if len(subs) > 1:
-            text = base + "_{" + ",".join(subs) + "}"
-        return text + "".join(f"^{{{s}}}" for s in supers)
-    if style == "unicode":
-        base = greek_unicode.get(base, base)
-    else:
-        base = GREEK_NAMES.get(base, base)
-    return base + "".join(subs) + "".join("^" + s for s in supers)
-
-
-def greek_latex(name: str) -> str | None:
-    """The TeX for a Greek letter's name (SymPy's own translation), or None if it is no Greek letter.
-
-    >>> greek_latex("theta"), greek_latex("lamda"), greek_latex("Alpha"), greek_latex("l")
-    ('\\\\theta', '\\\\lambda', '\\\\mathrm{A}', None)
-    """
-    return translate(name) if name in greek_unicode else None
-
-
-def _latex_base(base: str) -> str:
-    name = GREEK_NAMES.get(base, base)
-    greek = greek_latex(name)
-    if greek:
-        return greek
-    return f"\\mathrm{{{name}}}" if len(name) > 1 else name
-
-
-def superscript(text: str) -> str:
-    """Digits and minus signs raised, as in ⁰T₆; SymPy's own table of Unicode superscripts.
-
-    >>> superscript("-12") + subscript("3")
-    '⁻¹²₃'
-    """
-    return "".join(sup.get(ch, ch) for ch in text)
-
-
-def subscript(text: str) -> str:
-    """Digits and minus signs lowered (₀₁₂…)."""
-    return "".join(sub.get(ch, ch) for ch in text)

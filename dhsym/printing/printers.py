@@ -53,7 +53,8 @@ from sympy.printing.str import StrPrinter
 
 from ..core.numbers import WrittenNumbers
 from ..core.robot import as_robot
-from .notation import Notation, display_name, superscript, written_offsets
+from .names import display_name, superscript
+from .notation import Notation, written_offsets
 
 _BRACKETS = {"text": [("(", ")"), ("[", "]"), ("{", "}")],
              "latex": [("(", ")"), ("[", "]"), ("\\{", "\\}")]}
@@ -95,10 +96,25 @@ class _TextbookMixin:
         self.marked = set(settings["marked"])  # symbols printed with a star: the joint variables in a DH table
         self.used: set = set()
         self._angle = 0  # > 0 while printing the angle of a cos or sin: joint variables come first
+        self._texts: dict = {}  # each sub-expression's text: see _print
+        self._depths: dict = {}  # each bracket's nesting: see _factor
 
     def doprint(self, expr):
         """Print `expr`, first giving back each joint angle the offset its row wrote (see Notation.as_written)."""
         return super().doprint(self.notation.as_written(expr))
+
+    def _print(self, expr, **kwargs):
+        """Each distinct sub-expression printed once (a large result repeats most of its own: a
+        general 8-link ⁰T₈ holds 131 distinct sums, 7,746 times). What a text depends on besides
+        the expression is in the key: inside an angle or not, the rule for numbers; the
+        abbreviations it used were noted the first time."""
+        if kwargs or not isinstance(expr, sympy.Basic) or expr.is_Atom:
+            return super()._print(expr, **kwargs)
+        key = (expr, self._angle > 0, self.numbers)
+        text = self._texts.get(key)
+        if text is None:
+            text = self._texts[key] = super()._print(expr)
+        return text
 
     @contextmanager
     def numbers_read_back(self):
@@ -199,7 +215,7 @@ class _TextbookMixin:
 
     def _factor(self, factor):
         if factor.is_Add:
-            opening, closing = _BRACKETS[self.family][_nesting(factor) % 3]
+            opening, closing = _BRACKETS[self.family][_nesting(factor, self._depths) % 3]
             return opening + self._print(factor) + closing
         return self._print(factor)
 
@@ -313,9 +329,20 @@ class ExactPrinter(StrPrinter):
         self.numbers = self._settings["numbers"] or WrittenNumbers()
         self.notation = Notation(self._settings["joint_variables"], self._settings["offsets"], write=self._print,
                                  write_sympy=self._print, first_joint=self._settings["first_joint"])
+        self._texts: dict = {}
 
     def doprint(self, expr):
         return super().doprint(self.notation.as_written(expr))
+
+    def _print(self, expr, **kwargs):
+        """Each distinct sub-expression printed once, as the textbook printers do."""
+        if kwargs or not isinstance(expr, sympy.Basic) or expr.is_Atom:
+            return super()._print(expr, **kwargs)
+        key = (expr, self.numbers)
+        text = self._texts.get(key)
+        if text is None:
+            text = self._texts[key] = super()._print(expr)
+        return text
 
     def _print_Rational(self, expr):
         return self.numbers.decimal(expr, alone=True) or super()._print_Rational(expr)
@@ -347,11 +374,14 @@ def decimal_factor(coefficient, factors, numbers: WrittenNumbers) -> str | None:
     return numbers.decimal(coefficient)
 
 
-def _nesting(expr) -> int:
-    """How many bracket levels a sum contains inside it (0 for a flat sum)."""
-    deepest = 0
-    for term in sympy.Add.make_args(expr):
-        for factor in sympy.Mul.make_args(term):
-            if factor.is_Add:
-                deepest = max(deepest, 1 + _nesting(factor))
-    return deepest
+def _nesting(expr, depths: dict) -> int:
+    """How many bracket levels a sum contains inside it (0 for a flat sum); `depths` keeps those
+    of the sums met, each worked out once."""
+    if expr not in depths:
+        deepest = 0
+        for term in sympy.Add.make_args(expr):
+            for factor in sympy.Mul.make_args(term):
+                if factor.is_Add:
+                    deepest = max(deepest, 1 + _nesting(factor, depths))
+        depths[expr] = deepest
+    return depths[expr]

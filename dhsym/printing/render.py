@@ -15,13 +15,15 @@ i │ αᵢ₋₁ │ aᵢ₋₁ │ dᵢ │ θᵢ
 """
 from __future__ import annotations
 
+import bisect
+import re
 import textwrap
 import unicodedata
 
 import sympy
 
 from ..core.robot import as_robot
-from .notation import subscript, superscript
+from .names import subscript, superscript
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
 ELEMENT_NAMES = [["r11", "r12", "r13", "px"], ["r21", "r22", "r23", "py"], ["r31", "r32", "r33", "pz"]]
@@ -47,7 +49,14 @@ def convention_note(convention: str, ascii: bool = False) -> str:
 
 def display_width(text: str) -> int:
     """Columns a line takes on a terminal: combining marks (the bar of c124̅) take none."""
-    return sum(not unicodedata.combining(ch) for ch in text)
+    if text.isascii():
+        return len(text)
+    return len(text) - sum(text.count(ch) for ch in _marks(text))
+
+
+def _marks(text: str) -> set:
+    """The combining marks in `text` (each distinct character is looked up once)."""
+    return {ch for ch in set(text) if unicodedata.combining(ch)}
 
 
 def wrap(text: str, width: int, indent: str = "") -> str:
@@ -79,7 +88,7 @@ def break_element(prefix: str, text: str, width: int) -> str:
         lines.append(indent + text[start:chosen[0]])
         start, start_column, depth = chosen[0] + 1, chosen[2] + 1, chosen[1]
         indent = " " * (len(prefix) + 2 + 2 * depth)
-        first = breaks.index(chosen) + 1
+        first = breaks.index(chosen, first) + 1
     return "\n".join(lines + [indent + text[start:]])
 
 
@@ -94,18 +103,23 @@ def _choose(window: list, depth: int, room: int, start_column: int) -> tuple[int
     return max(window, key=lambda w: w[2])
 
 
+_BRACKET_OR_BREAK = re.compile(r"[(\[{)\]}]| (?=[+−-] )")  # a bracket, or the space before a binary + or −
+
+
 def _breaks(text: str) -> list[tuple[int, int, int]]:
     """Where an element may break: (position of the space before a binary + or −, bracket depth
     there, display column)."""
-    found, depth, column = [], 0, 0
-    for position, ch in enumerate(text):
+    marks = _marks(text)
+    marked = [m.start() for m in re.finditer("[" + re.escape("".join(marks)) + "]", text)] if marks else []
+    found, depth = [], 0
+    for match in _BRACKET_OR_BREAK.finditer(text):
+        ch, position = match.group(), match.start()
         if ch in "([{":
             depth += 1
         elif ch in ")]}":
             depth -= 1
-        elif ch == " " and position and text[position + 1:position + 3] in ("+ ", "− ", "- "):
-            found.append((position, depth, column))
-        column += not unicodedata.combining(ch)
+        elif position:
+            found.append((position, depth, position - bisect.bisect_left(marked, position)))
     return found
 
 

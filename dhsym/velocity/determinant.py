@@ -31,22 +31,25 @@ import sympy
 from ..core.robot import as_robot
 from ..core.simplify import collect_by_trig
 from ..core.size import expanded_terms, length, rough_count
+from ..geometry.convert import to_convention
+from .expanded import expanded_det, leibniz_terms, minors_det, term_count
 from .geometry import wrist_centre
 from .jacobian import ROWS, angular_part, axis_frame, jacobian, jacobian_size, linear_part, resolve_frames
 
-# Terms of a determinant written out, counted before it is expanded: past this it is not factored.
-# The UR5's in frame 4 has 7,812 (a second), in frame 3 40,968 (3 s), in frame 0 44 million, and a
-# general six-link chain's 350 billion. The count depends on the problem alone, never on the machine.
+# Terms of a determinant written out, at most, counted before it is expanded (expanded.leibniz_terms): past
+# this it is not factored. The UR5's in frame 4 has 336, in frame 1 57,420, and a general six-link chain's
+# 9.8 million at best. The count depends on the problem alone, never on the machine.
 FACTOR_MAX_TERMS = 50_000
 MIDDLE_FRAMES = (4, 3, 5, 2, 1)  # frames by their distance from the middle of a six-joint arm
 
 
 class TooManyTerms(Exception):
-    """A determinant that would expand to more than FACTOR_MAX_TERMS terms."""
+    """A determinant that would expand to more than FACTOR_MAX_TERMS terms; of several matrices,
+    `position` is that of the one whose count is least."""
 
-    def __init__(self, terms: int):
+    def __init__(self, terms: int, position: int = 0):
         super().__init__(terms)
-        self.terms = terms
+        self.terms, self.position = terms, position
 
 
 @dataclass(frozen=True)
@@ -86,51 +89,67 @@ def _determinant(chain, frame, point, robot) -> Determinant:
                            f"It is singular where all {sympy.binomial(n, 6)} of its 6×6 minors vanish (rank < 6); "
                            "those configurations are not worked out.")
     matrix = jacobian(chain, frame, point)
-    moving = [r for r in range(6) if any(x != 0 for x in matrix.row(r))]
+    moving = _moving(matrix)
     blocks = [moving] if len(moving) == n else [[r for r in moving if r < 3], [r for r in moving if r >= 3]]
-    results = [_block(chain, frame, point, matrix, moving, rows, robot) for rows in blocks if len(rows) == n]
-    if not results:
+    square = [rows for rows in blocks if len(rows) == n]
+    if not square:
         return Determinant(None, "", [], f"J is 6×{n} and its {len(moving)} rows that move are not {n}, nor are "
                            "its moving linear or angular rows: no square block, no determinant computed.")
+    # every frame that keeps `moving` the rows that move (a planar arm: z normal to the plane), the one asked first
+    others = dict.fromkeys([*(axis_frame(chain, j) for j in range(1, n + 1)), chain.last_frame])
+    turned = (jacobian(chain, other, point) for other in others if other != frame)
+    candidates = [matrix] + [candidate for candidate in turned if _moving(candidate) == moving]
+    results = [_block(candidates, moving, rows, robot) for rows in square]
     return next((r for r in results if r.value != 0), results[0])
 
 
-def _block(chain, frame, point, matrix, moving, rows, robot) -> Determinant:
-    """The determinant of the block `rows` of J, from the frame where it is shortest. Every frame
-    that keeps `moving` the rows that move (a planar arm: z normal to the plane) turns the block
-    by a rotation within those rows, so the determinant is the same up to its sign."""
-    n = chain.n
+def _moving(matrix) -> list:
+    """The rows of J that are not zero everywhere."""
+    return [r for r in range(6) if any(x != 0 for x in matrix.row(r))]
+
+
+def _block(candidates, moving, rows, robot) -> Determinant:
+    """The determinant of the block `rows` of J, from the frame where it has the fewest terms.
+    The candidates' frames turn the block by a rotation within the rows that move, so the
+    determinant is the same up to its sign; the sign is that of the frame asked for, the first."""
+    n = len(rows)
     block = "rows " + ", ".join(ROWS[r] for r in rows)
     what = "the rows that move" if rows == moving else "the velocity of the point" if rows[0] < 3 else "the axes"
     note = f"J is 6×{n}; the determinant is that of its {n}×{n} block of {block} ({what})."
-    results, refused, asked = [], [], None
-    for other in dict.fromkeys([frame, *(axis_frame(chain, j) for j in range(1, n + 1)), chain.last_frame]):
-        candidate = matrix if other == frame else jacobian(chain, other, point)
-        if [r for r in range(6) if any(x != 0 for x in candidate.row(r))] == moving:
-            det = candidate.extract(rows, list(range(n))).det(method="berkowitz")
-            asked = det if asked is None else asked  # the block in the frame asked for comes first
-            try:
-                results.append(_result(robot, det, block, note))
-            except TooManyTerms as error:  # too long in this frame; another may be short
-                refused.append(error)
-    if not results:
-        raise min(refused, key=lambda error: error.terms)
-    shortest = min(results, key=lambda result: length(result.value))
-    if _same_sign(shortest.value, asked):
-        return shortest
-    return _result(robot, -shortest.value, block, note)
+    squares = [candidate.extract(rows, list(range(n))) for candidate in candidates]
+    result = _result(robot, fewest_terms(squares), block, note)
+    if _same_sign(result.value, squares[0]):
+        return result
+    return _result(robot, -result.value, block, note)
 
 
-def _same_sign(a, b) -> bool:
-    """Whether two determinants that differ at most in sign agree, judged where they are not zero.
+def fewest_terms(matrices) -> sympy.Expr:
+    """Of several matrices whose determinants are equal up to sign, the determinant multiplied out
+    that has the fewest terms (the first on a tie). Raises TooManyTerms, before any work, when each
+    could have more than FACTOR_MAX_TERMS."""
+    bounds = [leibniz_terms(matrix) for matrix in matrices]
+    if min(bounds) > FACTOR_MAX_TERMS:
+        raise TooManyTerms(min(bounds), bounds.index(min(bounds)))
+    return min((_multiplied_out(m) for m, bound in zip(matrices, bounds) if bound <= FACTOR_MAX_TERMS), key=term_count)
+
+
+def _multiplied_out(matrix) -> sympy.Expr:
+    """The determinant as `sympy.expand` writes it, in the polynomial ring where it is one."""
+    det = expanded_det(matrix)
+    return sympy.expand(minors_det(matrix.tolist(), sympy.Integer(1))) if det is None else det
+
+
+def _same_sign(value, square) -> bool:
+    """Whether a determinant has the sign of that of `square` (they differ at most in sign), judged
+    by numbers where neither is zero.
 
     A turn of the moving rows about an axis in their plane by π (a twist of π) is a reflection
     within them, so the block's determinant changes sign; the sign is the same everywhere."""
-    variables = sorted((a - b).free_symbols | (a + b).free_symbols, key=str)
+    variables = sorted(value.free_symbols | square.free_symbols, key=str)
     rng = random.Random(0)
     for _ in range(20):
         point = {v: sympy.Float(rng.uniform(-3, 3)) for v in variables}
-        x, y = float(a.xreplace(point)), float(b.xreplace(point))
+        x, y = float(value.xreplace(point)), float(minors_det(square.xreplace(point).tolist(), 1))
         if abs(x) > 1e-6 and abs(y) > 1e-6:
             return (x > 0) == (y > 0)
     return True  # zero everywhere we looked: the sign cannot matter
@@ -138,18 +157,28 @@ def _same_sign(a, b) -> bool:
 
 def _full(chain, robot) -> Determinant:
     """det J of a 6-joint arm without a wrist centre. det J is the same in every frame (a rotation of
-    both halves has determinant 1), and in a frame near the middle of the arm the entries are
-    short: the UR5's factors in under a second from frame 4, where frame 0 takes minutes. The frame
-    is the one where J is estimated shortest (the middle first on a tie): one attempt, whatever
-    the machine."""
-    frame = min(MIDDLE_FRAMES, key=lambda f: jacobian_size(chain, f, chain.last_frame))
+    both halves has determinant 1) and for every reference point, and in both conventions: the
+    same robot written in the other one has its frames on the same joint axes, so J is the same
+    for every joint value. In a frame near the middle of the arm the entries are short: the UR5's
+    has at most 336 terms from frame 4, 57,420 from frame 1. So in each convention J is built in
+    the frame where it is estimated shortest (the middle first on a tie), and det J is factored
+    from the one where it has fewer terms (the standard convention on a tie): both conventions of
+    an arm print the same determinant (the HC10's has 18 terms in frame 3 of the standard
+    convention, 9 in frame 4 of the modified one). Two attempts, whatever the machine."""
+    other = to_convention(chain, "modified" if chain.convention == "standard" else "standard")
+    chains = sorted([chain, other], key=lambda c: c.convention != "standard")
+    places = [(c, min(MIDDLE_FRAMES, key=lambda f: jacobian_size(c, f, c.last_frame))) for c in chains]
+    matrices = [jacobian(c, frame) for c, frame in places]
     try:
-        return _result(robot, jacobian(chain, frame).det(method="berkowitz"), "J", "")
+        det = fewest_terms(matrices)
     except TooManyTerms as error:
+        c, frame = places[error.position]
+        where = f"frame {robot.frame_number(frame)}" + (f" of the {c.convention} convention" if c is other else "")
         return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
-                           f"determinant would expand to {rough_count(error.terms)} terms even in frame "
-                           f"{robot.frame_number(frame)}, where J is shortest; that is more than the "
-                           f"{FACTOR_MAX_TERMS:,} that dhsym factors: not computed.")
+                           f"determinant would expand to {rough_count(error.terms)} terms even in {where}, where "
+                           f"J is shortest; that is more than the {FACTOR_MAX_TERMS:,} that dhsym factors: not "
+                           "computed.")
+    return _result(robot, det, "J", "")
 
 
 def _wrist_partitioned(chain, centre, robot) -> Determinant:
