@@ -7,22 +7,34 @@
 //     node scripts/compile-wheels.js build/web-cache/unpacked
 //
 // Each foo.py gets a foo.pyc beside it (the sourceless layout, which imports without its .py); the
-// build (scripts/build_web.py) then drops the .py files and packs the wheels again. The header holds
-// a hash instead of a time stamp, so that the same sources give the same bytes. Prints the Python
-// version and the count of files compiled.
+// build (scripts/build_web.py) then drops the .py files and packs the wheels again. Docstrings are
+// left out (as `python -OO` does; asserts stay): they are a third of SymPy's bytes, and nothing the
+// page runs reads them (dhsym's outputs are the same under -OO). The header holds a hash instead of
+// a time stamp, so that the same sources give the same bytes. Prints the Python version and the
+// count of files compiled.
 "use strict";
 const path = require("path");
 const { loadPyodide } = require("pyodide");
 
 const COMPILE = `
-import pathlib, py_compile, sys
+import ast, importlib.util, pathlib, sys
+from importlib._bootstrap_external import _code_to_hash_pyc
+
+def without_docstrings(tree):
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) and node.body:
+            first = node.body[0]
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) and isinstance(first.value.value, str):
+                node.body[:1] = [] if len(node.body) > 1 else [ast.copy_location(ast.Pass(), first)]
+    return tree
+
 root = pathlib.Path("/tree")
 count = 0
 for source in sorted(root.rglob("*.py")):
-    relative = source.relative_to(root)
-    shown = "/".join(relative.parts[1:])  # the path a traceback names: the wheel's own, e.g. sympy/core/basic.py
-    py_compile.compile(str(source), cfile=str(source) + "c", dfile=shown, doraise=True,
-                       invalidation_mode=py_compile.PycInvalidationMode.UNCHECKED_HASH)
+    data = source.read_bytes()
+    shown = "/".join(source.relative_to(root).parts[1:])  # the path a traceback names, e.g. sympy/core/basic.py
+    code = compile(without_docstrings(ast.parse(data, shown)), shown, "exec", dont_inherit=True)
+    pathlib.Path(str(source) + "c").write_bytes(_code_to_hash_pyc(code, importlib.util.source_hash(data), False))
     count += 1
 f"{sys.version.split()[0]} {count}"
 `;

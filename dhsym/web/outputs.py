@@ -22,7 +22,6 @@ from dataclasses import dataclass
 
 from ..cli.limits import LATEX_MAX_NODES, refuse_if_too_large, refuse_jacobian_if_too_large, refuse_long_entries
 from ..errors import UserError
-from ..latex.document import document
 from ..latex.layout import Page
 from ..latex.prose import tex_text
 from ..latex.results import results_latex, table_latex
@@ -67,6 +66,8 @@ def output(robot, show: str, width_pt: float, start=None, end=None, frame=None, 
 
 def slides(robot, start=None, end=None, jacobian: bool = False, ik: bool = False, free=()) -> str:
     """The beamer deck of `dhsym latex ROBOT [--jacobian] [--ik]`, with that command's limits."""
+    from ..latex.document import document  # the documents (and the solver they import) only for a deck
+
     chain = robot.chain
     first = chain.first_frame if start is None else robot.chain_frame(start)
     last = chain.last_frame if end is None else robot.chain_frame(end)
