@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import functools
 import http.server
-import json
 import shutil
 import statistics
 import subprocess
@@ -137,15 +136,17 @@ def main(runs: int = RUNS) -> int:
 def report(m: dict, runs: int) -> None:
     cold = m["page"] / m["native"]
     print(f"web page (build/web, Chromium, wall-clock medians of {runs} interleaved runs)")
-    print(f"  bytes loaded for the first result   {m['bytes'] / 1e6:6.1f} MB   (prototype {PROTOTYPE_BYTES / 1e6:.1f} MB: "
-          + ("no more)" if m["bytes"] <= PROTOTYPE_BYTES else "more)"))
+    verdict = "no more)" if m["bytes"] <= PROTOTYPE_BYTES else "more)"
+    print(f"  bytes loaded for the first result   {m['bytes'] / 1e6:6.1f} MB   "
+          f"(prototype {PROTOTYPE_BYTES / 1e6:.1f} MB: {verdict}")
     print(f"  page cold start to typeset 0T6     {m['page']:6.2f} s   (Python and the wheels {m['load']:.2f} s, "
           f"imports {m['imports']:.2f} s)")
     print(f"  native `dhsym fk puma560` process  {m['native']:6.2f} s")
     print(f"  cold start ratio                   {cold:6.1f}x  (target {COLD_TARGET:.0f}x: "
           + ("met)" if cold <= COLD_TARGET else "missed)"))
     print(f"  one fk puma560 in the loaded page  {m['page warm']:6.2f} s   (request to typeset)")
-    print(f"  the same request, native           {m['native warm']:6.2f} s   ratio {m['page warm'] / m['native warm']:.1f}x")
+    print(f"  the same request, native           {m['native warm']:6.2f} s   "
+          f"ratio {m['page warm'] / m['native warm']:.1f}x")
 
 
 if __name__ == "__main__":

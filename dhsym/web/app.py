@@ -9,12 +9,12 @@ Requests: `{"kind": "show", "yaml": TEXT, "file": NAME, "show": "fk", "width": P
 `line` and `column` in the robot file, where it has a place), or "internal error …" for a bug.
 
 >>> import json
->>> answer = json.loads(handle(json.dumps({"kind": "show", "show": "table", "file": "arm.yaml",
-...     "yaml": "name: arm\\nconvention: standard\\njoints:\\n  - {joint: R, theta: theta_1, d: 0, a: a_1, alpha: 0}\\n"})))
+>>> arm = "name: arm\\nconvention: standard\\njoints:\\n  - {joint: R, theta: theta_1, d: 0, a: a_1, alpha: 0}\\n"
+>>> answer = json.loads(handle(json.dumps({"kind": "show", "show": "table", "file": "arm.yaml", "yaml": arm})))
 >>> answer["state"], answer["parts"][1]["tex"].splitlines()[0]
 ('ready', '\\\\begin{array}{c|cccc}')
 >>> answer = json.loads(handle(json.dumps({"kind": "show", "show": "fk", "file": "arm.yaml",
-...     "yaml": "name: arm\\nconvention: standard\\njoints:\\n  - {joint: R, theta: theta_1, d: 0, a: a_1, alfa: 0}\\n"})))
+...     "yaml": arm.replace("alpha", "alfa")})))
 >>> answer["state"], answer["line"], answer["column"], answer["message"][:40]
 ('error', 4, 46, "arm.yaml:4:46: unknown key 'alfa' in joi")
 """
