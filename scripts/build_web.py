@@ -42,7 +42,7 @@ LEFT_OUT = re.compile(r"(^|/)(tests|benchmarks)/")
 # Each wheel of the page: its PyPI name, the modules it provides, and what it needs.
 PACKAGES = {"sympy": (["sympy"], ["mpmath"]), "mpmath": (["mpmath"], []), "pyyaml": (["yaml"], []),
             "dhsym": (["dhsym"], ["sympy", "pyyaml", "mpmath"])}
-COMPILED_STAMP = "compiled-3"  # change to recompile the cached third-party wheels
+COMPILED_STAMP = "compiled-4"  # change to recompile the cached third-party wheels
 
 
 def main(out: Path) -> None:

@@ -28,12 +28,16 @@ def without_docstrings(tree):
                 node.body[:1] = [] if len(node.body) > 1 else [ast.copy_location(ast.Pass(), first)]
     return tree
 
+KEEP_DOCSTRINGS = ("_pyodide", "pyodide")  # Pyodide's own packages hand theirs to the JavaScript side
 root = pathlib.Path("/tree")
 count = 0
 for source in sorted(root.rglob("*.py")):
     data = source.read_bytes()
     shown = "/".join(source.relative_to(root).parts[1:])  # the path a traceback names, e.g. sympy/core/basic.py
-    code = compile(without_docstrings(ast.parse(data, shown)), shown, "exec", dont_inherit=True)
+    tree = ast.parse(data, shown)
+    if shown.split("/")[0] not in KEEP_DOCSTRINGS:
+        tree = without_docstrings(tree)
+    code = compile(tree, shown, "exec", dont_inherit=True)
     pathlib.Path(str(source) + "c").write_bytes(_code_to_hash_pyc(code, importlib.util.source_hash(data), False))
     count += 1
 f"{sys.version.split()[0]} {count}"

@@ -19,7 +19,7 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.ge
 # The fast lane (`make check`) leaves out what takes seconds per test and is covered by `make test`:
 # notebooks, the browser, pdflatex, a fresh pip install, fuzzing, property tests that draw many
 # random chains, and dhsym started as a process. `make test` runs everything.
-SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_web_page.py", "test_fuzz.py",
+SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_web_page.py", "test_extras.py", "test_fuzz.py",
               "test_velocity_properties.py", "test_urdf_real.py", "test_inverse_random.py",
               "test_simplify_equals_raw.py",
               # real robots solved in closed form (the fast lane keeps test_ik_cli's hand-written solutions,

@@ -164,7 +164,8 @@ def test_the_drawing_has_every_joint_and_frame():
 def test_a_drawing_without_numbers_says_which_are_missing():
     answer = ask(kind="draw", yaml=ARM.replace("sample: {d_1: 0.3, a_2: 0.5}\n", ""))
     assert answer["state"] == "error"
-    assert answer["message"].startswith("to draw the arm, give a number for a_2, d_1 in the robot file's sample")
+    assert answer["message"] == ("to draw the arm, give a number for a_2, d_1 in the robot file's sample, "
+                                 "e.g. sample: {a_2: 0.5}")
 
 
 def test_the_picker_lists_every_built_in_robot_with_its_file():

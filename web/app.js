@@ -22,6 +22,7 @@ const state = {
   busy: {}, // channel -> id of the request the worker is working on
   latex: "",
   frames: null,
+  framesChosen: false, // the reader picked from/to; else the whole chain, whatever its frames
   sliderNames: "",
   values: {},
   editTimer: null,
@@ -32,7 +33,12 @@ const state = {
 function startWorker() {
   state.ready = false;
   state.busy = {};
-  state.worker = new Worker("worker.js", { type: "module" });
+  try {
+    state.worker = new Worker("worker.js", { type: "module" });
+  } catch (error) { // a page opened as a file, or a browser without module workers
+    failed(error.message);
+    return;
+  }
   state.worker.onmessage = (event) => onWorkerMessage(event.data);
   state.worker.onerror = (event) => {
     if (!state.ready) failed(event.message || "the Python runtime could not be started");
@@ -66,12 +72,13 @@ function onWorkerMessage(message) {
 }
 
 function failed(why) {
+  state.failed = true;
   const where = location.protocol === "file:"
     ? "This page was opened as a file; browsers load its Python only from a web server. In its folder run " +
       "`python3 -m http.server` and open http://localhost:8000/."
     : "Python could not be loaded in this browser (it needs WebAssembly, as in any current browser).";
-  setStatus("error", `${where} (${why})`);
-  showMessage($("result"), "error", `${where}`);
+  setStatus("error", "Python could not be loaded");
+  showMessage($("result"), "error", where, why);
 }
 
 // Asks the worker; a newer request on the same channel replaces one not yet sent.
@@ -124,7 +131,20 @@ function robotFile() {
   return { yaml: text, file: picked && picked.yaml === text ? `${picked.name}.yaml` : "robot.yaml" };
 }
 
+// A band behind the line of the robot file's error, under the text, moving with it as it scrolls.
+function markLine(line) {
+  const band = $("error-band");
+  band.hidden = !line;
+  if (!line) return;
+  const style = getComputedStyle($("yaml"));
+  const height = parseFloat(style.lineHeight);
+  band.style.height = `${height}px`;
+  band.style.top = `${parseFloat(style.paddingTop) + (line - 1) * height - $("yaml").scrollTop}px`;
+  band.dataset.line = line;
+}
+
 function fillGutter(errorLine) {
+  markLine(errorLine);
   const lines = $("yaml").value.split("\n").length;
   const gutter = $("gutter");
   gutter.textContent = "";
@@ -172,6 +192,8 @@ function pickRobot(name) {
   $("robot").value = name;
   $("yaml").value = robot.yaml;
   state.frames = null;
+  state.framesChosen = false;
+  $("from").textContent = $("to").textContent = "";
   onEdit(true);
 }
 
@@ -211,8 +233,7 @@ async function refresh() {
   result.dataset.state = "working";
   const asked = performance.now();
   const request = { kind: "show", show: state.show, width: widthPt(), ...robotFile() };
-  if (state.show === "fk") Object.assign(request, { from: $("from").value || null, to: $("to").value || null });
-  if (state.show === "ik") request.free = $("free").value.split(/[\s,]+/).filter(Boolean);
+  Object.assign(request, chosenFrames(), state.show === "ik" ? { free: freeVariables() } : {});
   const answer = await ask("show", request);
   showProblem(answer);
   if (answer.state === "error") {
@@ -280,12 +301,21 @@ function showMessage(element, kind, text, details) {
   element.dataset.state = kind;
 }
 
+// The frames of ⁱTⱼ for the forward kinematics: what the reader chose, else (null) the whole chain.
+function chosenFrames() {
+  if (state.show !== "fk" || !state.framesChosen) return {};
+  return { from: $("from").value || null, to: $("to").value || null };
+}
+
+function freeVariables() {
+  return $("free").value.split(/[\s,]+/).filter(Boolean);
+}
+
 function updateFrames(frames) {
   if (!frames || JSON.stringify(frames) === JSON.stringify(state.frames)) return;
-  const wanted = new URLSearchParams(location.search);
-  for (const [id, index, param] of [["from", 0, "from"], ["to", frames.length - 1, "to"]]) {
+  for (const [id, index] of [["from", 0], ["to", frames.length - 1]]) {
     const select = $(id);
-    const keep = select.value || wanted.get(param);
+    const keep = state.framesChosen ? select.value : null;
     select.textContent = "";
     for (const frame of frames) {
       const option = document.createElement("option");
@@ -313,8 +343,12 @@ async function refreshDrawing() {
     values[input.name] = input.dataset.unit === "°" ? (Number(input.value) * Math.PI) / 180 : Number(input.value);
   }
   const answer = await ask("draw", { kind: "draw", values, view: $("view").value, ...robotFile() });
+  if (answer.state === "error" && answer.line && $("arm").querySelector("svg")) {
+    $("arm").dataset.state = "stale"; // the robot file has a mistake: the last picture stays, faded
+    return;
+  }
   if (answer.state === "error") {
-    showMessage($("arm"), "note", answer.message);
+    showMessage($("arm"), "note", answer.line ? "The arm is drawn once the robot file reads." : answer.message);
     $("sliders").textContent = "";
     state.sliderNames = "";
     return;
@@ -337,7 +371,10 @@ function buildSliders(sliders) {
     Object.assign(input, { type: "range", name: s.name, min: s.min, max: s.max, step: s.step, value: s.value });
     input.dataset.unit = s.unit;
     const shown = document.createElement("output");
-    const show = () => { shown.textContent = `${Number(input.value).toFixed(s.unit === "°" ? 0 : 2)}${s.unit}`; };
+    const show = () => {
+      const value = Number(input.value).toFixed(s.unit === "°" ? 0 : 2);
+      shown.textContent = `${Number(value) === 0 ? value.replace("-", "") : value}${s.unit}`;
+    };
     show();
     input.oninput = () => { show(); refreshDrawing(); };
     label.append(name, input, shown);
@@ -355,7 +392,7 @@ function currentLink() {
   const params = new URLSearchParams();
   if (file.file !== "robot.yaml") params.set("robot", $("robot").value);
   params.set("show", state.show);
-  if (state.show === "fk" && state.frames) {
+  if (state.show === "fk" && state.frames && state.framesChosen) {
     if ($("from").value !== String(state.frames[0])) params.set("from", $("from").value);
     if ($("to").value !== String(state.frames[state.frames.length - 1])) params.set("to", $("to").value);
   }
@@ -388,8 +425,7 @@ async function downloadSlides() {
   const button = $("slides");
   button.disabled = true;
   const request = { kind: "slides", jacobian: state.show === "jacobian", ik: state.show === "ik", ...robotFile() };
-  if (state.show === "fk") Object.assign(request, { from: $("from").value || null, to: $("to").value || null });
-  if (state.show === "ik") request.free = $("free").value.split(/[\s,]+/).filter(Boolean);
+  Object.assign(request, chosenFrames(), state.show === "ik" ? { free: freeVariables() } : {});
   const answer = await ask("slides", request);
   button.disabled = false;
   if (answer.state === "error") {
@@ -408,6 +444,7 @@ async function downloadSlides() {
 
 async function main() {
   startWorker();
+  if (state.failed) return;
   selectTab(new URLSearchParams(location.search).get("show") || "fk");
   try {
     state.robots = await (await fetch("robots.json")).json();
@@ -423,6 +460,7 @@ async function main() {
   }
   const params = new URLSearchParams(location.search);
   const hash = new URLSearchParams(location.hash.slice(1));
+  const linkedFrames = [params.get("from"), params.get("to")];
   if (hash.has("yaml")) {
     addCustomOption();
     $("robot").value = "";
@@ -434,13 +472,26 @@ async function main() {
     pickRobot(known ? name : DEFAULT_ROBOT);
     if (name && !known) showProblem({ state: "error", message: `unknown robot '${name}' in the link; showing ${DEFAULT_ROBOT}` });
   }
+  if (linkedFrames.some(Boolean)) { // ?from=I&to=J: kept once the robot's frames are known, if it has them
+    state.framesChosen = true;
+    linkedFrames.forEach((frame, k) => {
+      if (!frame) return;
+      const option = document.createElement("option");
+      option.value = option.textContent = frame;
+      $(["from", "to"][k]).appendChild(option);
+    });
+  }
   $("robot").onchange = () => { if ($("robot").value) pickRobot($("robot").value); };
   $("yaml").oninput = () => onEdit(false);
-  $("yaml").onscroll = () => { $("gutter").scrollTop = $("yaml").scrollTop; };
+  $("yaml").onscroll = () => {
+    $("gutter").scrollTop = $("yaml").scrollTop;
+    markLine(Number($("error-band").dataset.line) || null);
+  };
   for (const tab of document.querySelectorAll("#tabs button")) {
     tab.onclick = () => { selectTab(tab.dataset.show); updateLink(); refresh(); };
   }
-  for (const id of ["from", "to", "width"]) $(id).onchange = () => { updateLink(); refresh(); };
+  for (const id of ["from", "to"]) $(id).onchange = () => { state.framesChosen = true; updateLink(); refresh(); };
+  $("width").onchange = () => refresh();
   $("free").onchange = () => refresh();
   $("view").onchange = () => refreshDrawing();
   $("stop").onclick = stopWorker;

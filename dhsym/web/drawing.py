@@ -68,8 +68,8 @@ def _constants(robot) -> dict:
     constants = set(robot.symbols) - set(robot.joint_variables)
     missing = sorted(s.name for s in constants if s not in robot.sample)
     if missing:
-        raise UserError(f"to draw the arm, give a number for {', '.join(missing)} in the robot file's sample "
-                        f"(e.g. sample: {{{missing[0]}: 0.5}}), as dhsym plot needs")
+        raise UserError(f"to draw the arm, give a number for {', '.join(missing)} in the robot file's sample, "
+                        f"e.g. sample: {{{missing[0]}: 0.5}}")
     return {s: robot.sample[s] for s in constants}
 
 
