@@ -48,9 +48,14 @@ function startWorker() {
 
 function onWorkerMessage(message) {
   if (message.kind === "progress") {
-    $("progress").value = message.loaded / message.total;
+    // the bytes fill 80 % of the bar; starting Python and importing SymPy the rest
+    $("progress").value = Math.max($("progress").value, 0.8 * (message.loaded / message.total));
     const mb = (bytes) => (bytes / 1e6).toFixed(1);
-    setStatus("loading", `Loading Python and SymPy: ${mb(message.loaded)} of ${mb(message.total)} MB`);
+    state.bytes = `${mb(message.loaded)} of ${mb(message.total)} MB`;
+    setStatus("loading", `Loading Python and SymPy: ${state.bytes}`);
+  } else if (message.kind === "stage") {
+    if (message.text.startsWith("Importing")) $("progress").value = 0.9;
+    setStatus("loading", `${message.text}… ${state.bytes ? `(${state.bytes} loaded)` : ""}`);
   } else if (message.kind === "ready") {
     state.ready = true;
     window.dhsymTimings = message.timings; // for benchmarks/web_speed.py
@@ -228,13 +233,14 @@ function widthPt() {
 }
 
 async function refresh() {
-  refreshDrawing();
   const result = $("result");
   result.dataset.state = "working";
   const asked = performance.now();
   const request = { kind: "show", show: state.show, width: widthPt(), ...robotFile() };
   Object.assign(request, chosenFrames(), state.show === "ik" ? { free: freeVariables() } : {});
-  const answer = await ask("show", request);
+  const answering = ask("show", request);
+  refreshDrawing(); // after the result: the worker answers in the order asked
+  const answer = await answering;
   showProblem(answer);
   if (answer.state === "error") {
     state.latex = "";
@@ -445,6 +451,8 @@ async function downloadSlides() {
 async function main() {
   startWorker();
   if (state.failed) return;
+  // MathJax's first formula sets up its parser and fonts: done while Python loads, not after.
+  window.addEventListener("load", () => MathJax.startup.promise.then(() => MathJax.tex2svg("x^2")));
   selectTab(new URLSearchParams(location.search).get("show") || "fk");
   try {
     state.robots = await (await fetch("robots.json")).json();

@@ -3,7 +3,8 @@
 // responsive while a result is worked out, and can stop a long one by ending the worker.
 //
 // Messages in:  {id, request}            a request for dhsym.web.app.handle (JSON text)
-// Messages out: {kind: "progress", loaded, total}
+// Messages out: {kind: "progress", loaded, total}  bytes so far, for the progress bar
+//               {kind: "stage", text}     what the runtime is doing once its bytes are in
 //               {kind: "ready", seconds}  Python is up and dhsym imported
 //               {kind: "failed", message} the runtime could not be loaded
 //               {kind: "answer", id, answer, seconds}
@@ -13,7 +14,7 @@ let python = null;
 
 // Counts the bytes of every file Pyodide fetches, for the page's progress bar; build.json says how
 // many to expect. Nothing is changed in what is fetched.
-function countingFetch(realFetch, onBytes) {
+function countingFetch(realFetch, onBytes, onDone) {
   return async (input, init) => {
     const response = await realFetch(input, init);
     if (!response.body) return response;
@@ -23,6 +24,7 @@ function countingFetch(realFetch, onBytes) {
         const { done, value } = await reader.read();
         if (done) {
           controller.close();
+          onDone(String(input));
           return;
         }
         onBytes(value.byteLength);
@@ -46,12 +48,16 @@ async function start() {
     postMessage({ kind: "progress", loaded, total });
   };
   const realFetch = self.fetch.bind(self);
-  self.fetch = countingFetch(realFetch, report);
+  const stage = (text) => postMessage({ kind: "stage", text });
+  self.fetch = countingFetch(realFetch, report, (url) => {
+    if (url.endsWith(".wasm")) stage("Starting Python");
+  });
   const indexURL = new URL("pyodide/", self.location.href).href;
   // The wheels download while the runtime starts (Pyodide's `packages`).
   python = await loadPyodide({ indexURL, packages: ["dhsym"], stdout: () => {}, stderr: (line) => console.warn(line) });
   report(manifest.files["pyodide/pyodide.asm.mjs"] || 0); // imported as a module, not fetched
   self.fetch = realFetch;
+  stage("Importing SymPy and dhsym");
   const installed = performance.now();
   // SymPy's import makes objects that live as long as the page: the collector is off while they are
   // made, and they are frozen (never walked again), as the dhsym command does (dhsym/cli/__main__.py).
