@@ -2,12 +2,14 @@
 // results on the right, typeset by MathJax. dhsym itself runs in worker.js; every request is
 // answered by dhsym.web.app.handle, and every answer is JSON.
 //
-// Deep links: index.html?robot=NAME&show=table|links|fk|jacobian|ik (&from=I&to=J for fk), and
+// Deep links: index.html?robot=NAME&show=table|links|fk|jacobian|ik (&from=I&to=J for fk, &frame=K&point=P
+// for the Jacobian), and
 // #yaml=... (a robot file, URL-encoded) for an arm of one's own. The result stands in #result,
 // whose data-state is "loading", "working", "ready" or "error".
 "use strict";
 
 const SHOWS = ["table", "links", "fk", "jacobian", "ik"];
+const SHOW_FRAMES = { fk: ["from", "to"], jacobian: ["frame", "point"] }; // the frames each output takes
 const DEFAULT_ROBOT = "puma560";
 const EDIT_PAUSE_MS = 500; // typing pauses this long before the result is worked out again
 const $ = (id) => document.getElementById(id);
@@ -198,7 +200,7 @@ function pickRobot(name) {
   $("yaml").value = robot.yaml;
   state.frames = null;
   state.framesChosen = false;
-  $("from").textContent = $("to").textContent = "";
+  for (const id of ["from", "to", "frame", "point"]) $(id).textContent = "";
   onEdit(true);
 }
 
@@ -226,10 +228,23 @@ function addCustomOption() {
 function widthPt() {
   const chosen = $("width").value;
   if (chosen !== "auto") return Number(chosen);
-  const box = $("result");
-  const px = box.clientWidth - 24;
-  const fontPx = parseFloat(getComputedStyle(box).fontSize);
-  return Math.max(100, Math.round((px / fontPx) * 10)); // MathJax sets 10 pt TeX at the text's em
+  const px = $("result").clientWidth - 24;
+  return Math.max(100, Math.round((px / mathEm()) * 10)); // the layout's line is in pt of 10 pt type
+}
+
+// The width in px of 1 em of typeset math: MathJax sizes its formulas in ex of the page's font, whose
+// x-height is not Computer Modern's, so a 20 em space is measured once.
+let measuredEm = null;
+function mathEm() {
+  if (measuredEm) return measuredEm;
+  const fontPx = parseFloat(getComputedStyle($("result")).fontSize);
+  if (!window.MathJax || !MathJax.tex2svg) return fontPx * 1.2; // before MathJax: about what it gives
+  const probe = MathJax.tex2svg("\\kern20em", { display: false });
+  probe.style.visibility = "hidden";
+  $("result").appendChild(probe);
+  measuredEm = probe.querySelector("svg").getBoundingClientRect().width / 20 || fontPx;
+  probe.remove();
+  return measuredEm;
 }
 
 async function refresh() {
@@ -245,6 +260,8 @@ async function refresh() {
   if (answer.state === "error") {
     state.latex = "";
     showMessage(result, "error", answer.message, answer.traceback);
+    const hint = pageWords(answer.message);
+    if (hint) result.insertAdjacentElement("beforeend", Object.assign(document.createElement("p"), { className: "hint", textContent: hint }));
     return;
   }
   updateFrames(answer.frames);
@@ -289,6 +306,19 @@ function appendSegments(element, segments) {
   }
 }
 
+// The command line's options that a message may name, and where the page has them.
+const PAGE_WORDS = [
+  [/--free/, "--free is the field “free joint variables” (Inverse kinematics)"],
+  [/--from|--to\b/, "--from and --to are “from frame” and “to” (Forward kinematics)"],
+  [/dhsym links/, "'dhsym links' is the tab Link matrices"],
+  [/--frame|--point/, "--frame and --point: the command line's dhsym jacobian takes them"],
+];
+
+function pageWords(message) {
+  const found = PAGE_WORDS.filter(([pattern]) => pattern.test(message)).map(([, words]) => words);
+  return found.length ? `In this page: ${found.join("; ")}.` : "";
+}
+
 function showMessage(element, kind, text, details) {
   element.textContent = "";
   const p = document.createElement("p");
@@ -309,8 +339,10 @@ function showMessage(element, kind, text, details) {
 
 // The frames of ⁱTⱼ for the forward kinematics: what the reader chose, else (null) the whole chain.
 function chosenFrames() {
-  if (state.show !== "fk" || !state.framesChosen) return {};
-  return { from: $("from").value || null, to: $("to").value || null };
+  if (!state.framesChosen) return {};
+  if (state.show === "fk") return { from: $("from").value || null, to: $("to").value || null };
+  if (state.show === "jacobian") return { frame: $("frame").value || null, point: $("point").value || null };
+  return {};
 }
 
 function freeVariables() {
@@ -319,7 +351,8 @@ function freeVariables() {
 
 function updateFrames(frames) {
   if (!frames || JSON.stringify(frames) === JSON.stringify(state.frames)) return;
-  for (const [id, index] of [["from", 0], ["to", frames.length - 1]]) {
+  const last = frames.length - 1;
+  for (const [id, index] of [["from", 0], ["to", last], ["frame", 0], ["point", last]]) {
     const select = $(id);
     const keep = state.framesChosen ? select.value : null;
     select.textContent = "";
@@ -398,9 +431,11 @@ function currentLink() {
   const params = new URLSearchParams();
   if (file.file !== "robot.yaml") params.set("robot", $("robot").value);
   params.set("show", state.show);
-  if (state.show === "fk" && state.frames && state.framesChosen) {
-    if ($("from").value !== String(state.frames[0])) params.set("from", $("from").value);
-    if ($("to").value !== String(state.frames[state.frames.length - 1])) params.set("to", $("to").value);
+  if (state.frames && state.framesChosen) {
+    const ends = { from: state.frames[0], to: state.frames.at(-1), frame: state.frames[0], point: state.frames.at(-1) };
+    for (const id of SHOW_FRAMES[state.show] || []) {
+      if ($(id).value !== String(ends[id])) params.set(id, $(id).value);
+    }
   }
   url.search = params.toString();
   if (file.file === "robot.yaml") url.hash = "yaml=" + encodeURIComponent(file.yaml);
@@ -468,7 +503,6 @@ async function main() {
   }
   const params = new URLSearchParams(location.search);
   const hash = new URLSearchParams(location.hash.slice(1));
-  const linkedFrames = [params.get("from"), params.get("to")];
   if (hash.has("yaml")) {
     addCustomOption();
     $("robot").value = "";
@@ -480,14 +514,12 @@ async function main() {
     pickRobot(known ? name : DEFAULT_ROBOT);
     if (name && !known) showProblem({ state: "error", message: `unknown robot '${name}' in the link; showing ${DEFAULT_ROBOT}` });
   }
-  if (linkedFrames.some(Boolean)) { // ?from=I&to=J: kept once the robot's frames are known, if it has them
+  for (const id of ["from", "to", "frame", "point"]) { // ?from=I&to=J: kept once the robot's frames are known
+    if (!params.get(id)) continue;
     state.framesChosen = true;
-    linkedFrames.forEach((frame, k) => {
-      if (!frame) return;
-      const option = document.createElement("option");
-      option.value = option.textContent = frame;
-      $(["from", "to"][k]).appendChild(option);
-    });
+    const option = document.createElement("option");
+    option.value = option.textContent = params.get(id);
+    $(id).appendChild(option);
   }
   $("robot").onchange = () => { if ($("robot").value) pickRobot($("robot").value); };
   $("yaml").oninput = () => onEdit(false);
@@ -498,7 +530,9 @@ async function main() {
   for (const tab of document.querySelectorAll("#tabs button")) {
     tab.onclick = () => { selectTab(tab.dataset.show); updateLink(); refresh(); };
   }
-  for (const id of ["from", "to"]) $(id).onchange = () => { state.framesChosen = true; updateLink(); refresh(); };
+  for (const id of ["from", "to", "frame", "point"]) {
+    $(id).onchange = () => { state.framesChosen = true; updateLink(); refresh(); };
+  }
   $("width").onchange = () => refresh();
   $("free").onchange = () => refresh();
   $("view").onchange = () => refreshDrawing();

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 from ..cli.limits import LATEX_MAX_NODES, refuse_if_too_large, refuse_jacobian_if_too_large, refuse_long_entries
 from ..errors import UserError
-from ..latex.layout import Page
+from ..latex.layout import Block, Page
 from ..latex.prose import tex_text
 from ..latex.results import results_latex, table_latex
 from ..latex.sections import CONVENTION_LATEX
@@ -84,7 +84,8 @@ def _title(robot, what: str) -> str:
 
 def _table(robot, page: Page) -> Output:
     latex = table_latex(robot, page.width_pt)
-    note = paragraph_part_of(CONVENTION_LATEX[robot.convention] + " ${}^{*}$ marks the joint variables.")
+    note = paragraph_part(Block(CONVENTION_LATEX[robot.convention] + " ${}^{*}$ marks the joint variables.", 0.0,
+                                is_display=False))
     return Output(_title(robot, "DH table"), [note, *snippet_parts(latex)], latex)
 
 
@@ -121,9 +122,3 @@ def _inverse(robot, free, page: Page) -> Output:
     parts = section_parts(ik_sections(solution, page, headings=False))
     return Output(_title(robot, "inverse kinematics"), parts, latex_of(parts))
 
-
-def paragraph_part_of(latex: str) -> dict:
-    """A paragraph of LaTeX text as a part."""
-    from ..latex.layout import Block
-
-    return paragraph_part(Block(latex, 0.0, is_display=False))
