@@ -75,8 +75,14 @@ self.onmessage = async (event) => {
   const { id, request } = event.data;
   await starting;
   const began = performance.now();
-  const handle = python.globals.get("handle");
-  const answer = handle(request);
-  handle.destroy();
+  let answer;
+  try {
+    const handle = python.globals.get("handle");
+    answer = handle(request);
+    handle.destroy();
+  } catch (error) { // the runtime itself failed (out of memory, say): handle never raises
+    answer = JSON.stringify({ state: "error", internal: true, traceback: String(error && error.stack),
+                              message: `Python stopped working in this page (${String(error && error.message).split("\n")[0]}); reload the page` });
+  }
   postMessage({ kind: "answer", id, answer, seconds: (performance.now() - began) / 1000 });
 };
