@@ -212,9 +212,9 @@ def _write_manifest(out: Path, shipped: dict) -> None:
     zipped = sum(len(gzip.compress(p.read_bytes(), 6)) for p in everything)
     for name, size in sizes.items():
         print(f"  {size / 1e6:7.2f} MB  {name}")
-    print(f"build_web: {out.relative_to(ROOT) if out.is_relative_to(ROOT) else out}: {len(everything)} files, "
-          f"{total / 1e6:.1f} MB ({zipped / 1e6:.1f} MB gzipped); serve the folder, e.g. "
-          f"`python -m http.server -d {out}`")
+    shown = out.relative_to(ROOT) if out.is_relative_to(ROOT) else out
+    print(f"build_web: {shown}: {len(everything)} files, {total / 1e6:.1f} MB ({zipped / 1e6:.1f} MB gzipped); "
+          f"serve the folder, e.g. `python3 -m http.server -d {shown}`")
 
 
 if __name__ == "__main__":

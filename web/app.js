@@ -2,10 +2,9 @@
 // results on the right, typeset by MathJax. dhsym itself runs in worker.js; every request is
 // answered by dhsym.web.app.handle, and every answer is JSON.
 //
-// Deep links: index.html?robot=NAME&show=table|links|fk|jacobian|ik (&from=I&to=J for fk, &frame=K&point=P
-// for the Jacobian), and
-// #yaml=... (a robot file, URL-encoded) for an arm of one's own. The result stands in #result,
-// whose data-state is "loading", "working", "ready" or "error".
+// Deep links: index.html?robot=NAME&show=table|links|fk|jacobian|ik (with &from=I&to=J for fk,
+// &frame=K&point=P for the Jacobian), and #yaml=... (a robot file, URL-encoded) for an arm of one's
+// own. The result stands in #result, whose data-state is "loading", "working", "ready" or "error".
 "use strict";
 
 const SHOWS = ["table", "links", "fk", "jacobian", "ik"];
@@ -26,7 +25,6 @@ const state = {
   frames: null,
   framesChosen: false, // the reader picked from/to; else the whole chain, whatever its frames
   sliderNames: "",
-  values: {},
   editTimer: null,
 };
 
@@ -101,7 +99,6 @@ function send(channel) {
   if (!job || state.busy[channel] || !state.ready) return;
   delete state.pending[channel];
   job.id = state.nextId++;
-  job.started = performance.now();
   state.busy[channel] = job;
   state.worker.postMessage({ id: job.id, request: JSON.stringify(job.request) });
   updateStop();
@@ -261,7 +258,7 @@ async function refresh() {
     state.latex = "";
     showMessage(result, "error", answer.message, answer.traceback);
     const hint = pageWords(answer.message);
-    if (hint) result.insertAdjacentElement("beforeend", Object.assign(document.createElement("p"), { className: "hint", textContent: hint }));
+    if (hint) result.appendChild(Object.assign(document.createElement("p"), { className: "hint", textContent: hint }));
     return;
   }
   updateFrames(answer.frames);
@@ -311,7 +308,7 @@ const PAGE_WORDS = [
   [/--free/, "--free is the field “free joint variables” (Inverse kinematics)"],
   [/--from|--to\b/, "--from and --to are “from frame” and “to” (Forward kinematics)"],
   [/dhsym links/, "'dhsym links' is the tab Link matrices"],
-  [/--frame|--point/, "--frame and --point: the command line's dhsym jacobian takes them"],
+  [/--frame|--point/, "--frame and --point are “in frame” and “velocity of frame” (Jacobian)"],
 ];
 
 function pageWords(message) {
