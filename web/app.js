@@ -175,7 +175,7 @@ function showProblem(answer) {
   const box = $("problem");
   box.textContent = "";
   const lines = [];
-  if (answer && answer.state === "error") lines.push(["error", answer.message]);
+  if (answer && answer.state === "error" && answer.line) lines.push(["error", answer.message]); // the file's own
   for (const warning of (answer && answer.warnings) || []) lines.push(["warning", warning]);
   for (const [kind, text] of lines) {
     const p = document.createElement("p");
