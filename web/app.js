@@ -538,12 +538,16 @@ async function main() {
   $("copy").onclick = () => copyText(state.latex, $("copy"));
   $("slides").onclick = downloadSlides;
   let lastWidth = $("result").clientWidth;
-  window.addEventListener("resize", () => {
-    const width = $("result").clientWidth;
-    if ($("width").value === "auto" && Math.abs(width - lastWidth) > 0.1 * lastWidth) {
-      lastWidth = width;
-      refresh();
-    }
+  let resizing = null;
+  window.addEventListener("resize", () => { // laid out again once the window has settled, if much wider or narrower
+    clearTimeout(resizing);
+    resizing = setTimeout(() => {
+      const width = $("result").clientWidth;
+      if ($("width").value === "auto" && Math.abs(width - lastWidth) > 0.1 * lastWidth) {
+        lastWidth = width;
+        refresh();
+      }
+    }, 300);
   });
 }
 
