@@ -36,7 +36,8 @@ CACHE = ROOT / "build" / "web-cache"
 PYODIDE = ROOT / "node_modules" / "pyodide"
 MATHJAX = ROOT / "node_modules" / "mathjax-full" / "es5" / "tex-svg.js"
 RUNTIME = ("pyodide.mjs", "pyodide.asm.mjs", "pyodide.asm.wasm")  # and python_stdlib.zip, byte-compiled
-PAGE_FILES = ("index.html", "app.js", "worker.js", "style.css")
+PAGE_FILES = ("index.html", "style.css", "app.js", "page.js", "python.js", "editor.js", "results.js", "drawing.js",
+              "worker.js")
 # What the page never runs: SymPy's test suites and benchmarks (a third of its files).
 LEFT_OUT = re.compile(r"(^|/)(tests|benchmarks)/")
 # Each wheel of the page: its PyPI name, the modules it provides, and what it needs.
