@@ -13,7 +13,7 @@ PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist loadfile
 
 # The fast lane for the edit-test loop (`make check`, under a minute on two cores): no notebooks, browser,
 # pdflatex, pip, fuzzing or closed-form solutions of real robots; the seconds-long tests are listed in tests/conftest.py.
-.PHONY: demo test check install tex browser node-packages bench lint notebooks clean
+.PHONY: demo test check install tex browser node-packages bench lint notebooks web clean
 
 # The demo needs only what dhsym itself imports; the tests add pytest, jupyter, ruff and friends.
 $(RUNTIME): pyproject.toml requirements.txt
@@ -50,16 +50,22 @@ check: install
 	$(BIN)/ruff check dhsym tests benchmarks
 	HYPOTHESIS_PROFILE=quick $(PYTEST) -m "not slow" -x
 
-bench: install
+bench: install web browser
 	$(BIN)/python benchmarks/simplify_speed.py
 	$(BIN)/python benchmarks/velocity_speed.py
 	$(BIN)/python benchmarks/geometry_speed.py
 	$(BIN)/python benchmarks/ik_speed.py
 	$(BIN)/python benchmarks/ik_peers.py
 	$(BIN)/python benchmarks/startup.py
+	$(BIN)/python benchmarks/web_speed.py
 
 notebooks: install node-packages
 	bash scripts/export-notebooks.sh
+
+# The browser page: a folder of static files (Pyodide, SymPy and dhsym as local wheels, MathJax), from the
+# registries only (docs/web.md). Serve it with `python3 -m http.server -d build/web`.
+web: $(RUNTIME) node-packages
+	$(BIN)/python scripts/build_web.py build/web
 
 lint: install
 	$(BIN)/ruff check dhsym tests benchmarks

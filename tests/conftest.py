@@ -19,8 +19,9 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.ge
 # The fast lane (`make check`) leaves out what takes seconds per test and is covered by `make test`:
 # notebooks, the browser, pdflatex, a fresh pip install, fuzzing, property tests that draw many
 # random chains, and dhsym started as a process. `make test` runs everything.
-SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_fuzz.py", "test_velocity_properties.py",
-              "test_urdf_real.py", "test_inverse_random.py", "test_simplify_equals_raw.py",
+SLOW_FILES = ("test_notebooks.py", "test_notebook_pages.py", "test_web_page.py", "test_extras.py", "test_fuzz.py",
+              "test_velocity_properties.py", "test_urdf_real.py", "test_inverse_random.py",
+              "test_simplify_equals_raw.py",
               # real robots solved in closed form (the fast lane keeps test_ik_cli's hand-written solutions,
               # the subproblems and dhsym.inverse's doctests)
               "test_inverse_robots.py", "test_ik_solved.py", "test_ik_text.py")
@@ -55,7 +56,8 @@ SLOW_TESTS = ("test_a_plain_pip_install_works_from_another_folder", "test_case_t
               "test_an_ascii_terminal_gets_advice_not_a_traceback",
               "test_a_named_pipe_nobody_writes_is_refused_at_once_not_waited_for",
               "test_a_named_pipe_nobody_reads_is_refused_as_output_and_no_file_appears",
-              "test_a_socket_is_neither_a_robot_file_nor_an_output", "test_devices_and_standard_input_still_work")
+              "test_a_socket_is_neither_a_robot_file_nor_an_output", "test_devices_and_standard_input_still_work",
+              "test_the_page_imports_nothing_the_browser_lacks")
 SLOW_FIXTURES = ("compiled",)  # tests that run pdflatex
 
 

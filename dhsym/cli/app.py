@@ -34,7 +34,7 @@ from ..errors import Location, UserError
 from ..io import library
 from ..io.robotfile import load_robot_text
 from ..io.yamlsafe import MAX_FILE_BYTES, decode_utf8
-from .messages import printable, warn
+from .messages import missing_extra, printable, warn
 from .options import Parser, VersionAction, default_limit, safety_net, text_width
 
 # Each command and the module (in dhsym.cli) that registers it, in the order `dhsym --help` lists them.
@@ -135,11 +135,21 @@ def main(argv=None, read=library.read) -> int:
         print(f"dhsym: error: the output cannot be written as {error.encoding}; use --ascii, or set "
               f"PYTHONIOENCODING=utf-8", file=sys.stderr)
         return EXIT_USER_ERROR
+    except ImportError as error:  # an optional package (dhsym[plot], [urdf], [xacro]) that is not installed
+        missing = missing_extra(error)
+        if missing is None:
+            return _internal_error(error)
+        print(f"dhsym: error: {missing}", file=sys.stderr)
+        return EXIT_USER_ERROR
     except Exception as error:  # a bug in dhsym, not the user's fault
-        print(f"dhsym: internal error: {type(error).__name__}: {printable(str(error))[:300]} (a bug in dhsym, "
-              f"not a mistake in your input; please report it on {ISSUE_URL} with the command and the robot file)",
-              file=sys.stderr)
-        return EXIT_INTERNAL_ERROR
+        return _internal_error(error)
+
+
+def _internal_error(error: Exception) -> int:
+    print(f"dhsym: internal error: {type(error).__name__}: {printable(str(error))[:300]} (a bug in dhsym, "
+          f"not a mistake in your input; please report it on {ISSUE_URL} with the command and the robot file)",
+          file=sys.stderr)
+    return EXIT_INTERNAL_ERROR
 
 
 def _stopped(given: float | None, limit: float) -> str:
