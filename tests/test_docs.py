@@ -278,7 +278,7 @@ def test_relative_links_point_at_files_and_headings(page):
 def test_the_readme_is_a_five_minute_read():
     """Short, with the examples a newcomer runs first, and a way on to every page in docs/."""
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    assert len(readme.splitlines()) <= 250
+    assert len(readme.splitlines()) <= 260
     assert len(re.findall(r"^\$ dhsym ", readme, re.M)) >= 5
     for page in PAGES[1:]:
         assert f"docs/{page.name}" in readme, f"the README does not lead to docs/{page.name}"
