@@ -33,6 +33,7 @@ from ..core.size import length, tree_size
 from ..errors import UserError
 from . import algebra, lookups
 from . import subproblems as sp
+from .fresh import fresh, fresh_symbol
 from .solution import Step
 from .witness import number_at
 
@@ -52,6 +53,8 @@ class Derivation:
     conditions: list = field(default_factory=list)
     degenerate: list = field(default_factory=list)
     vanishing: list = field(default_factory=list)  # (expression, index in degenerate) where a pair is singular
+    reserved: frozenset = frozenset()  # the robot's own names, which the derivation's never take (dhsym.inverse.fresh)
+    angles: dict = field(default_factory=dict)  # φk -> the sum of angles (or angle and offset) it names
 
 
 @dataclass(frozen=True)
@@ -94,8 +97,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
         if angle == variable:
             derivation.assignments.append((variable, value))
         else:
-            phi = sympy.Symbol(f"phi_{len([a for a, _ in derivation.assignments if str(a).startswith('phi')]) + 1}",
-                               real=True)
+            phi = fresh_symbol(f"phi_{len(derivation.angles) + 1}", derivation.reserved)
+            derivation.angles[phi] = angle
             derivation.assignments.append((phi, value))
             witness[phi] = number_at(angle, witness)
             coefficient = angle.coeff(variable)
@@ -321,7 +324,8 @@ def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
     if value.is_Symbol or value.is_number or length(value) <= 2:
         return value
     taken = {str(name) for name, _ in derivation.assignments}
-    name = next(n for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)] if n not in taken)
+    name = next(n for n in (fresh(n, derivation.reserved) for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)])
+                if n not in taken)
     symbol = sympy.Symbol(name, real=True)
     derivation.assignments.append((symbol, value))
     return symbol
@@ -349,7 +353,7 @@ def _apply(rule, candidates, derivation, constants, witness=None) -> sympy.Expr:
             derivation.vanishing.append((det, len(derivation.degenerate)))
             derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
         return sp.pair(*forms, _signs[forms] if forms in _signs else sp.determinant_sign(*forms))
-    sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
+    sigma = fresh_symbol(f"sigma_{len(derivation.signs) + 1}", derivation.reserved)
     if rule == "linear":
         a, b = first.form
         derivation.steps.append(Step(a * variable, -b, "prismatic joint from a coordinate", (variable,),

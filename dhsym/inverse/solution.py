@@ -2,10 +2,10 @@
 (dhsym.inverse) and every surface that shows it (text, LaTeX, JSON, generated Python).
 
 The target is the 4x4 transform that `dhsym fk` prints by default, written with the names of
-its elements:
+its elements (primed where the robot uses one of them itself, see dhsym.inverse.fresh):
 
->>> target_matrix()[:3, 3].T
-Matrix([[px, py, pz]])
+>>> target_matrix()[:3, 3].T, target_matrix({"px"})[:3, 3].T
+(Matrix([[px, py, pz]]), Matrix([[pxʹ, py, pz]]))
 
 A solution lists `definitions` (intermediate quantities shared by every branch, in order: the
 wrist centre `x_c`, `r`, `D`, ...) and `branches`, each an ordered list of assignments. An
@@ -18,17 +18,14 @@ from dataclasses import dataclass, field
 
 import sympy
 
-TARGET_NAMES = ("r11", "r12", "r13", "px", "r21", "r22", "r23", "py", "r31", "r32", "r33", "pz")
+from .fresh import TARGET_NAMES, reserved, target_symbols
+
+__all__ = ["TARGET_NAMES", "Branch", "Solution", "Step", "target_matrix", "target_symbols"]
 
 
-def target_symbols() -> tuple[sympy.Symbol, ...]:
-    """The twelve names of the target's elements, row by row (r11 r12 r13 px r21 ...)."""
-    return tuple(sympy.Symbol(name, real=True) for name in TARGET_NAMES)
-
-
-def target_matrix() -> sympy.Matrix:
-    """The target as a matrix of names, with the fixed bottom row 0 0 0 1."""
-    return sympy.Matrix(3, 4, target_symbols()).col_join(sympy.Matrix([[0, 0, 0, 1]]))
+def target_matrix(taken=()) -> sympy.Matrix:
+    """The target as a matrix of names (fresh against the names `taken`), with the fixed bottom row 0 0 0 1."""
+    return sympy.Matrix(3, 4, target_symbols(taken)).col_join(sympy.Matrix([[0, 0, 0, 1]]))
 
 
 @dataclass(frozen=True)
@@ -80,5 +77,10 @@ class Solution:
     steps: tuple[Step, ...] = field(default=())
 
     @property
+    def target_symbols(self) -> tuple[sympy.Symbol, ...]:
+        """The names of the target's elements, r11 … pz, each primed where the robot uses it."""
+        return target_symbols(reserved(self.chain))
+
+    @property
     def target(self) -> sympy.Matrix:
-        return target_matrix()
+        return target_matrix(reserved(self.chain))

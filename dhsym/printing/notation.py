@@ -44,6 +44,7 @@ from sympy.printing.latex import translate
 from sympy.printing.pretty.pretty_symbology import greek_unicode, sub, sup
 
 GREEK_NAMES = {letter: name for name, letter in greek_unicode.items()}  # 'θ' -> 'theta'
+PRIME = "\u02b9"  # ʹ, how the inverse kinematics primes a name the robot uses (dhsym.inverse.fresh)
 _COMBINING_BAR = "\u0305"
 _MINUS = {"unicode": " − ", "ascii": " - ", "latex": " - "}
 
@@ -341,7 +342,15 @@ def _index_text(label, sign: int, style: str) -> str:
 
 
 def display_name(name: str, style: str) -> str:
-    """A symbol name as a textbook writes it: theta_1 -> θ1 (unicode), \\theta_{1} (LaTeX)."""
+    """A symbol name as a textbook writes it: theta_1 -> θ1 (unicode), \\theta_{1} (LaTeX); a name
+    the inverse kinematics primed (dhsym.inverse.fresh) with its primes: φ1′, \\phi_{1}', phi1'.
+
+    >>> [display_name("phi_1" + PRIME, style) for style in ("unicode", "latex", "ascii")]
+    ['φ1′', "\\\\phi_{1}'", "phi1'"]
+    """
+    bare = name.rstrip(PRIME)
+    if bare != name and bare:
+        return display_name(bare, style) + ("′" if style == "unicode" else "'") * (len(name) - len(bare))
     if is_word_name(name):
         return "\\mathrm{" + name.replace("_", "\\_") + "}" if style == "latex" else name
     base, supers, subs = split_super_sub(name)
