@@ -349,7 +349,8 @@ def _apply(rule, candidates, derivation, constants, witness=None) -> sympy.Expr:
             if reduced is not det:
                 det = min([det, sympy.factor(reduced)], key=length)
         forms = (candidates[0].form, candidates[1].form)
-        if not det.is_number:
+        if not det.is_number:  # said in the joints' angles: sin(θ5 + 1), not the sin φ2 it was solved through
+            det = det.xreplace(derivation.angles)
             derivation.vanishing.append((det, len(derivation.degenerate)))
             derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
         return sp.pair(*forms, _signs[forms] if forms in _signs else sp.determinant_sign(*forms))
