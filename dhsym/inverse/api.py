@@ -25,7 +25,7 @@ from __future__ import annotations
 from ..core.robot import as_robot
 from ..errors import UserError
 from .codegen import module_text
-from .evaluate import evaluate
+from .evaluate import Program
 from .naming import checked_names
 from .solve import solve
 from .written import as_written, with_written_symbols
@@ -70,10 +70,24 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
 
 
 class InverseKinematics:
-    """A closed-form solution (`solution`, see dhsym.inverse.solution) and what a user does with it."""
+    """A closed-form solution (`solution`, see dhsym.inverse.solution) and what a user does with it.
+    It pickles and deep-copies (the solution's expressions as they are); the compiled module that
+    `evaluate` keeps is compiled again where it is needed."""
 
     def __init__(self, solution):
         self.solution = solution
+        self._program = None  # the generated module, compiled on first use (dhsym.inverse.evaluate)
+
+    def __getstate__(self) -> dict:
+        return {"solution": self.solution}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__init__(state["solution"])
+
+    def _compiled(self) -> Program:
+        if self._program is None:
+            self._program = Program(self.solution)
+        return self._program
 
     def __repr__(self) -> str:
         count = len(self.branches)
@@ -94,8 +108,9 @@ class InverseKinematics:
 
     def evaluate(self, T, **constants):
         """Every branch's joint values for the pose T (4×4) or poses (N×4×4), NaN where a branch
-        does not exist; constants default to the robot file's sample values."""
-        return evaluate(self.solution, T, constants or None)
+        does not exist; constants default to the robot file's sample values; a name the robot
+        does not have is an error that names those it has."""
+        return self._compiled()(T, constants)
 
     def code(self, command: str = "") -> str:
         """The standalone numpy module (`dhsym ik --format python`)."""
@@ -103,9 +118,7 @@ class InverseKinematics:
 
     def function(self):
         """`ik(T, **constants)` of the generated module, ready to call."""
-        namespace: dict = {}
-        exec(compile(self.code(), f"<ik of {self.solution.chain.name}>", "exec"), namespace)  # our own text
-        return namespace["ik"]
+        return self._compiled().function
 
     def latex(self):
         """The derivation and every branch as LaTeX that Jupyter renders (`print()` shows the source)."""

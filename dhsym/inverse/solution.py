@@ -11,6 +11,8 @@ A solution lists `definitions` (intermediate quantities shared by every branch, 
 wrist centre `x_c`, `r`, `D`, ...) and `branches`, each an ordered list of assignments. An
 assignment may use the target's names, the robot's constants, the definitions and the names
 assigned before it in its branch; every joint variable is assigned in every branch.
+
+A solution pickles and deep-copies with its expressions as they are (dhsym.inverse.frozen).
 """
 from __future__ import annotations
 
@@ -19,6 +21,7 @@ from dataclasses import dataclass, field
 import sympy
 
 from .fresh import TARGET_NAMES, reserved, target_symbols
+from .frozen import KeepsForm
 
 __all__ = ["TARGET_NAMES", "Branch", "Solution", "Step", "target_matrix", "target_symbols"]
 
@@ -29,7 +32,7 @@ def target_matrix(taken=()) -> sympy.Matrix:
 
 
 @dataclass(frozen=True)
-class Step:
+class Step(KeepsForm):
     """One equation of the derivation, as a student writes it: `lhs = rhs`, the sub-problem it is
     an instance of (e.g. "a cos θ + b sin θ = c", "law of cosines", "atan2 of a pair",
     "prismatic joint from a distance", "sum of parallel-axis angles", "Euler angles of the wrist"),
@@ -43,7 +46,7 @@ class Step:
 
 
 @dataclass(frozen=True)
-class Branch:
+class Branch(KeepsForm):
     """One solution branch: a name in words ("shoulder left, elbow up, wrist not flipped") and its
     assignments [(name, expression), ...] in the order they are computed."""
 
@@ -56,7 +59,7 @@ class Branch:
 
 
 @dataclass(frozen=True)
-class Solution:
+class Solution(KeepsForm):
     """A closed-form inverse-kinematics solution of a chain.
 
     `method` says in words how it was found ("kinematic decoupling: axes 4, 5, 6 meet at the wrist
