@@ -24,13 +24,13 @@ from __future__ import annotations
 
 from ..core.robot import as_robot
 from ..errors import UserError
+from .bounds import redundancy, redundant_message, refuse_unbounded
 from .codegen import module_text
 from .evaluate import Program
 from .naming import checked_names
+from .redundant import working_free
 from .solve import solve
 from .written import as_written, with_written_symbols
-
-POSE_DOF = 6  # a pose fixes six numbers: a closed form has finitely many branches for at most six unknowns
 
 
 def free_variables(chain, names, option: str = "--free") -> tuple:
@@ -44,15 +44,6 @@ def free_variables(chain, names, option: str = "--free") -> tuple:
             raise UserError(f"{option} {text}: {chain.name or 'the robot'} has no joint variable {text}; its joint "
                             f"variables are {', '.join(variables)}")
         chosen.append(variables[text])
-    unknowns = chain.n - len(set(chosen))
-    if unknowns > POSE_DOF:
-        extra = unknowns - POSE_DOF
-        left = [v.name for v in chain.joint_variables if v not in chosen]
-        middle = (len(left) - extra) // 2  # an elbow joint, as a course would choose
-        example = " ".join(left[middle:middle + extra])
-        raise UserError(f"{chain.name or 'the robot'} has {chain.n} joints, {unknowns} of them unknown, but a pose "
-                        f"fixes only {POSE_DOF}: make {extra} of them {'a parameter' if extra == 1 else 'parameters'} "
-                        f"with {option}, e.g. {option} {example}")
     return tuple(v for v in chain.joint_variables if v in chosen)
 
 
@@ -62,6 +53,12 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     dhsym.inverse.written); its messages and titles use the robot's name and frame numbers."""
     robot = as_robot(chain)
     variables = free_variables(robot, free)
+    refuse_unbounded(robot)
+    redundant = redundancy(robot, variables)
+    if redundant:  # a closed form needs other or more parameters: which ones, checked by deriving with them
+        kept, count = ((), redundant.needed) if redundant.lost else (variables, redundant.extra)
+        example, tried = working_free(robot, kept, count) if count else ((), 0)
+        raise UserError(redundant_message(robot, variables, redundant, example, tried))
     numbers = robot.numbers  # how the file wrote its numbers: the one place this reads it
     solving, written = with_written_symbols(robot, numbers)
     solution = solve(solving, free=variables)

@@ -20,6 +20,7 @@ import sympy
 
 from ..core.robot import as_robot
 from ..errors import UserError
+from .bounds import redundancy, redundant_message, refuse_unbounded
 from .branches import branch_name
 from .equations import point_equations, transform_equations
 from .fresh import fresh_symbol, reserved
@@ -42,6 +43,10 @@ def solve(chain, free=()) -> Solution:
     robot = as_robot(chain)
     chain = robot.chain
     free = free_variables(chain, free)
+    refuse_unbounded(robot)  # before any algebra: the size of the work, the motions the unknowns make
+    redundant = redundancy(robot, free)
+    if redundant:
+        raise UserError(redundant_message(robot, free, redundant))
     structure = analyse(robot, free)
     unknowns = [chain.joint_variables[j - 1] for j in structure.unknowns]
     prismatic = {v for v, row in zip(chain.joint_variables, chain.rows) if row.joint == "P"} & set(unknowns)
