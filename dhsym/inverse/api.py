@@ -53,9 +53,9 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     dhsym.inverse.written); its messages and titles use the robot's name and frame numbers."""
     robot = as_robot(chain)
     variables = free_variables(robot, free)
-    refuse_unbounded(robot)
     redundant = redundancy(robot, variables)
     if redundant:  # a closed form needs other or more parameters: which ones, checked by deriving with them
+        refuse_unbounded(robot)  # else no choice could be derived
         kept, count = ((), redundant.needed) if redundant.lost else (variables, redundant.extra)
         example, tried = working_free(robot, kept, count) if count else ((), 0)
         raise UserError(redundant_message(robot, variables, redundant, example, tried))

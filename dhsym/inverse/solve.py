@@ -43,11 +43,11 @@ def solve(chain, free=()) -> Solution:
     robot = as_robot(chain)
     chain = robot.chain
     free = free_variables(chain, free)
-    refuse_unbounded(robot)  # before any algebra: the size of the work, the motions the unknowns make
-    redundant = redundancy(robot, free)
+    redundant = redundancy(robot, free)  # before any algebra: the motions the unknowns make, the axes, the work
     if redundant:
         raise UserError(redundant_message(robot, free, redundant))
     structure = analyse(robot, free)
+    refuse_unbounded(robot)
     unknowns = [chain.joint_variables[j - 1] for j in structure.unknowns]
     prismatic = {v for v, row in zip(chain.joint_variables, chain.rows) if row.joint == "P"} & set(unknowns)
     target, fixed = _target(chain, len(unknowns))  # its names primed where the robot uses them (dhsym.inverse.fresh)
