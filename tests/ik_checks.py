@@ -53,13 +53,10 @@ def used_target(data: dict) -> list:
     return [plain for plain, name in zip(TARGET_NAMES, data["target"]) if name in used]
 
 
-FUNCTION_NAMES = {"atan2", "sqrt", "cos", "sin", "acos", "asin", "Abs", "sign", "pi"}
-
-
 def _names(expression: str) -> set:
-    """The names an expression uses, read with every name as a symbol: a robot's `len` or `E` is
-    its constant, not Python's len() or Euler's number."""
-    names = set(re.findall(r"[^\W\d]\w*", expression)) - FUNCTION_NAMES
+    """The names an expression uses, read with every name that is not called as a symbol: a robot's
+    `len` or `E` is its constant, not Python's len() or Euler's number."""
+    names = {name for name, call in re.findall(r"(?<![\w.])([^\W\d]\w*)(\s*\()?", expression) if not call} - {"pi"}
     value = sympy.sympify(expression, locals={name: sympy.Symbol(name) for name in names})
     functions = {type(f) for f in value.atoms(sympy.Function)}
     assert functions <= ALLOWED_FUNCTIONS, (expression, functions)
