@@ -260,7 +260,7 @@ def _shared_subexpressions(lines, taken: set, code) -> list[str]:
     renamed = {}
     for symbol, value in replacements:
         if isinstance(value, (sympy.cos, sympy.sin)) and value.args[0].is_Symbol:
-            text = f"{type(value).__name__}_{value.args[0].name}"
+            text = f"{type(value).__name__}_{code.doprint(value.args[0])}"
             if text not in taken:
                 taken.add(text)
                 renamed[symbol] = sympy.Dummy(text)

@@ -130,7 +130,7 @@ class _InverseNotation:
 
 
 _FUNCTION = {sympy.cos: "c", sympy.sin: "s"}
-_SUBSCRIPT = re.compile(r"_\{(\w+)\}$")
+_SUBSCRIPT = re.compile(r"_\{(\w+)\}('*)$")  # \phi_{1}' -> \phi 1': a prime of the derivation's stays
 
 
 class NamedAngle(Abbreviation):
@@ -149,7 +149,7 @@ class NamedAngle(Abbreviation):
     def label(self, style: str) -> str:
         name = display_name(self.indices[0][0].name, style)
         if style == "latex":
-            return self.function + "_{" + _SUBSCRIPT.sub(r" \1", name) + "}"  # \phi_{1} -> \phi 1
+            return self.function + "_{" + _SUBSCRIPT.sub(r" \1\2", name) + "}"  # \phi_{1} -> \phi 1
         return self.function + (f"({name})" if style == "ascii" else name)  # c(phi1), as a lettered joint
 
 
