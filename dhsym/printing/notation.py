@@ -343,11 +343,7 @@ def _index_text(label, sign: int, style: str) -> str:
 
 def display_name(name: str, style: str) -> str:
     """A symbol name as a textbook writes it: theta_1 -> θ1 (unicode), \\theta_{1} (LaTeX); a name
-    the inverse kinematics primed (dhsym.inverse.fresh) with its primes: φ1′, \\phi_{1}', phi1'.
-
-    >>> [display_name("phi_1" + PRIME, style) for style in ("unicode", "latex", "ascii")]
-    ['φ1′', "\\\\phi_{1}'", "phi1'"]
-    """
+    the inverse kinematics primed (dhsym.inverse.fresh), phi_1ʹ, as φ1′ (unicode), \\phi_{1}' (LaTeX)."""
     bare = name.rstrip(PRIME)
     if bare != name and bare:
         return display_name(bare, style) + ("′" if style == "unicode" else "'") * (len(name) - len(bare))
