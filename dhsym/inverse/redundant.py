@@ -1,10 +1,10 @@
 """Which joints to make parameters of a redundant arm. A course makes an elbow joint a parameter,
-but not every joint will do: the iiwa's θ4, the elbow of an arm whose shoulder and wrist are
-spherical (S-R-S), leaves no three consecutive axes that a course's rules solve. So a joint is
-named only after a derivation with it made a parameter has worked: runs of consecutive unknown
-joints, from the middle of the arm outward, first checked cheaply (the axes' structure, the motions
-left), then derived, at most HINT_DERIVATIONS of them, each bounded like every derivation
-(dhsym.inverse.bounds).
+but not every joint will do: the iiwa's θ4, the elbow between a spherical shoulder and a spherical
+wrist (S-R-S), held fixed leaves the two at a fixed distance, and the other six joints move the end
+in five ways only. So a joint is named only after a derivation with it made a parameter has
+worked: runs of consecutive unknown joints, from the middle of the arm outward, first checked
+cheaply (the axes' structure, the motions left: the iiwa's θ4 goes no further), then derived, at
+most HINT_DERIVATIONS of them, each bounded like every derivation (dhsym.inverse.bounds).
 
 >>> import dhsym
 >>> working_free(dhsym.load("iiwa7"), (), 1)
