@@ -47,6 +47,7 @@ def test_more_unknowns_than_the_arm_has_motions_is_refused_before_the_derivation
         robot.ik()
 
 
+@pytest.mark.slow  # three derivations of the iiwa
 def test_the_free_hint_is_a_joint_that_works():
     """The iiwa's middle joint θ4 is the elbow between a spherical shoulder and wrist (S-R-S): with it
     a parameter the two are at a fixed distance, and the other six joints move the end in five ways

@@ -67,7 +67,11 @@ def folder(tmp_path_factory):
     return path
 
 
-@pytest.mark.parametrize("name", list(ROBOTS))
+SIX_JOINTS = ("puma_K_sigma", "stanford_xc_r13")  # seconds each
+
+
+@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.slow) if name in SIX_JOINTS else name
+                                  for name in ROBOTS])
 def test_every_branch_reaches_the_pose_whatever_the_robot_names(name, folder, tmp_path):
     path = str(folder / f"{name}.yaml")
     chain = load(path)

@@ -50,6 +50,7 @@ def test_the_imported_ur5_with_a_wrist_offset(offset, tmp_path):
     check_reaches(offset_file(imported.read_text(encoding="utf-8"), "theta: q_5,", offset, tmp_path, "ur5_offset"))
 
 
+@pytest.mark.slow
 def test_the_puma_says_where_its_wrist_lines_up_with_the_offset(tmp_path):
     text = (ROBOTS_DIR / "puma560.yaml").read_text(encoding="utf-8")
     path = offset_file(text, WRISTS["puma560"], "1", tmp_path, "puma_offset")
