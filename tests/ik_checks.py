@@ -3,6 +3,7 @@ contract (readable, consistent), the generated module (importable, right shapes,
 reach the pose, the original joint values among them)."""
 import importlib.util
 import json
+import re
 
 import numpy as np
 import sympy
@@ -17,15 +18,19 @@ ALLOWED_FUNCTIONS = {sympy.atan2, sympy.sqrt, sympy.cos, sympy.sin, sympy.acos, 
 def check_json(text: str, chain) -> dict:
     """The documented keys; every expression read back by sympify; every joint assigned in every
     branch; each assignment uses only the target, the constants, the definitions and the names
-    assigned before it."""
+    assigned before it; the target's names and the derivation's are never the robot's own (a
+    robot's D or px stays its own; the derivation's get a prime, ʹ)."""
     data = json.loads(text)
     assert set(data) == JSON_KEYS
-    assert data["target"] == list(TARGET_NAMES)
+    robot = {s.name for s in chain.symbols}
+    assert [name.rstrip("ʹ") for name in data["target"]] == list(TARGET_NAMES)
+    assert not set(data["target"]) & robot
     assert data["joint_variables"] == [v.name for v in chain.joint_variables]
-    constants = {s.name for s in chain.symbols} - set(data["joint_variables"]) | set(data["free"])
-    known = set(TARGET_NAMES) | constants
+    constants = robot - set(data["joint_variables"]) | set(data["free"])
+    known = set(data["target"]) | constants
     for name, expression in data["definitions"]:
         assert _names(expression) <= known, (name, expression)
+        assert name not in robot, name
         known.add(name)
     assert data["solutions"], "no branch"
     for branch in data["solutions"]:
@@ -33,6 +38,7 @@ def check_json(text: str, chain) -> dict:
         seen = set(known)
         for name, expression in branch["assignments"]:
             assert _names(expression) <= seen, (branch["name"], name, expression)
+            assert name not in robot or name in data["joint_variables"], name
             seen.add(name)
         assert set(data["joint_variables"]) - set(data["free"]) <= {name for name, _ in branch["assignments"]}
     assert all(isinstance(text, str) for text in data["conditions"] + data["degenerate"])
@@ -40,14 +46,18 @@ def check_json(text: str, chain) -> dict:
 
 
 def used_target(data: dict) -> list:
-    """The target's elements a solution reads (JSON), in the target's order."""
+    """The target's elements a solution reads (JSON), in the target's order, by their plain names
+    (px, also where the solution calls it pxʹ)."""
     expressions = [e for _, e in data["definitions"]] + [e for b in data["solutions"] for _, e in b["assignments"]]
     used = set().union(*(_names(e) for e in expressions))
-    return [name for name in TARGET_NAMES if name in used]
+    return [plain for plain, name in zip(TARGET_NAMES, data["target"]) if name in used]
 
 
 def _names(expression: str) -> set:
-    value = sympy.sympify(expression)
+    """The names an expression uses, read with every name that is not called as a symbol: a robot's
+    `len` or `E` is its constant, not Python's len() or Euler's number."""
+    names = {name for name, call in re.findall(r"(?<![\w.])([^\W\d]\w*)(\s*\()?", expression) if not call} - {"pi"}
+    value = sympy.sympify(expression, locals={name: sympy.Symbol(name) for name in names})
     functions = {type(f) for f in value.atoms(sympy.Function)}
     assert functions <= ALLOWED_FUNCTIONS, (expression, functions)
     return {s.name for s in value.free_symbols}

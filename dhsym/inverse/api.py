@@ -24,13 +24,13 @@ from __future__ import annotations
 
 from ..core.robot import as_robot
 from ..errors import UserError
+from .bounds import redundancy, redundant_message, refuse_unbounded
 from .codegen import module_text
-from .evaluate import evaluate
+from .evaluate import Program
 from .naming import checked_names
+from .redundant import working_free
 from .solve import solve
 from .written import as_written, with_written_symbols
-
-POSE_DOF = 6  # a pose fixes six numbers: a closed form has finitely many branches for at most six unknowns
 
 
 def free_variables(chain, names, option: str = "--free") -> tuple:
@@ -44,15 +44,6 @@ def free_variables(chain, names, option: str = "--free") -> tuple:
             raise UserError(f"{option} {text}: {chain.name or 'the robot'} has no joint variable {text}; its joint "
                             f"variables are {', '.join(variables)}")
         chosen.append(variables[text])
-    unknowns = chain.n - len(set(chosen))
-    if unknowns > POSE_DOF:
-        extra = unknowns - POSE_DOF
-        left = [v.name for v in chain.joint_variables if v not in chosen]
-        middle = (len(left) - extra) // 2  # an elbow joint, as a course would choose
-        example = " ".join(left[middle:middle + extra])
-        raise UserError(f"{chain.name or 'the robot'} has {chain.n} joints, {unknowns} of them unknown, but a pose "
-                        f"fixes only {POSE_DOF}: make {extra} of them {'a parameter' if extra == 1 else 'parameters'} "
-                        f"with {option}, e.g. {option} {example}")
     return tuple(v for v in chain.joint_variables if v in chosen)
 
 
@@ -62,6 +53,12 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
     dhsym.inverse.written); its messages and titles use the robot's name and frame numbers."""
     robot = as_robot(chain)
     variables = free_variables(robot, free)
+    redundant = redundancy(robot, variables)
+    if redundant:  # a closed form needs other or more parameters: which ones, checked by deriving with them
+        refuse_unbounded(robot)  # else no choice could be derived
+        kept, count = ((), redundant.needed) if redundant.lost else (variables, redundant.extra)
+        example, tried = working_free(robot, kept, count) if count else ((), 0)
+        raise UserError(redundant_message(robot, variables, redundant, example, tried))
     numbers = robot.numbers  # how the file wrote its numbers: the one place this reads it
     solving, written = with_written_symbols(robot, numbers)
     solution = solve(solving, free=variables)
@@ -70,10 +67,24 @@ def inverse_kinematics(chain, free=()) -> "InverseKinematics":
 
 
 class InverseKinematics:
-    """A closed-form solution (`solution`, see dhsym.inverse.solution) and what a user does with it."""
+    """A closed-form solution (`solution`, see dhsym.inverse.solution) and what a user does with it.
+    It pickles and deep-copies (the solution's expressions as they are); the compiled module that
+    `evaluate` keeps is compiled again where it is needed."""
 
     def __init__(self, solution):
         self.solution = solution
+        self._program = None  # the generated module, compiled on first use (dhsym.inverse.evaluate)
+
+    def __getstate__(self) -> dict:
+        return {"solution": self.solution}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__init__(state["solution"])
+
+    def _compiled(self) -> Program:
+        if self._program is None:
+            self._program = Program(self.solution)
+        return self._program
 
     def __repr__(self) -> str:
         count = len(self.branches)
@@ -94,8 +105,9 @@ class InverseKinematics:
 
     def evaluate(self, T, **constants):
         """Every branch's joint values for the pose T (4×4) or poses (N×4×4), NaN where a branch
-        does not exist; constants default to the robot file's sample values."""
-        return evaluate(self.solution, T, constants or None)
+        does not exist; constants default to the robot file's sample values; a name the robot
+        does not have is an error that names those it has."""
+        return self._compiled()(T, constants)
 
     def code(self, command: str = "") -> str:
         """The standalone numpy module (`dhsym ik --format python`)."""
@@ -103,9 +115,7 @@ class InverseKinematics:
 
     def function(self):
         """`ik(T, **constants)` of the generated module, ready to call."""
-        namespace: dict = {}
-        exec(compile(self.code(), f"<ik of {self.solution.chain.name}>", "exec"), namespace)  # our own text
-        return namespace["ik"]
+        return self._compiled().function
 
     def latex(self):
         """The derivation and every branch as LaTeX that Jupyter renders (`print()` shows the source)."""

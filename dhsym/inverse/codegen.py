@@ -24,22 +24,22 @@ numbers; an angle from them is NaN where its root is not real.
 """
 from __future__ import annotations
 
+import builtins
 import keyword
 
 import sympy
 from sympy.printing.numpy import NumPyPrinter
 
 from ..core.numbers import decimal_text
+from .fresh import PRIME
 from .quartic import Complex
-from .solution import TARGET_NAMES
 
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when its imaginary part is this small
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
              "angles", "elements", "missing", "k", "real_angle", "IMAGINARY"}  # the module's own names
-_ELEMENTS = {name: (row, column) for row in range(3) for column, name in
-             enumerate(TARGET_NAMES[4 * row:4 * row + 4])}
+_BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
 class _NumpyCode(NumPyPrinter):
@@ -89,18 +89,24 @@ class _NumpyCode(NumPyPrinter):
 
 
 def python_names(names) -> dict:
-    """{symbol name: a Python identifier for it}: a keyword, a name the module uses itself or a
-    name Python cannot spell gets a trailing underscore or a plain replacement.
+    """{symbol name: a Python identifier for it}: a keyword, a built-in (len, float), a name the
+    module uses itself or one taken already gets a trailing underscore; leading underscores move to
+    the end, a derivation's prime is spelt out (Dʹ: D_prime), and a name Python cannot spell in
+    ASCII gets a plain replacement.
 
     >>> python_names(["theta_1", "lambda", "T", "x-1"])
     {'theta_1': 'theta_1', 'lambda': 'lambda_', 'T': 'T_', 'x-1': 'symbol_3'}
+    >>> python_names(["len", "_l", "Dʹ"])
+    {'len': 'len_', '_l': 'l_', 'Dʹ': 'D_prime'}
     """
     out, taken = {}, set()
     for position, name in enumerate(names):
-        safe = name
-        if not name.isidentifier() or not name.isascii():
+        spelt = name.replace(PRIME, "_prime")
+        bare = spelt.lstrip("_")
+        safe = bare + "_" * (len(spelt) - len(bare))
+        if not bare or not safe.isidentifier() or not safe.isascii():
             safe = f"symbol_{position}"
-        while keyword.iskeyword(safe) or safe in _INTERNAL or safe in taken or safe.startswith("_"):
+        while keyword.iskeyword(safe) or safe in _INTERNAL or safe in _BUILTINS or safe in taken:
             safe += "_"
         out[name] = safe
         taken.add(safe)
@@ -127,11 +133,11 @@ def module_text(solution, command: str = "") -> str:
     keywords += [names[s.name] for s in solution.free]
     used = set().union(*(value.free_symbols for _, value in solution.definitions),
                        *(value.free_symbols for branch in solution.branches for _, value in branch.assignments))
-    elements = [name for name in TARGET_NAMES if sympy.Symbol(name, real=True) in used
-                or sympy.Symbol(name) in used]
+    held = {symbol.name for symbol in used}
+    elements = [(k, element.name) for k, element in enumerate(solution.target_symbols) if element.name in held]
     kinds = {row.variable: row.joint for row in chain.rows}
     revolute = tuple(k for k, joint in enumerate(joints) if kinds.get(joint) == "R")
-    body = [f"    {names[name]} = elements[{4 * _ELEMENTS[name][0] + _ELEMENTS[name][1]}]" for name in elements]
+    body = [f"    {names[name]} = elements[{k}]" for k, name in elements]
     body.append(f"    result = numpy.empty(({len(solution.branches)}, {len(joints)}, len(poses)))"
                 "  # each value's poses side by side: faster")
     body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
@@ -194,7 +200,8 @@ def _names(solution) -> tuple[dict, list]:
     constants = sorted((s for s in chain.symbols if s not in chain.joint_variables), key=lambda s: s.name)
     definitions = [name for name, _ in solution.definitions]
     assigned = {name for branch in solution.branches for name, _ in branch.assignments}
-    names = python_names([s.name for s in joints + constants + list(solution.free) + definitions] + list(TARGET_NAMES)
+    names = python_names([s.name for s in joints + constants + list(solution.free) + definitions]
+                         + [s.name for s in solution.target_symbols]
                          + sorted({s.name for s in assigned} - {s.name for s in joints}))
     return names, constants
 
@@ -253,7 +260,7 @@ def _shared_subexpressions(lines, taken: set, code) -> list[str]:
     renamed = {}
     for symbol, value in replacements:
         if isinstance(value, (sympy.cos, sympy.sin)) and value.args[0].is_Symbol:
-            text = f"{type(value).__name__}_{value.args[0].name}"
+            text = f"{type(value).__name__}_{code.doprint(value.args[0])}"
             if text not in taken:
                 taken.add(text)
                 renamed[symbol] = sympy.Dummy(text)

@@ -8,12 +8,18 @@ with numpy (imported here only, on first use: the symbolic commands never load i
 >>> numpy.round(evaluate(solve(arm), pose), 6)
 array([[ 0.      ,  1.570796],
        [ 1.349482, -1.570796]])
+
+A constant the robot does not have is an error, not a value quietly left out:
+
+>>> evaluate(solve(arm), pose, {"a_3": 1.0})
+Traceback (most recent call last):
+...
+dhsym.errors.UserError: Planar elbow manipulator (2R) has no constant a_3; its constants are a_1, a_2
 """
 from __future__ import annotations
 
+from ..errors import UserError
 from .codegen import keyword_names, module_text
-
-COMPILED_KEPT = 64  # compiled solutions kept between calls
 
 
 def evaluate(solution, T, constants=None):
@@ -21,34 +27,39 @@ def evaluate(solution, T, constants=None):
     branches in solution order, joints in `solution.joint_variables` order, NaN where a branch
     does not exist. `constants` maps the robot's symbols (and --free joint variables), or their
     names, to numbers; the robot's sample values are the defaults. The numbers come from the
-    module `dhsym ik --format python` writes (dhsym.inverse.codegen), compiled once per solution:
-    one generator for the printed module and for this."""
-    function, keywords, required = _program(solution)
-    given = {getattr(k, "name", str(k)): v for k, v in (constants or {}).items()}
-    for name in required:
-        if name not in given:
-            from ..errors import UserError
-            raise UserError(f"no value for {name}: give it in the constants (a --free joint variable needs one)")
-    return function(T, **{keywords[name]: float(value) for name, value in given.items() if name in keywords})
+    module `dhsym ik --format python` writes (dhsym.inverse.codegen): one generator for the
+    printed module and for this. A `Program` compiles it once for many calls."""
+    return Program(solution)(T, constants)
 
 
-_compiled: dict = {}
+class Program:
+    """The generated module's `ik` for one solution, compiled once, and the names of its keyword
+    arguments: what `robot.ik().evaluate()` keeps between calls (each solution its own)."""
 
-
-def _program(solution):
-    """(the module's ik function, {constant name: keyword}, the names that have no default), kept per solution."""
-    key = (id(solution.chain), solution.definitions, solution.branches, solution.joint_variables, solution.free)
-    if key not in _compiled:
-        if len(_compiled) > COMPILED_KEPT:  # a long session solving many arms keeps only recent ones
-            _compiled.clear()
+    def __init__(self, solution):
         namespace: dict = {}
         exec(compile(module_text(solution), f"<ik of {solution.chain.name}>", "exec"), namespace)  # our own text
-        _compiled[key] = (namespace["ik"], *_constants(solution))
-    return _compiled[key]
+        self.function = namespace["ik"]
+        self.keywords = keyword_names(solution)  # constant or --free joint name -> keyword of ik()
+        sample = {str(symbol) for symbol in solution.chain.sample}
+        self.required = [name for name in self.keywords if name not in sample]
+        self.free = {symbol.name for symbol in solution.free}
+        self.robot = solution.chain.name or "the robot"
 
+    def __call__(self, T, constants=None):
+        given = {getattr(k, "name", str(k)): v for k, v in (constants or {}).items()}
+        for name in given:
+            if name not in self.keywords:
+                raise UserError(self._unknown(name))
+        for name in self.required:
+            if name not in given:
+                raise UserError(f"no value for {name}: give it in the constants (a --free joint variable needs one)")
+        return self.function(T, **{self.keywords[name]: float(value) for name, value in given.items()})
 
-def _constants(solution):
-    """({constant name: keyword of the module's ik()}, the names that have no default)."""
-    keywords = keyword_names(solution)
-    sample = {str(symbol) for symbol in solution.chain.sample}
-    return keywords, [name for name in keywords if name not in sample]
+    def _unknown(self, name: str) -> str:
+        """The message for a constant the robot does not have, naming those it has."""
+        constants = [known for known in self.keywords if known not in self.free]
+        said = f"its constants are {', '.join(constants)}" if constants else "it has no constants"
+        if self.free:
+            said += f", its --free joint variables {', '.join(known for known in self.keywords if known in self.free)}"
+        return f"{self.robot} has no constant {name}; {said}"

@@ -25,6 +25,7 @@ import sympy
 from ..core.numbers import WrittenNumbers
 from ..core.transforms import joint_axis_frame
 from ..errors import UserError
+from .fresh import fresh, fresh_symbol
 from .quartic import SIGNS, Complex, ferrari
 from .scan import Derivation
 from .solution import Step
@@ -66,8 +67,9 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
     if sympy.simplify(exact(det)) == 0:
         raise UserError("Pieper's method: the arm's equations are not of the general kind (axes 1 and 2 meet or are "
                         "parallel), and the sub-problems did not solve them")
-    known = set(map(str, taken)) | {str(s) for s in chain.symbols}
+    known = set(map(str, taken)) | {str(s) for s in chain.symbols} | derivation.reserved
     names = _fresh(("r_c", "u", "f_1", "f_2", "k_1", "k_2", "g_1", "g_2") + NAMES, known)
+    signs = tuple(fresh_symbol(sign.name, known) for sign in SIGNS)
     r_c = sympy.Symbol(names[0], real=True)
     u = Complex(names[1])
     f1, f2, k1, k2, g1, g2 = (sympy.Symbol(n, real=True) for n in names[2:8])
@@ -83,7 +85,7 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
     if sympy.expand(exact(coefficients[0])) == 0:
         raise UserError(f"Pieper's method: the quartic in tan(θ{n3}/2) loses its leading term (θ{n3} = π solves "
                         "every pose): not handled")
-    definitions, root = ferrari(coefficients, names[8:])
+    definitions, root = ferrari(coefficients, names[8:], signs)
     scale = sympy.sign(det) if det.is_number else det  # det² > 0: the pair's atan2 keeps its quadrant
     norm = scale * det  # (k1, k2) = norm · Rz(θ2)(f1, f2)
     turned = _turned(sympy.Matrix([f1, f2, h[2]]), c2, s2)
@@ -96,7 +98,7 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
                                (t2, turn * sympy.atan2(k2 * f1 - k1 * f2, k1 * f1 + k2 * f2)),
                                (g1, _tidy(g[0])), (g2, _tidy(g[1])),
                                (t1, turn * sympy.atan2(_tidy(q[1] * g1 - q[0] * g2), _tidy(q[0] * g1 + q[1] * g2)))]
-    derivation.signs.extend([(SIGNS[0], t3, "quartic"), (SIGNS[1], t3, "quartic")])
+    derivation.signs.extend([(signs[0], t3, "quartic"), (signs[1], t3, "quartic")])
     a4, a3, a2, a1, a0 = (sympy.Symbol(n, real=True) for n in names[8:13])
     derivation.steps += [
         Step(r_c, _tidy(length + 2 * (u1.T * _turned(h, c2, s2))[0] + offset.dot(offset)),
@@ -191,12 +193,10 @@ def _tidy(expr):
 
 
 def _fresh(names, taken: set) -> list[str]:
+    """Each of `names` fresh against `taken` and the ones before it (dhsym.inverse.fresh)."""
     out = []
     for name in names:
-        chosen = name
-        while chosen in taken:
-            chosen += "_"
-        taken.add(chosen)
-        out.append(chosen)
+        out.append(fresh(name, taken))
+        taken.add(out[-1])
     return out
 

@@ -21,7 +21,6 @@ import sympy
 from sympy.printing.pycode import PythonCodePrinter
 
 from .codegen import ROUNDING
-from .solution import target_symbols
 from .written import Written
 
 
@@ -34,7 +33,7 @@ class BranchValues:
     def __init__(self, solution, wanted):
         self._slots: dict = {}  # symbol -> its place in the list of values
         printer = _MathCode(self._slots)
-        for symbol in target_symbols():
+        for symbol in solution.target_symbols:
             printer.slot(symbol)
         compiled: dict = {}  # expression -> function, each distinct one compiled once
 
@@ -54,7 +53,7 @@ class BranchValues:
             steps = [(printer.slot(name), function(value)) for name, value in branch.assignments if name in kept]
             self._branches.append(([name for name, _ in branch.assignments if name in kept], steps))
         self._shared = [(printer.slot(name), function(value)) for name, value in solution.definitions]
-        targets = set(target_symbols())
+        targets = set(solution.target_symbols)
         self._constants = [s for s in self._slots if s not in targets]
 
     def __call__(self, target, constants: dict) -> list:

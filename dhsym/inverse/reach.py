@@ -36,7 +36,7 @@ from itertools import product
 
 from ..core.robot import as_robot
 from ..velocity.geometry import poses
-from .solution import target_symbols
+from .fresh import reserved, target_symbols
 from .witness import SEED, number_at, witness
 
 SEEDS = (SEED, SEED + 1, SEED + 2)  # a wrong root is wrong at any generic pose; three spare a non-real one
@@ -56,10 +56,11 @@ def wrong_root(robot, definitions, derivation, unknowns):
         return None
     steps = list(definitions) + list(derivation.assignments)
     held = set().union(*(expression.free_symbols for _, expression in steps))
-    used = [k for k, t in enumerate(target_symbols()) if t in held or len(unknowns) >= POSE_JOINTS]
+    targets = target_symbols(reserved(chain))
+    used = [k for k, t in enumerate(targets) if t in held or len(unknowns) >= POSE_JOINTS]
     for seed in SEEDS:
         numbers = witness(robot, seed)
-        target = [float(numbers[t]) for t in target_symbols()]
+        target = [float(numbers[t]) for t in targets]
         given = {s: float(x) for s, x in numbers.items() if s not in unknowns}
         reached = {choice: _reaches(chain, steps, {**given, **dict(zip(signs, choice))}, target, used)
                    for choice in product((1, -1), repeat=len(signs))}

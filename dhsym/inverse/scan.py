@@ -31,8 +31,10 @@ import sympy
 
 from ..core.size import length, tree_size
 from ..errors import UserError
-from . import algebra, lookups
+from . import algebra
 from . import subproblems as sp
+from .fresh import fresh, fresh_symbol
+from .lookups import Memos
 from .solution import Step
 from .witness import number_at
 
@@ -52,6 +54,8 @@ class Derivation:
     conditions: list = field(default_factory=list)
     degenerate: list = field(default_factory=list)
     vanishing: list = field(default_factory=list)  # (expression, index in degenerate) where a pair is singular
+    reserved: frozenset = frozenset()  # the robot's own names, which the derivation's never take (dhsym.inverse.fresh)
+    angles: dict = field(default_factory=dict)  # φk -> the sum of angles (or angle and offset) it names
 
 
 @dataclass(frozen=True)
@@ -72,14 +76,12 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     dhsym.inverse.reach). Raises UserError when no sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
-    for memo in (_cache, _lengths, _shapes, _sizes, _signs, _works):
-        memo.clear()  # kept within one search only: memory stays bounded across many
-    lookups.clear()
+    memos = Memos()  # this search's own: nothing kept between searches, nothing shared by two at once
     pool = [e for e in equations if e.expr != 0]
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
     while remaining:
-        best = _best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, unique)
+        best = _best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, memos, unique)
         if best is None:
             solved = [str(v) for v in unknowns if v not in remaining]
             raise UserError("no closed form by the course's rules: "
@@ -87,21 +89,21 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         rule, candidates = best
         known = len(derivation.assignments)
-        value = _apply(rule, candidates, derivation, constants, witness)
+        value = _apply(rule, candidates, derivation, constants, memos, witness)
         for name, named in derivation.assignments[known:]:
             witness[name] = number_at(named, witness)
         variable, angle = candidates[0].variable, candidates[0].angle
         if angle == variable:
             derivation.assignments.append((variable, value))
         else:
-            phi = sympy.Symbol(f"phi_{len([a for a, _ in derivation.assignments if str(a).startswith('phi')]) + 1}",
-                               real=True)
+            phi = fresh_symbol(f"phi_{len(derivation.angles) + 1}", derivation.reserved)
+            derivation.angles[phi] = angle
             derivation.assignments.append((phi, value))
             witness[phi] = number_at(angle, witness)
             coefficient = angle.coeff(variable)
             expression = algebra.expand((phi - (angle - coefficient * variable)) / coefficient)
             pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
-                    if variable in lookups.free_symbols(e.lhs) | lookups.free_symbols(e.rhs) else e
+                    if variable in memos.free_symbols(e.lhs) | memos.free_symbols(e.rhs) else e
                     for e in pool]  # the rest stay as they are
             pending.append((variable, expression))
         remaining.remove(variable)
@@ -120,7 +122,7 @@ def _vanishes(expr, witness: dict) -> bool:
     return value is not None and abs(value) < WITNESS_ZERO
 
 
-def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozenset()):
+def _best(pool, remaining, prismatic, prefer, constants, witness, memos, unique=frozenset()):
     """(rule, candidates) of the best solvable sub-problem, or None. Equations are sorted by
     length within each unknown first, and only the shortest few are worked out: a bounded cost."""
     order = list(prefer) + [k for k in ("position", "orientation", "mixed") if k not in prefer]
@@ -129,18 +131,15 @@ def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozens
     groups: dict = {}
     unknown = set(remaining)
     for equation in pool:
-        held = lookups.free_symbols(equation.expr)
-        key = (equation.expr, tuple(v for v in remaining if v in held))
-        if key not in _shapes:  # rounds look at the same equations again; their structure is kept
-            _shapes[key] = _shape(equation, remaining, prismatic)
-        shape = _shapes[key]
+        held = memos.free_symbols(equation.expr)
+        key = (equation.expr, tuple(v for v in remaining if v in held))  # rounds look at the same equations again
+        shape = memos.remember(memos.shapes, key, _shape, equation, remaining, prismatic, memos)
         if shape is not None:
             # first the equations where the unknown is on the chain's side alone, with the shortest
             # chain side: there the coefficients of cos and sin are the chain's constants
-            on_target_side = bool(lookups.free_symbols(equation.lhs) & unknown)
-            if equation not in _sizes:
-                _sizes[equation] = (tree_size(equation.rhs), tree_size(equation.expr))
-            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side, *_sizes[equation],
+            on_target_side = bool(memos.free_symbols(equation.lhs) & unknown)
+            sizes = memos.remember(memos.sizes, equation, _sizes, equation)
+            groups.setdefault(shape[0], []).append((kind_rank_of(equation, order), on_target_side, *sizes,
                                                     len(groups.get(shape[0], [])), equation, shape))
     # Forms are worked out kind by kind: once one kind gives a candidate, no equation of a later
     # kind can be in the best option (the kind ranks first), and its forms are never needed.
@@ -155,9 +154,9 @@ def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozens
             for kind, *_, equation, shape in items:
                 if kind != level or len(worked[angle]) >= FORMS_PER_UNKNOWN * (level + 1 if alone else 1):
                     continue
-                if shape[1] not in prismatic and lookups.silent(equation.expr, shape, witness):
+                if shape[1] not in prismatic and memos.silent(equation.expr, shape, witness):
                     continue  # its form, worked out, would say nothing: not worked out
-                candidate = _candidate(equation, shape, constants)
+                candidate = _candidate(equation, shape, constants, memos)
                 if candidate is not None and not _says_nothing(candidate, prismatic, witness):
                     worked[angle].append(candidate)
         settled = settled or any(c.variable not in unique for found in worked.values() for c in found)
@@ -172,10 +171,10 @@ def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozens
             rule = "linear" if len(c.form) == 2 else "quadratic"
             # d = z_c / c2 fails where c2 = 0, a pose that is no singularity: a last resort
             rank = (1 if c.form[0].is_number else 5) if rule == "linear" else (6 if _touches(c, True, witness) else 4)
-            options.append(((kind_rank(c), rank, _form_length(c.form)), rule, [c]))
+            options.append(((kind_rank(c), rank, memos.form_length(c.form)), rule, [c]))
         else:
             rank = 6 if _touches(c, False, witness) else 4  # two roots; last where they are one
-            options.append(((kind_rank(c), rank, _form_length(c.form)), "one", [c]))
+            options.append(((kind_rank(c), rank, memos.form_length(c.form)), "one", [c]))
     by_source: dict = {}
     for c in singles:
         if c.variable not in prismatic:
@@ -185,11 +184,12 @@ def _best(pool, remaining, prismatic, prefer, constants, witness, unique=frozens
             constant = all(x.is_number for x in first.form[:2] + second.form[:2])
             # rank 2 or 3 (the determinant's sign known or not) is settled only if the pair comes first
             options.append(((max(kind_rank(first), kind_rank(second)), 0 if constant else 2,
-                             _form_length(first.form) + _form_length(second.form)), "pair?", [first, second]))
-    return _first(options, witness)
+                             memos.form_length(first.form) + memos.form_length(second.form)), "pair?",
+                            [first, second]))
+    return _first(options, witness, memos)
 
 
-def _first(options, witness):
+def _first(options, witness, memos):
     """The first of the options with the least key, or None. A pair's key is a lower bound until it
     comes first: only then is it checked (does it determine the angle? is its determinant's sign
     fixed?), so pairs that cannot win cost nothing; the choice is the same as with every key known."""
@@ -201,14 +201,11 @@ def _first(options, witness):
             return rule, candidates
         pending.remove(best)
         forms = (candidates[0].form, candidates[1].form)
-        if forms not in _works:
-            _works[forms] = _pair_works(*forms, witness)
-        if not _works[forms]:
+        if not memos.remember(memos.works, forms, _pair_works, *forms, witness):
             continue
         if key[1] == 2:
-            if forms not in _signs:
-                _signs[forms] = sp.determinant_sign(*forms)
-            key = (key[0], 2 if _signs[forms] else 3, key[2])
+            sign = memos.remember(memos.signs, forms, sp.determinant_sign, *forms)
+            key = (key[0], 2 if sign else 3, key[2])
         pending.append((key, index, "pair", candidates))
     return None
 
@@ -241,16 +238,21 @@ def _pair_works(first, second, witness) -> bool:
                                                               and _vanishes(a1 * k2 - a2 * k1, witness))
 
 
-def _shape(equation, remaining, prismatic):
+def _sizes(equation) -> tuple[int, int]:
+    """The tree sizes of an equation's chain side and of the whole."""
+    return tree_size(equation.rhs), tree_size(equation.expr)
+
+
+def _shape(equation, remaining, prismatic, memos):
     """(the unknown or sum of angles it enters through, the unknown it determines), when the
     equation holds one unknown (or one sum of angles); else None. Structure only, no algebra."""
     expr = equation.expr
-    unknown = lookups.free_symbols(expr) & set(remaining)
+    unknown = memos.free_symbols(expr) & set(remaining)
     if not unknown:
         return None
     if unknown & prismatic:
         return (next(iter(unknown)),) * 2 if len(unknown) == 1 else None
-    angles = {f.args[0] for f in lookups.trig_atoms(expr) if lookups.free_symbols(f.args[0]) & unknown}
+    angles = {f.args[0] for f in memos.trig_atoms(expr) if memos.free_symbols(f.args[0]) & unknown}
     if len(angles) == 1:
         (angle,) = angles
         variable = _last(angle, unknown, remaining)
@@ -270,37 +272,20 @@ def _outside(expr, angle, unknown) -> bool:
     return any(_outside(a, angle, unknown) for a in expr.args)
 
 
-_cache: dict = {}
-_lengths: dict = {}
-_shapes: dict = {}
-_sizes: dict = {}  # equation -> tree sizes of its chain side and of the whole
-_signs: dict = {}  # pair of forms -> the sign of its determinant (None: either)
-_works: dict = {}  # pair of forms -> whether it determines the angle at the witness pose
-
-
-def _form_length(form) -> int:
-    """length(form), measured once per search: every round compares the same forms again."""
-    if form not in _lengths:
-        _lengths[form] = length(form)
-    return _lengths[form]
-
-
-def _candidate(equation, shape, constants) -> Candidate | None:
-    """The sub-problem form of `equation` in the unknown `shape` names, or None (cached)."""
+def _candidate(equation, shape, constants, memos) -> Candidate | None:
+    """The sub-problem form of `equation` in the unknown `shape` names, or None (kept in `memos`)."""
     angle, variable = shape
-    key = (equation.expr, angle, constants)
-    if key not in _cache:
-        _cache[key] = _form(equation.expr, angle, variable, constants)
-    form = _cache[key]
+    form = memos.remember(memos.forms, (equation.expr, angle, constants), _form, equation.expr, angle, variable,
+                          constants, memos)
     return None if form is None else Candidate(equation, angle, form, variable)
 
 
-def _form(expr, angle, variable, constants):
+def _form(expr, angle, variable, constants, memos):
     if not isinstance(angle, sympy.Symbol) or angle != variable:
         psi = sympy.Dummy("psi")
         replaced = expr.xreplace({sympy.cos(angle): sympy.cos(psi), sympy.sin(angle): sympy.sin(psi)})
         return sp.trig_linear(replaced, psi, constants)
-    if any(variable in lookups.free_symbols(f) for f in lookups.trig_atoms(expr)):
+    if any(variable in memos.free_symbols(f) for f in memos.trig_atoms(expr)):
         return sp.trig_linear(expr, variable, constants)
     form = sp.polynomial(expr, variable)
     return tuple(form) if form is not None and form[0] != 0 else None
@@ -321,13 +306,14 @@ def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
     if value.is_Symbol or value.is_number or length(value) <= 2:
         return value
     taken = {str(name) for name, _ in derivation.assignments}
-    name = next(n for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)] if n not in taken)
+    name = next(n for n in (fresh(n, derivation.reserved) for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)])
+                if n not in taken)
     symbol = sympy.Symbol(name, real=True)
     derivation.assignments.append((symbol, value))
     return symbol
 
 
-def _apply(rule, candidates, derivation, constants, witness=None) -> sympy.Expr:
+def _apply(rule, candidates, derivation, constants, memos, witness=None) -> sympy.Expr:
     """The value of the candidates' unknown (or sum), with its steps, conditions and sign symbol."""
     first = candidates[0]
     angle, variable = first.angle, first.variable
@@ -345,11 +331,12 @@ def _apply(rule, candidates, derivation, constants, witness=None) -> sympy.Expr:
             if reduced is not det:
                 det = min([det, sympy.factor(reduced)], key=length)
         forms = (candidates[0].form, candidates[1].form)
-        if not det.is_number:
+        if not det.is_number:  # said in the joints' angles: sin(θ5 + 1), not the sin φ2 it was solved through
+            det = det.xreplace(derivation.angles)
             derivation.vanishing.append((det, len(derivation.degenerate)))
             derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
-        return sp.pair(*forms, _signs[forms] if forms in _signs else sp.determinant_sign(*forms))
-    sigma = sympy.Symbol(f"sigma_{len(derivation.signs) + 1}", real=True)
+        return sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms))
+    sigma = fresh_symbol(f"sigma_{len(derivation.signs) + 1}", derivation.reserved)
     if rule == "linear":
         a, b = first.form
         derivation.steps.append(Step(a * variable, -b, "prismatic joint from a coordinate", (variable,),

@@ -20,7 +20,7 @@ import sympy
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
-from .subproblems import LINED_UP_UNSAID, factor_bases, lined_up_angle
+from .subproblems import LINED_UP_UNSAID, angle_symbol, factor_bases, lined_up_angle
 
 
 def tie_to_jacobian(chain, derivation) -> None:
@@ -65,17 +65,21 @@ def lined_up(chain, angle) -> str:
     """Where sin θk = 0 lines up the axes of joints k − 1 and k + 1, which angle they still fix:
     the sum of the angles about the lined-up axes where they point the same way, the difference
     where they point opposite ways; θk = 0 and θk = π swap the two. Joints whose axes are parallel
-    to one of the two turn with it (the UR5's θ2 + θ3 + θ4). Measured at one pose.
+    to one of the two turn with it (the UR5's θ2 + θ3 + θ4). Measured at one pose. With an offset
+    (sin(θk + c) = 0) the axes line up where θk + c is 0 or π.
 
     >>> import dhsym
     >>> lined_up(dhsym.load("puma560").chain, dhsym.load("puma560").joint_variables[4])
     'at theta_5 = 0 only theta_4 + theta_6 is determined, at theta_5 = pi only theta_4 - theta_6'
     """
-    k = list(chain.joint_variables).index(angle) + 1
+    joint = angle_symbol(angle)
+    if joint not in chain.joint_variables:
+        return LINED_UP_UNSAID
+    k = list(chain.joint_variables).index(joint) + 1
     if not 1 < k < chain.n:
         return LINED_UP_UNSAID
     values = sample_values(chain, random.Random(k))
-    values[angle] = 0.0
+    values[joint] = -float(angle - joint)  # the angle 0
     frame_poses = poses(chain, values)
 
     def parallel_run(start, step):  # (joint, ±1) for joint `start` and its parallel neighbours away from k

@@ -2,15 +2,17 @@
 (dhsym.inverse) and every surface that shows it (text, LaTeX, JSON, generated Python).
 
 The target is the 4x4 transform that `dhsym fk` prints by default, written with the names of
-its elements:
+its elements (primed where the robot uses one of them itself, see dhsym.inverse.fresh):
 
->>> target_matrix()[:3, 3].T
-Matrix([[px, py, pz]])
+>>> target_matrix()[:3, 3].T, target_matrix({"px"})[:3, 3].T
+(Matrix([[px, py, pz]]), Matrix([[pxʹ, py, pz]]))
 
 A solution lists `definitions` (intermediate quantities shared by every branch, in order: the
 wrist centre `x_c`, `r`, `D`, ...) and `branches`, each an ordered list of assignments. An
 assignment may use the target's names, the robot's constants, the definitions and the names
 assigned before it in its branch; every joint variable is assigned in every branch.
+
+A solution pickles and deep-copies with its expressions as they are (dhsym.inverse.frozen).
 """
 from __future__ import annotations
 
@@ -18,21 +20,19 @@ from dataclasses import dataclass, field
 
 import sympy
 
-TARGET_NAMES = ("r11", "r12", "r13", "px", "r21", "r22", "r23", "py", "r31", "r32", "r33", "pz")
+from .fresh import TARGET_NAMES, reserved, target_symbols
+from .frozen import KeepsForm
+
+__all__ = ["TARGET_NAMES", "Branch", "Solution", "Step", "target_matrix", "target_symbols"]
 
 
-def target_symbols() -> tuple[sympy.Symbol, ...]:
-    """The twelve names of the target's elements, row by row (r11 r12 r13 px r21 ...)."""
-    return tuple(sympy.Symbol(name, real=True) for name in TARGET_NAMES)
-
-
-def target_matrix() -> sympy.Matrix:
-    """The target as a matrix of names, with the fixed bottom row 0 0 0 1."""
-    return sympy.Matrix(3, 4, target_symbols()).col_join(sympy.Matrix([[0, 0, 0, 1]]))
+def target_matrix(taken=()) -> sympy.Matrix:
+    """The target as a matrix of names (fresh against the names `taken`), with the fixed bottom row 0 0 0 1."""
+    return sympy.Matrix(3, 4, target_symbols(taken)).col_join(sympy.Matrix([[0, 0, 0, 1]]))
 
 
 @dataclass(frozen=True)
-class Step:
+class Step(KeepsForm):
     """One equation of the derivation, as a student writes it: `lhs = rhs`, the sub-problem it is
     an instance of (e.g. "a cos θ + b sin θ = c", "law of cosines", "atan2 of a pair",
     "prismatic joint from a distance", "sum of parallel-axis angles", "Euler angles of the wrist"),
@@ -46,7 +46,7 @@ class Step:
 
 
 @dataclass(frozen=True)
-class Branch:
+class Branch(KeepsForm):
     """One solution branch: a name in words ("shoulder left, elbow up, wrist not flipped") and its
     assignments [(name, expression), ...] in the order they are computed."""
 
@@ -59,7 +59,7 @@ class Branch:
 
 
 @dataclass(frozen=True)
-class Solution:
+class Solution(KeepsForm):
     """A closed-form inverse-kinematics solution of a chain.
 
     `method` says in words how it was found ("kinematic decoupling: axes 4, 5, 6 meet at the wrist
@@ -80,5 +80,10 @@ class Solution:
     steps: tuple[Step, ...] = field(default=())
 
     @property
+    def target_symbols(self) -> tuple[sympy.Symbol, ...]:
+        """The names of the target's elements, r11 … pz, each primed where the robot uses it."""
+        return target_symbols(reserved(self.chain))
+
+    @property
     def target(self) -> sympy.Matrix:
-        return target_matrix()
+        return target_matrix(reserved(self.chain))

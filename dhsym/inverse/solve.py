@@ -20,8 +20,10 @@ import sympy
 
 from ..core.robot import as_robot
 from ..errors import UserError
+from .bounds import redundancy, redundant_message, refuse_unbounded
 from .branches import branch_name
 from .equations import point_equations, transform_equations
+from .fresh import fresh_symbol, reserved
 from .pieper import pieper
 from .quartic import root_number
 from .reach import wrong_root
@@ -41,10 +43,14 @@ def solve(chain, free=()) -> Solution:
     robot = as_robot(chain)
     chain = robot.chain
     free = free_variables(chain, free)
+    redundant = redundancy(robot, free)  # before any algebra: the motions the unknowns make, the axes, the work
+    if redundant:
+        raise UserError(redundant_message(robot, free, redundant))
     structure = analyse(robot, free)
+    refuse_unbounded(robot)
     unknowns = [chain.joint_variables[j - 1] for j in structure.unknowns]
     prismatic = {v for v, row in zip(chain.joint_variables, chain.rows) if row.joint == "P"} & set(unknowns)
-    target, fixed = _target(chain, len(unknowns))
+    target, fixed = _target(chain, len(unknowns))  # its names primed where the robot uses them (dhsym.inverse.fresh)
     unique: set = set()  # joints whose two roots were found not both to reach the pose
     while True:
         try:
@@ -65,7 +71,7 @@ def solve(chain, free=()) -> Solution:
     assignments = derivation.assignments
     definitions, assignments = _shared_first(definitions, assignments, chain.joint_variables, derivation.signs)
     conditions = list(derivation.conditions)
-    used = _used_elements(definitions, assignments)
+    used = _used_elements(definitions, assignments, chain)
     if len(unknowns) < 6:
         method += f" (target elements used: {', '.join(used)})"
         joints = f"{len(unknowns)} unknown joint{'s' if len(unknowns) != 1 else ''}"
@@ -85,7 +91,8 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
     """(derivation, definitions, wrist joints, method line) by the method the axes choose; the
     joints in `unique` are solved only by a rule with one root."""
     chain = robot.chain
-    derivation = Derivation()
+    names = reserved(chain)
+    derivation = Derivation(reserved=names)
     constants = frozenset(chain.symbols - set(chain.joint_variables))
     numbers = witness(robot)
     definitions: list = []
@@ -95,10 +102,7 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
         holder, local, in_last = centre(chain, structure.wrist)
         point = target[:3, :3] * in_last + target[:3, 3]
         if any(x != 0 for x in in_last):
-            names = sympy.symbols("x_c y_c z_c", real=True)
-            definitions += list(zip(names, point))
-            numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
-            point = sympy.Matrix(names)
+            point = _centre_named(point, names, definitions, numbers)
         arm = [v for v in unknowns if v not in wrist_joints]
         derivation, numbers, pieper_used = _arm(
             robot, point_equations(robot, point, sum(x ** 2 for x in point), local, holder), arm, prismatic,
@@ -116,10 +120,7 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
         holder, local, in_first = centre_at_start(chain, structure.first_wrist)
         rotation_t = target[:3, :3].T
         point = rotation_t * (in_first - target[:3, 3])  # the centre seen from the last frame: Rᵀ(c − p)
-        names = sympy.symbols("x_c y_c z_c", real=True)
-        definitions += list(zip(names, point))
-        numbers.update({n: p.xreplace(numbers) for n, p in zip(names, point)})
-        point = sympy.Matrix(names)
+        point = _centre_named(point, names, definitions, numbers)
         arm = [v for v in unknowns if v not in wrist_joints]
         derivation, numbers, pieper_used = _arm(  # as above, the arm counted from the end
             robot, point_equations(robot, point, sum(x ** 2 for x in point), local, holder, known_in=chain.last_frame),
@@ -151,12 +152,13 @@ def _derive(robot, structure, unknowns, prismatic, target, unique):
 def _arm(robot, equations, arm, prismatic, constants, numbers, unique, by_pieper):
     """(derivation, witness numbers, whether Pieper's quartic was used) for the position of a wrist
     centre: the sub-problems, else `by_pieper(fresh derivation)`, else the sub-problems' refusal."""
-    derivation, kept = Derivation(), dict(numbers)
+    names = reserved(robot.chain)
+    derivation, kept = Derivation(reserved=names), dict(numbers)
     try:
         scan(equations, arm, prismatic, derivation, constants=constants, witness=numbers, unique=unique)
         return derivation, numbers, False
     except UserError as refusal:  # no sub-problem: Pieper's elimination, a quartic in tan(θ3/2)
-        derivation = Derivation()
+        derivation = Derivation(reserved=names)
         try:
             by_pieper(derivation)
         except UserError:
@@ -167,7 +169,7 @@ def _arm(robot, equations, arm, prismatic, constants, numbers, unique, by_pieper
 def _target(chain, unknowns: int) -> tuple[sympy.Matrix, str]:
     """The target matrix; for an arm of fewer than six joints, the elements that are the same in
     every pose (a planar arm's r33 = 1, pz = 0) are put in as those numbers, and said."""
-    target = target_matrix()
+    target = target_matrix(reserved(chain))
     if unknowns >= 6:
         return target, ""
     fk = chain.fk()
@@ -224,9 +226,18 @@ def _shared_first(definitions, assignments, joints, signs):
     return shared, rest
 
 
-def _used_elements(definitions, assignments) -> list[str]:
+def _used_elements(definitions, assignments, chain) -> list[str]:
     symbols = set().union(*(v.free_symbols for _, v in list(definitions) + list(assignments)))
-    return [str(t) for t in target_symbols() if t in symbols]
+    return [str(t) for t in target_symbols(reserved(chain)) if t in symbols]
+
+
+def _centre_named(point, names, definitions: list, numbers: dict) -> sympy.Matrix:
+    """The wrist centre's coordinates named x_c, y_c, z_c (primed where the robot uses those
+    names), added to the definitions and to the witness numbers."""
+    named = [fresh_symbol(name, names) for name in ("x_c", "y_c", "z_c")]
+    definitions += list(zip(named, point))
+    numbers.update({n: p.xreplace(numbers) for n, p in zip(named, point)})
+    return sympy.Matrix(named)
 
 
 def _branches(assignments, signs, first_joint, wrist_joints) -> list[Branch]:

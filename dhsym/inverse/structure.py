@@ -14,8 +14,8 @@ that are parallel. An arm that has neither is refused here, at once.
 ...     analyse(dhsym.load("iiwa7"))
 ... except dhsym.UserError as error:
 ...     print(error)
-the arm has 7 joints and a closed form needs at most 6: it is redundant; make 1 of its joint variables \
-parameters with --free (e.g. --free theta_3)
+the arm has 7 joints and a closed form needs at most 6: it is redundant; make 1 of its joint variables a \
+parameter with --free
 """
 from __future__ import annotations
 
@@ -48,11 +48,11 @@ def analyse(chain, free=()) -> Structure:
     """The structure of `chain` (a Robot or a Chain) with the joint variables in `free` made parameters."""
     sample, chain = as_robot(chain).sample, as_chain(chain)
     unknowns = tuple(j for j, v in enumerate(chain.joint_variables, start=1) if v not in set(free))
-    if len(unknowns) > 6:
+    if len(unknowns) > 6:  # which joints will do is checked by dhsym.inverse.redundant, which derives with them
         extra = len(unknowns) - 6
-        example = chain.joint_variables[len(chain.joint_variables) // 2 - 1]
         raise UserError(f"the arm has {len(unknowns)} joints and a closed form needs at most 6: it is redundant; "
-                        f"make {extra} of its joint variables parameters with --free (e.g. --free {example})")
+                        f"make {extra} of its joint variables {'a parameter' if extra == 1 else 'parameters'} "
+                        "with --free")
     if not unknowns:
         raise UserError("every joint variable is --free: nothing is left to solve for")
     rng = random.Random(11)

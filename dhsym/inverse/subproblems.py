@@ -266,18 +266,33 @@ def factor_bases(expr) -> set:
 
 
 def lined_up_angle(det):
-    """θk where a pair's determinant is a power of sin θk alone (the wrist's s5), else None.
+    """θk, or θk plus a number (a row's offset, θ5 + 1), where a pair's determinant is a power of
+    the sine of that alone (the wrist's s5), else None.
 
     >>> t, x = sympy.symbols("theta_5 x", real=True)
-    >>> lined_up_angle(-sympy.sin(t)**2), lined_up_angle(x * sympy.sin(t))
-    (theta_5, None)
+    >>> lined_up_angle(-sympy.sin(t)**2), lined_up_angle(sympy.sin(t + 1)), lined_up_angle(x * sympy.sin(t))
+    (theta_5, theta_5 + 1, None)
     """
     bases = factor_bases(det)
     if len(bases) == 1:
         (base,) = bases
-        if isinstance(base, sympy.sin) and base.args[0].is_Symbol:
+        if isinstance(base, sympy.sin) and angle_symbol(base.args[0]) is not None:
             return base.args[0]
     return None
+
+
+def angle_symbol(angle):
+    """The symbol θ of an angle θ or θ + c (c a number), else None.
+
+    >>> t = sympy.Symbol("theta_5", real=True)
+    >>> angle_symbol(t), angle_symbol(t - sympy.pi / 7), angle_symbol(2 * t)
+    (theta_5, theta_5, None)
+    """
+    symbols = angle.free_symbols
+    if len(symbols) != 1:
+        return None
+    (symbol,) = symbols
+    return symbol if (angle - symbol).is_number else None
 
 
 def degenerate_pair(det, shown, forms) -> str:
@@ -292,7 +307,7 @@ def degenerate_pair(det, shown, forms) -> str:
     angle = lined_up_angle(det)
     if angle is not None:
         return (f"{sympy.sin(angle)} = 0: {shown} is not determined on its own: the axes on either side of "
-                f"{angle} line up, and {LINED_UP_UNSAID}, a one-parameter family (a numeric "
+                f"{angle_symbol(angle)} line up, and {LINED_UP_UNSAID}, a one-parameter family (a numeric "
                 "evaluation gives one member)")
     a1, b1, _ = forms[0]
     # α = 0 and β = 0 where that is shorter than α² + β² expanded (pz² + (px c1 + py s1)²)

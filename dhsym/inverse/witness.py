@@ -15,7 +15,7 @@ import sympy
 
 from ..core.robot import as_chain, as_robot
 from ..velocity.geometry import poses
-from .solution import target_symbols
+from .fresh import reserved, target_symbols
 
 SEED = 20240516
 
@@ -32,7 +32,7 @@ def witness(chain, seed: int = SEED) -> dict:
         values[symbol] = float(sample[symbol]) if symbol in sample else rng.uniform(0.5, 1.5)
     rotation, origin = poses(chain, values)[chain.last_frame]
     elements = [x for r in range(3) for x in (*rotation[r], origin[r])]
-    values.update(zip(target_symbols(), elements))
+    values.update(zip(target_symbols(reserved(chain)), elements))
     return {symbol: sympy.Float(value, 17) for symbol, value in values.items()}
 
 

@@ -22,7 +22,16 @@ import re
 
 import sympy
 
-from ..printing.ik import latex_name, latex_printer, named_angles, target_points, target_title, variable_list
+from ..printing.ik import (
+    latex_name,
+    latex_printer,
+    named_angles,
+    target_name,
+    target_names,
+    target_points,
+    target_title,
+    variable_list,
+)
 from ..printing.ik_sentences import relation, sentence_parts, solution_names
 from .display import Latex
 from .layout import (
@@ -36,7 +45,6 @@ from .layout import (
     bmatrix,
     break_lines,
     display,
-    element_name,
     element_rows,
     lines_under,
     matrix_height,
@@ -58,8 +66,9 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
     the intermediate quantities; one section per branch; existence and degenerate poses; the legend.
     `headings` (default: where pages have no frame titles) starts each section with its title."""
     chain = solution.chain
-    printer = latex_printer(chain, named_angles(solution), target_points(solution))
-    names = [[element_name(r, c) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
+    targets = target_names(solution)
+    printer = latex_printer(chain, named_angles(solution), target_points(solution), targets)
+    names = [[target_name(targets[4 * r + c], "latex") for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
     unknowns = [v for v in solution.joint_variables if v not in solution.free]
     problem = [paragraph(f"Given the pose of the last frame, find ${variable_list(unknowns, printer)}$. "
                          f"The target is written with the names of its elements:", page),

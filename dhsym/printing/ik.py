@@ -2,7 +2,8 @@
 atan2(y, x), a `where` list of the intermediate quantities, every branch by name) and the JSON
 contract (full cos/sin/atan2 with the robot file's names, readable by sympy.sympify).
 
-The target's elements print as a book names them: r11 … r33, px, py, pz (LaTeX r_{11}, p_{x});
+The target's elements print as a book names them: r11 … r33, px, py, pz (LaTeX r_{11}, p_{x}),
+primed where the robot uses the name itself (px′, p_{x}': see dhsym.inverse.fresh);
 a quotient prints with its denominator bracketed, (px² + py² − a1² − a2²)/(2 a1 a2), and a sum
 starts with the target's terms, positive ones first.
 
@@ -23,6 +24,7 @@ import sympy
 from sympy.printing.precedence import PRECEDENCE, precedence
 
 from ..core.robot import as_robot
+from ..inverse.fresh import plain
 from ..inverse.solution import TARGET_NAMES
 from ..inverse.written import Written
 from . import render
@@ -32,8 +34,19 @@ from .names import GREEK_NAMES, display_name
 from .notation import Abbreviation
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
-TARGET_LATEX = {name: (f"{name[0]}_{{{name[1:]}}}") for name in TARGET_NAMES}  # r_{11}, p_{x}
 _TARGET = frozenset(TARGET_NAMES)
+
+
+def target_name(name: str, style: str) -> str:
+    """An element of the target as a book writes it, with the primes the derivation gave it where
+    the robot uses its name.
+
+    >>> target_name("r11", "latex"), target_name("pxʹ", "unicode"), target_name("pxʹ", "latex")
+    ('r_{11}', 'px′', "p_{x}'")
+    """
+    bare, primes = plain(name)
+    text = f"{bare[0]}_{{{bare[1:]}}}" if style == "latex" else bare
+    return text + ("′" if style == "unicode" else "'") * primes
 
 
 class _InverseNotation:
@@ -46,7 +59,8 @@ class _InverseNotation:
         self._negative: dict = {}  # whether a term prints with a minus: asked again and again while sorting
         self._printed: dict = {}
         # instance attributes: the printers ask the notation for the order of terms and factors
-        first = _TARGET | {point.name for point in self._settings.get("points", ())}  # px, and xc = px − d6 r13
+        self.targets = frozenset(self._settings.get("targets", TARGET_NAMES))  # primed where the robot has the name
+        first = self.targets | {point.name for point in self._settings.get("points", ())}  # px, and xc = px − d6 r13
         self.notation.term_key = lambda term: (not any(s.name in first for s in term.free_symbols),
                                                self._prints_negative(term), joint_key(term))
         self.notation.factor_key = lambda factor: (not _is_written(factor), factor_key(factor))
@@ -61,7 +75,7 @@ class _InverseNotation:
     def doprint(self, expr):
         key = (expr, self.numbers)  # the branches share most of their assignments; read-back numbers differ
         if key not in self._printed:
-            self._printed[key] = super().doprint(by_target(expr))
+            self._printed[key] = super().doprint(by_target(expr, self.targets))
         return self._printed[key]
 
     def _signed(self, term) -> tuple[bool, str]:
@@ -108,8 +122,8 @@ class _InverseNotation:
         return out
 
     def _print_Symbol(self, expr):
-        if expr.name in _TARGET:
-            return TARGET_LATEX[expr.name] if self.style == "latex" else expr.name
+        if expr.name in self.targets:
+            return target_name(expr.name, self.style)
         return super()._print_Symbol(expr)
 
     def _arguments(self, expr) -> str:
@@ -117,7 +131,7 @@ class _InverseNotation:
 
 
 _FUNCTION = {sympy.cos: "c", sympy.sin: "s"}
-_SUBSCRIPT = re.compile(r"_\{(\w+)\}$")
+_SUBSCRIPT = re.compile(r"_\{(\w+)\}('*)$")  # \phi_{1}' -> \phi 1': a prime of the derivation's stays
 
 
 class NamedAngle(Abbreviation):
@@ -136,11 +150,11 @@ class NamedAngle(Abbreviation):
     def label(self, style: str) -> str:
         name = display_name(self.indices[0][0].name, style)
         if style == "latex":
-            return self.function + "_{" + _SUBSCRIPT.sub(r" \1", name) + "}"  # \phi_{1} -> \phi 1
+            return self.function + "_{" + _SUBSCRIPT.sub(r" \1\2", name) + "}"  # \phi_{1} -> \phi 1
         return self.function + (f"({name})" if style == "ascii" else name)  # c(phi1), as a lettered joint
 
 
-def by_target(expr):
+def by_target(expr, targets=_TARGET):
     """`expr` with each sum linear in the target's elements grouped by them, as Craig prints s6
     of the PUMA: −r11(c1 c23 s4 − s1 c4) − r21(s1 c23 s4 + c1 c4) + r31 s23 s4. A sum with a
     product or a power of the target's elements (px², px r13) stays as it is.
@@ -151,17 +165,17 @@ def by_target(expr):
     """
     if not isinstance(expr, sympy.Basic) or expr.is_Atom:
         return expr
-    args = tuple(by_target(argument) for argument in expr.args)
+    args = tuple(by_target(argument, targets) for argument in expr.args)
     if args != expr.args:
         expr = expr.func(*args)
     if not expr.is_Add:
         return expr
     groups: dict = {}
     for term in expr.args:
-        targets = [f for f in sympy.Mul.make_args(term) if f.is_Symbol and f.name in _TARGET]
-        if len(targets) > 1 or _has_target(term / targets[0] if targets else term):
+        found = [f for f in sympy.Mul.make_args(term) if f.is_Symbol and f.name in targets]
+        if len(found) > 1 or _has_target(term / found[0] if found else term, targets):
             return expr  # not linear in the target
-        groups.setdefault(targets[0] if targets else None, []).append(term / targets[0] if targets else term)
+        groups.setdefault(found[0] if found else None, []).append(term / found[0] if found else term)
     if all(len(terms) < 2 for key, terms in groups.items() if key is not None):
         return expr
     return sympy.Add(*(sympy.Add(*terms) if key is None else key * sympy.Add(*terms)
@@ -172,14 +186,14 @@ def _is_written(factor) -> bool:
     return isinstance(factor.base if factor.is_Pow else factor, Written)
 
 
-def _has_target(term) -> bool:
-    return any(symbol.name in _TARGET for symbol in term.free_symbols)
+def _has_target(term, targets) -> bool:
+    return any(symbol.name in targets for symbol in term.free_symbols)
 
 
 class IKTextPrinter(_InverseNotation, TextPrinter):
     """Text: atan2(py, px), acos(D), √(1 − D²)."""
 
-    _default_settings = {**TextPrinter._default_settings, "angles": (), "points": ()}
+    _default_settings = {**TextPrinter._default_settings, "angles": (), "points": (), "targets": TARGET_NAMES}
     _times = " · "
 
     def _print_atan2(self, expr):
@@ -199,7 +213,7 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
 class IKLatexPrinter(_InverseNotation, LatexPrinter):
     r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
 
-    _default_settings = {**LatexPrinter._default_settings, "angles": (), "points": ()}
+    _default_settings = {**LatexPrinter._default_settings, "angles": (), "points": (), "targets": TARGET_NAMES}
     _times = " \\cdot "
 
     def _print_atan2(self, expr):
@@ -248,21 +262,30 @@ def _one_group(text: str) -> bool:
     return depth == 0
 
 
-def text_printer(chain, ascii: bool = False, angles=(), points=()) -> IKTextPrinter:
+def text_printer(chain, ascii: bool = False, angles=(), points=(), targets=TARGET_NAMES) -> IKTextPrinter:
     """The text printer of a chain's solution; `angles` (see `named_angles`) print as cφ1, sφ1,
-    and `points` (see `target_points`) come first in a sum, as the target's elements do."""
-    return IKTextPrinter(chain_settings(chain), ascii=ascii, angles=tuple(angles), points=tuple(points))
+    and `points` (see `target_points`) come first in a sum, as the target's elements (`targets`,
+    see `target_names`) do."""
+    return IKTextPrinter(chain_settings(chain), ascii=ascii, angles=tuple(angles), points=tuple(points),
+                         targets=tuple(targets))
 
 
-def latex_printer(chain, angles=(), points=()) -> IKLatexPrinter:
-    return IKLatexPrinter(chain_settings(chain), angles=tuple(angles), points=tuple(points))
+def latex_printer(chain, angles=(), points=(), targets=TARGET_NAMES) -> IKLatexPrinter:
+    return IKLatexPrinter(chain_settings(chain), angles=tuple(angles), points=tuple(points), targets=tuple(targets))
+
+
+def target_names(solution) -> tuple:
+    """The names of a solution's target elements, r11 … pz, primed where the robot uses one."""
+    return tuple(symbol.name for symbol in solution.target_symbols)
 
 
 def target_points(solution) -> tuple:
     """The names a solution gives to quantities linear in the target (the wrist centre,
     xc = px − d6 r13): a book writes them first, as the target's elements, zc − d1 rather than d1 − zc."""
+    names = set(target_names(solution))
+
     def linear(value) -> bool:
-        targets = [s for s in sympy.sympify(value).free_symbols if s.name in _TARGET]
+        targets = [s for s in sympy.sympify(value).free_symbols if s.name in names]
         form = sympy.Poly(value, *targets) if targets and value.is_polynomial(*targets) else None
         return form is not None and form.total_degree() == 1
     return tuple(name for name, value in solution.definitions if linear(value))
@@ -292,11 +315,12 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
     """The whole solution as text that fits `width`: title, target, method, definitions, each
     branch, when branches exist, the degenerate poses, and the legend of c/s abbreviations."""
     chain = solution.chain
-    printer = text_printer(chain, ascii, named_angles(solution), target_points(solution))
+    targets = target_names(solution)
+    printer = text_printer(chain, ascii, named_angles(solution), target_points(solution), targets)
     style = "ascii" if ascii else "unicode"
     title = f"{chain.name}: inverse kinematics  ({chain.convention}\u00a0DH)"  # "(modified DH)" kept whole
     blocks = [render.wrap(title, width, "  ").replace("\u00a0", " ")]
-    target = [[*row] for row in render.ELEMENT_NAMES] + [["0", "0", "0", "1"]]
+    target = [[target_name(targets[4 * r + c], style) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
     blocks.append(render.wrap(f"Target {target_title(chain, style)}, the pose to reach (what `dhsym fk` prints):",
                               width, "  ") + "\n" + render.aligned_matrix(target, ascii))
     names = solution_names(solution)
@@ -321,7 +345,7 @@ def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
 
 
 _ASCII = {"−": "-", "–": "-", "≥": ">=", "≤": "<=", "≠": "!=", "·": "*", "×": "x", "√": "sqrt", "±": "+-",
-          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0"}
+          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0", "′": "'", "ʹ": "'"}
 
 
 def ascii_text(text: str) -> str:
@@ -351,7 +375,7 @@ def json_solution(solution) -> dict:
         "joint_variables": [symbol.name for symbol in solution.joint_variables],
         "free": [symbol.name for symbol in solution.free],
         "method": solution.method,
-        "target": list(TARGET_NAMES),
+        "target": list(target_names(solution)),
         "definitions": pairs(solution.definitions),
         "solutions": [{"name": branch.name, "assignments": pairs(branch.assignments)}
                       for branch in solution.branches],
@@ -362,4 +386,4 @@ def json_solution(solution) -> dict:
 
 def latex_name(symbol: sympy.Symbol) -> str:
     """A name as the LaTeX printers write it: x_{c}, \\theta_{1}, p_{x}."""
-    return TARGET_LATEX.get(symbol.name) or display_name(symbol.name, "latex")
+    return target_name(symbol.name, "latex") if plain(symbol.name)[0] in _TARGET else display_name(symbol.name, "latex")

@@ -13,12 +13,12 @@ from __future__ import annotations
 import re
 
 from ..errors import UserError
-from ..inverse.solution import TARGET_NAMES
 from ..io.expr import parse_expression, real_symbol
 from . import render
 
 _RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
-_TERM = r"(?:(?:sin|cos)\([^()]*\)|[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?(?![\w(]))"
+_NAME = r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?ʹ*"  # ʹ: a prime of the derivation's (dhsym.inverse.fresh)
+_TERM = rf"(?:(?:sin|cos)\([^()]*\)|{_NAME}(?![\w(]))"
 _MATH_RUN = re.compile(rf"(?<![\w.'’]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5); not Pieper's s
 _VALUE = re.compile(r"(?<== )-?(?:\d+(?:\.\d+)?|pi)(?![\w.])")  # "r32 = -1", "theta_5 = pi": math
 _GLUE = "\u00a0"  # holds a relation together while a sentence is wrapped
@@ -74,7 +74,7 @@ def _mentioned(text: str, names) -> list:
     for match in _VALUE.finditer(text):
         found.append((match.start(), match.end(), parse_expression(match.group(0))))
     for match in _MATH_RUN.finditer(text):
-        used = {m.group(0) for m in re.finditer(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?", match.group(0))}
+        used = {m.group(0) for m in re.finditer(_NAME, match.group(0))}
         if not used - {"sin", "cos"} or not used - {"sin", "cos"} <= wanted:
             continue
         try:
@@ -89,7 +89,7 @@ def _mentioned(text: str, names) -> list:
 def solution_names(solution) -> list[str]:
     """The names a solver's sentence may mention: the chain's symbols, the definitions', the target's."""
     return ([s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
-            + list(TARGET_NAMES))
+            + [s.name for s in solution.target_symbols])
 
 
 def text_sentence(text: str, names, printer) -> str:

@@ -12,6 +12,7 @@ from sympy.printing.conventions import split_super_sub
 from sympy.printing.latex import translate
 from sympy.printing.pretty.pretty_symbology import greek_unicode, sub, sup
 
+PRIME = "\u02b9"  # ʹ, the letter dhsym.inverse.fresh primes a derivation's name with (printed ′ or ')
 GREEK_NAMES = {letter: name for name, letter in greek_unicode.items()}  # 'θ' -> 'theta'
 
 
@@ -30,7 +31,11 @@ def is_word_name(name: str) -> bool:
 
 @lru_cache(maxsize=4096)  # asked for every symbol printed: a large result prints a few names thousands of times
 def display_name(name: str, style: str) -> str:
-    """A symbol name as a textbook writes it: theta_1 -> θ1 (unicode), \\theta_{1} (LaTeX)."""
+    """A symbol name as a textbook writes it: theta_1 -> θ1 (unicode), \\theta_{1} (LaTeX); a name
+    the inverse kinematics primed (dhsym.inverse.fresh), phi_1ʹ, as φ1′ (unicode), \\phi_{1}' (LaTeX)."""
+    bare = name.rstrip(PRIME)
+    if bare != name and bare:
+        return display_name(bare, style) + ("′" if style == "unicode" else "'") * (len(name) - len(bare))
     if is_word_name(name):
         return "\\mathrm{" + name.replace("_", "\\_") + "}" if style == "latex" else name
     base, supers, subs = split_super_sub(name)
