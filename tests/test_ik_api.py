@@ -78,15 +78,6 @@ def test_a_solutions_branches_and_steps_pickle_and_copy_as_they_were_built():
         assert copy.deepcopy(part) == part
 
 
-def _robots_pickle() -> bool:
-    try:
-        pickle.dumps(load("planar2r"))
-    except TypeError:
-        return False
-    return True
-
-
-@pytest.mark.skipif(not _robots_pickle(), reason="a Robot pickles with issue 24's pickling of Robot")
 @pytest.mark.parametrize("name", ["planar2r", "puma560", "ur5"])
 def test_a_solution_pickles_and_copies_and_prints_the_same(name):
     ik = load(name).ik()
