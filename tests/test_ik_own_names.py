@@ -138,3 +138,16 @@ def test_pieper_names_the_robot_uses_are_primed(tmp_path):
     module_path.write_text(run_dhsym("ik", str(path), "--format", "python").ok(), encoding="utf-8")
     check_branches_reach(import_module(module_path).ik, chain, sample_constants(chain),
                          random_joints(chain, np.random.default_rng(2), 6))
+
+
+def test_the_branch_pictures_pass_constants_by_the_robots_own_names(folder):
+    from matplotlib.figure import Figure
+
+    from dhsym.plot.branches import branch_values, draw_branches
+
+    robot = load(str(folder / "python_builtins.yaml"))
+    pose = np.array(robot.fk().subs({**dict(robot.sample), **dict(zip(robot.joint_variables, (0.3, 0.9)))}),
+                    dtype=float)
+    names, joints = branch_values(robot, pose, constants={"len": 0.5, "float": 0.4})
+    assert len(names) == 2 and np.nanmin(np.abs(joints - [0.3, 0.9]).max(axis=1)) < 1e-9
+    assert draw_branches(robot, values={"theta_1": 0.3, "theta_2": 0.9}, figure=Figure()).axes

@@ -52,7 +52,7 @@ def branch_values(chain, pose, constants=None, free=(), values=None) -> tuple[li
     given = {str(k): as_number(v, str(k)) for k, v in (constants or {}).items()}
     for variable in result.solution.free:
         given[variable.name] = as_number((values or {}).get(variable.name, 0), variable.name)
-    solved = result.function()(pose, **given)
+    solved = result.evaluate(pose, **given)  # by the robot's own names (the module renames len, float …)
     joints = np.empty((len(result.branches), chain.n))
     for k, variable in enumerate(chain.joint_variables):
         if variable in result.joint_variables:
