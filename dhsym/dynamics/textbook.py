@@ -1,0 +1,158 @@
+"""Dynamics results written out element by element, the way a textbook prints them.
+
+A name of the program is written out (`Tape.expanded`) and multiplied out, sin² + cos² = 1 is
+applied where it shortens the sum, and then the shortest of a few equal forms is kept: the sum
+as it is, grouped by its products of cos/sin with the common factors of each group pulled out,
+the same after the sum formulas (c1 c2 − s1 s2 = c12), and grouped by the links' masses first.
+Spong's d11 comes out as he prints it, m1 lc1² + m2(l1² + lc2² + 2 l1 lc2 c2) + I1 + I2.
+
+>>> q1, q2, l1, lc2, m2, g = sympy.symbols("q_1 q_2 l_1 lc_2 m_2 g", real=True)
+>>> c, s = sympy.cos, sympy.sin
+>>> compact(g*l1*m2*s(q2)**2*c(q1) + g*l1*m2*c(q1)*c(q2)**2 + g*lc2*m2*(c(q1)*c(q2) - s(q1)*s(q2)), [m2])
+g*m_2*(l_1*cos(q_1) + lc_2*cos(q_1 + q_2))
+"""
+from __future__ import annotations
+
+import math
+
+import sympy
+from sympy.simplify.fu import TR10i
+
+from ..core.size import length
+
+MAX_TERMS = 20_000  # of all the printed elements, multiplied out; past this they are not written out
+
+
+def compact(expr: sympy.Expr, masses=(), memo: dict | None = None) -> sympy.Expr:
+    """The shortest textbook form of `expr` (see the module's docstring); `masses` are the
+    symbols to group by first; `memo` keeps the sum formulas of the cos/sin sums met before."""
+    expr = pythagoras(sympy.expand(expr))
+    if expr.is_Atom or not expr.is_Add:
+        return expr
+    candidates = [expr, grouped(expr)]
+    summed = sum_formulas(expr, {} if memo is None else memo) if expr.has(sympy.sin, sympy.cos) else expr
+    if summed != expr:
+        candidates.append(grouped(summed))
+    symbols = [m for m in masses if summed.has(m)]
+    if symbols:
+        by_mass = sympy.collect(summed, symbols, evaluate=False)
+        candidates.append(sympy.Add(*[key * grouped(sympy.expand(value)) for key, value in by_mass.items()]))
+    return min(candidates, key=length)
+
+
+def sum_formulas(expr: sympy.Expr, memo: dict) -> sympy.Expr:
+    """c1 c2 − s1 s2 = c12 and the other three, applied to the cos/sin part of each group of
+    terms that share the rest of their factors, multiplied out again."""
+    groups: dict = {}
+    for term in sympy.Add.make_args(expr):
+        number, term = term.as_coeff_Mul()
+        trig, rest = _split(term)
+        groups.setdefault(rest, []).append(number * trig)
+    parts = []
+    for rest, trigs in groups.items():
+        key = sympy.Add(*trigs)
+        if key not in memo:
+            memo[key] = TR10i(key) if len(trigs) > 1 else key
+        parts.append(rest * memo[key])
+    return sympy.expand(sympy.Add(*parts))
+
+
+def _split(term: sympy.Expr) -> tuple:
+    """(the cos/sin factors, the other factors) of a product."""
+    trig, rest = [], []
+    for factor in sympy.Mul.make_args(term):
+        base = factor.base if factor.is_Pow else factor
+        (trig if isinstance(base, (sympy.sin, sympy.cos)) else rest).append(factor)
+    return sympy.Mul(*trig), sympy.Mul(*rest)
+
+
+def grouped(expr: sympy.Expr) -> sympy.Expr:
+    """The terms grouped by their product of cos/sin factors, the common factors of each group
+    pulled out: g l1 m2 c1 + g lc1 m1 c1 → g c1 (l1 m2 + lc1 m1).
+
+    >>> x, a, b, g = sympy.symbols("x a b g", real=True)
+    >>> grouped(g*a*sympy.cos(x) + g*b*sympy.cos(x) + 2*a*g)
+    g*(2*a + (a + b)*cos(x))
+    """
+    groups: dict = {}
+    for term in sympy.Add.make_args(expr):
+        trig, rest = _split(term)
+        groups.setdefault(trig, []).append(rest)
+    return pulled_out([key * pulled_out(rest) for key, rest in groups.items()])
+
+
+def pulled_out(terms: list) -> sympy.Expr:
+    """The sum of `terms` with what they all share written once in front: a minus sign, a whole
+    number, and symbols or cos/sin to the lowest power they have in every term.
+
+    >>> a, b, c = sympy.symbols("a b c", real=True)
+    >>> pulled_out([-2*a**2*b, -4*a*b*c])
+    -2*a*b*(a + 2*c)
+    """
+    if len(terms) < 2:
+        return sympy.Add(*terms)
+    powers = [term.as_powers_dict() for term in terms]
+    shared = {}
+    for base in powers[0]:
+        if not base.is_Number and all(base in p for p in powers[1:]):
+            lowest = min(p[base] for p in powers)
+            if lowest.is_Integer and lowest > 0:
+                shared[base] = lowest
+    coefficients = [term.as_coeff_Mul()[0] for term in terms]
+    whole = all(c.is_Integer for c in coefficients)
+    number = sympy.Integer(math.gcd(*[int(c) for c in coefficients])) if whole else sympy.Integer(1)
+    number = -number if all(c.is_negative for c in coefficients) else number
+    factor = number * sympy.Mul(*[base**power for base, power in shared.items()])
+    if factor == 1:
+        return sympy.Add(*terms)
+    return factor * sympy.Add(*[term / factor for term in terms])
+
+
+def pythagoras(expr: sympy.Expr) -> sympy.Expr:
+    """sin²x + cos²x = 1, for each angle x in turn: the multiplied-out sum with sin² written as
+    1 − cos², or cos² as 1 − sin², whichever has fewer terms (the sum itself when neither helps).
+
+    >>> x, a, b = sympy.symbols("x a b", real=True)
+    >>> pythagoras(a*sympy.sin(x)**2 + a*sympy.cos(x)**2 + b*sympy.cos(x)**2)
+    a + b*cos(x)**2
+    """
+    angles = {f.args[0] for f in expr.atoms(sympy.sin, sympy.cos)}
+    for angle in sorted(angles, key=sympy.default_sort_key):
+        sin, cos = sympy.sin(angle), sympy.cos(angle)
+        if not (expr.has(sin) and expr.has(cos)):
+            continue
+        best = expr
+        for square, other in ((sin, cos), (cos, sin)):
+            powers = {p: square ** (p.exp % 2) * (1 - other**2) ** (p.exp // 2)
+                      for p in expr.atoms(sympy.Pow) if p.base == square and p.exp.is_Integer and p.exp >= 2}
+            if powers:
+                candidate = sympy.expand(expr.xreplace(powers))
+                if len(sympy.Add.make_args(candidate)) < len(sympy.Add.make_args(best)):
+                    best = candidate
+        expr = best
+    return expr
+
+
+def expanded_terms(tape, values) -> int:
+    """How many terms `values` (names of `tape`) would have multiplied out, counted on the
+    names without writing anything out: a sum adds, a product multiplies, a power (a + b)ᵏ of a
+    sum of t terms has C(t + k − 1, k). An upper bound: cancellations are not foreseen."""
+    memo: dict = {}
+
+    def terms(expr) -> int:
+        if expr in tape.definitions:
+            if expr not in memo:
+                memo[expr] = terms(tape.definitions[expr])
+            return memo[expr]
+        if expr.is_Atom:
+            return 1
+        if expr.is_Add:
+            return sum(terms(arg) for arg in expr.args)
+        if expr.is_Mul:
+            return math.prod(terms(arg) for arg in expr.args)
+        if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0:
+            count = terms(expr.base)
+            return math.comb(count + int(expr.exp) - 1, int(expr.exp))
+        return 1
+
+    return sum(terms(sympy.sympify(value)) for value in values)
