@@ -17,9 +17,11 @@ is one, else frame 0); None stands for (0, 0, −g).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy
+
+from .numbers import WrittenNumbers
 
 INERTIA_ENTRIES = ("xx", "yy", "zz", "xy", "xz", "yz")
 _TENSOR_INDEX = {(0, 0): 0, (1, 1): 1, (2, 2): 2, (0, 1): 3, (1, 0): 3, (0, 2): 4, (2, 0): 4, (1, 2): 5, (2, 1): 5}
@@ -101,11 +103,12 @@ class LinkInertia:
 
 @dataclass(frozen=True)
 class MassModel:
-    """The links' inertial parameters (link 1..n; an empty tuple: all generic) and gravity in
-    the first frame (None: (0, 0, −g))."""
+    """The links' inertial parameters (link 1..n; an empty tuple: all generic), gravity in the
+    first frame (None: (0, 0, −g)), and how a robot file wrote their numbers."""
 
     links: tuple = ()
     gravity: tuple | None = None
+    numbers: WrittenNumbers = field(default=WrittenNumbers(), compare=False)
 
     def __post_init__(self):
         object.__setattr__(self, "links", tuple(self.links))
@@ -126,7 +129,7 @@ class MassModel:
         wrist whose joints are 4..6: m_4, m_5, m_6)."""
         links = tuple(self.link(k).filled(first_joint + k - 1) for k in range(1, n + 1))
         gravity = (0, 0, -GRAVITY_SYMBOL) if self.gravity is None else self.gravity
-        return MassModel(links, gravity)
+        return MassModel(links, gravity, self.numbers)
 
     def symbols(self, n: int, first_joint: int = 1) -> set:
         """Every symbol the filled model uses (the generic names included)."""
