@@ -35,11 +35,33 @@ WHAT = {"M": "the mass matrix M(q), shaped (n, n) or (N, n, n)",
         "tau": "the joint torques (forces of prismatic joints) M qdd + C qd + g by Newton-Euler, shaped (n,) or (N, n)"}
 
 
+def keyword_names(program: Program) -> dict:
+    """{name of a constant: its keyword argument in the module's functions} (`g` stays `g`,
+    a constant named `M` or `lambda` gets a trailing underscore)."""
+    names = _names(program)
+    return {s.name: names[s.name] for s in program.constants()}
+
+
+def _names(program: Program) -> dict:
+    """{symbol name: Python name}, none of them a name the module uses itself."""
+    names = python_names([s.name for s in [*program.variables, *program.rates, *program.accelerations,
+                                           *program.constants()]])
+    taken = set(names.values())
+    for name, safe in names.items():
+        if safe in INTERNAL:
+            while safe in INTERNAL or safe in taken:
+                safe += "_"
+            names[name] = safe
+            taken.add(safe)
+    return names
+
+
+
 def module_text(program: Program, name: str, sample: dict, numbers=None, command: str = "") -> str:
     """The text of the standalone module of `program` (see the module's docstring)."""
     constants = program.constants()
-    names = python_names([s.name for s in [*program.variables, *program.rates, *program.accelerations, *constants]]
-                         + sorted(INTERNAL))
+    names = _names(program)
+
     code = NumpyCode(names, numbers)
     values = {s.name: v for s, v in sample.items()}
     keywords = [f"{names[s.name]}={default_text(values[s.name])}" for s in constants if s.name in values]

@@ -83,12 +83,15 @@ def mass_matrix(tape: Tape, model: RigidModel, bodies: list[Composite] | None = 
         else:
             force = (sympy.Integer(0), sympy.Integer(0), whole.mass)
             moment = (whole.first_moment[1], -whole.first_moment[0], sympy.Integer(0))
-        force, moment = tape.vector(force), tape.vector(moment)
-        M[i, i] = moment[2] if model.bodies[i].joint == "R" else force[2]
+        gain = model.bodies[i].gain  # the column of a unit rate of the joint's variable
+        force, moment = tape.vector(gain * x for x in force), tape.vector(gain * x for x in moment)
+        M[i, i] = tape.name(gain * (moment[2] if model.bodies[i].joint == "R" else force[2]))
         for k in range(i - 1, -1, -1):
             after = model.bodies[k + 1]
             pushed = into_previous(tape, after, force)
             moment = add(tape, into_previous(tape, after, moment), cross(tape, position(tape, after), pushed))
             force = pushed
-            M[k, i] = M[i, k] = moment[2] if model.bodies[k].joint == "R" else force[2]
+            M[k, i] = M[i, k] = tape.name(model.bodies[k].gain * (moment[2] if model.bodies[k].joint == "R"
+                                                                   else force[2]))
+
     return M

@@ -25,14 +25,16 @@ from ..core.chain import Chain
 from ..core.inertia import MassModel
 from ..errors import UserError
 from .coriolis import christoffel_symbols
+from .lagrange import gravity_vector
 from .program import Program, dynamics_program
 from .textbook import MAX_TERMS, compact, expanded_terms
 
 
 @dataclass(frozen=True)
 class Dynamics:
-    """M (d_ij), C, g (Spong's φ_k) and the Christoffel symbols {(i, j, k): c_ijk} that are not
-    zero (joints counted from 1), in textbook form; `program` computes the same as code."""
+    """M (d_ij), C, g (Spong's φ_k, from the potential energy) and the Christoffel symbols
+    {(i, j, k): c_ijk} that are not zero (joints counted from 1), in textbook form; `program`
+    computes the same as code."""
 
     program: Program
     M: sympy.Matrix
@@ -79,6 +81,7 @@ def derive(chain: Chain, masses: MassModel) -> Dynamics:
     M = program.outputs["M"]
     n = M.rows
     upper = {(i, j): written(M[i, j]) for i in range(n) for j in range(i, n)}
+    gravity = gravity_vector(chain, masses).applyfunc(lambda x: compact(x, masses_symbols, formulas))
     return Dynamics(program, sympy.Matrix(n, n, lambda i, j: upper[min(i, j), max(i, j)]),
-                    program.outputs["C"].applyfunc(written), program.outputs["g"].applyfunc(written),
+                    program.outputs["C"].applyfunc(written), gravity,
                     {key: value for key, value in ((k, written(v)) for k, v in christoffel.items()) if value != 0})

@@ -52,7 +52,13 @@ class Body:
     inertia: tuple
 
     @property
+    def gain(self) -> sympy.Expr:
+        """How fast the joint turns (or slides) with its variable: −1 for θ = −q, 1 mostly."""
+        return sympy.diff(self.angle if self.joint == "R" else self.offset, self.variable)
+
+    @property
     def position(self) -> tuple:
+
         """The origin of J_i in J_{i−1}: Rx(α)·(a, 0, d)... = (a, −sin α·d, cos α·d)."""
         return (self.length, -sympy.sin(self.twist) * self.offset, sympy.cos(self.twist) * self.offset)
 

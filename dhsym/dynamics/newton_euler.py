@@ -97,7 +97,7 @@ def newton_euler(tape: Tape, model: RigidModel, rates=None, accelerations=None, 
                            cross(tape, omega, cross(tape, omega, reach)))
         acceleration = into_next(tape, body, acceleration)
         turned, omega_dot = into_next(tape, body, omega), into_next(tape, body, omega_dot)
-        rate, change = rates[k], accelerations[k]
+        rate, change = body.gain * rates[k], body.gain * accelerations[k]
         if body.joint == "R":
             omega = add(tape, turned, (0, 0, rate))
             omega_dot = add(tape, omega_dot, (rate * turned[1], -rate * turned[0], change))
@@ -128,6 +128,7 @@ def _inward(tape: Tape, model: RigidModel, outward: list) -> list:
             force = pushed
         force = add(tape, force, outward[k].force)
         moment = add(tape, moment, outward[k].moment)
-        torque = moment[2] if model.bodies[k].joint == "R" else force[2]
+        torque = tape.name(model.bodies[k].gain * (moment[2] if model.bodies[k].joint == "R" else force[2]))
+
         steps.append(Inward(k + 1, force, moment, torque))
     return steps[::-1]

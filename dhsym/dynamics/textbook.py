@@ -25,11 +25,12 @@ MAX_TERMS = 20_000  # of all the printed elements, multiplied out; past this the
 
 def compact(expr: sympy.Expr, masses=(), memo: dict | None = None) -> sympy.Expr:
     """The shortest textbook form of `expr` (see the module's docstring); `masses` are the
-    symbols to group by first; `memo` keeps the sum formulas of the cos/sin sums met before."""
-    expr = pythagoras(sympy.expand(expr))
+    symbols to group by first; `memo` keeps the sum formulas of the cos/sin sums met before. The
+    form given is a candidate too."""
+    given, expr = expr, pythagoras(sympy.expand(expr))
     if expr.is_Atom or not expr.is_Add:
         return expr
-    candidates = [expr, grouped(expr)]
+    candidates = [expr, grouped(expr)] + ([given] if given.has(sympy.sin, sympy.cos) else [])
     summed = sum_formulas(expr, {} if memo is None else memo) if expr.has(sympy.sin, sympy.cos) else expr
     if summed != expr:
         candidates.append(grouped(summed))

@@ -32,6 +32,7 @@ import yaml
 
 from ..core.inertia import INERTIA_ENTRIES, LinkInertia, MassModel, tensor
 from ..errors import UserError
+from ..geometry.rounding import written_text
 from .expr import Reading
 
 ROW_KEYS = ("mass", "com", "inertia")
@@ -51,7 +52,7 @@ def read_masses(reader, top: dict, variables) -> MassModel:
     gravity = None
     if "gravity" in top:
         gravity = _vector(reader, top["gravity"][1], "gravity", 3, "[gx, gy, gz] (in the first frame)", variables,
-                          reading)
+                          reading, "gravity is one constant vector, given in the first frame")
     given = tuple(links) if any(link.given for link in links) else ()
     return MassModel(given, gravity, reading.numbers)
 
@@ -61,8 +62,8 @@ def _link(reader, items: dict, what: str, variables, reading: Reading) -> LinkIn
     if "mass" in items:
         mass = _value(reader, items["mass"], f"{what} mass", variables, reading)
         if mass.is_number and not mass.is_positive:
-            raise UserError(f"{what} mass: must be more than 0, not {mass}; give the link's mass in kilograms "
-                            "(or a name such as m_1)", reader.where(items["mass"]))
+            raise UserError(f"{what} mass: must be more than 0, not {written_text(mass)}; give the link's mass in "
+                            "kilograms (or a name such as m_1)", reader.where(items["mass"]))
     if "com" in items:
         com = _vector(reader, items["com"], f"{what} com", 3, COM_FORM, variables, reading)
     if "inertia" in items:
@@ -73,22 +74,23 @@ def _link(reader, items: dict, what: str, variables, reading: Reading) -> LinkIn
     return LinkInertia(mass, com, inertia)
 
 
-def _vector(reader, node: yaml.Node, what: str, size: int, form: str, variables, reading: Reading) -> tuple:
+def _vector(reader, node: yaml.Node, what: str, size: int, form: str, variables, reading: Reading,
+            why: str = "") -> tuple:
     if not isinstance(node, yaml.SequenceNode):
         raise UserError(f"{what} must be a list of {size} values {form}, not a single value", reader.where(node))
     if len(node.value) != size:
         raise UserError(f"{what} must be a list of {size} values {form}, not {len(node.value)}", reader.where(node))
-    return tuple(_value(reader, element, what, variables, reading) for element in node.value)
+    return tuple(_value(reader, element, what, variables, reading, why) for element in node.value)
 
 
-def _value(reader, node: yaml.Node, what: str, variables, reading: Reading) -> sympy.Expr:
+def _value(reader, node: yaml.Node, what: str, variables, reading: Reading, why: str = "") -> sympy.Expr:
     value, read = reader.read(node, what, table=False)
     reading.absorb(read)
     reader.reading.names += read.names  # two spellings of one printed name are warned about with the table's
     moving = sorted(value.free_symbols & set(variables), key=str)
     if moving:
-        raise UserError(f"{what}: {moving[0]} is a joint variable; a link's mass, centre of mass and inertia are "
-                        "constants, given in the link's own frame", reader.where(node))
+        why = why or "a link's mass, centre of mass and inertia are constants, given in the link's own frame"
+        raise UserError(f"{what}: {moving[0]} is a joint variable; {why}", reader.where(node))
     return value
 
 
@@ -115,9 +117,11 @@ def physical_problem(entries) -> str:
             i, j = [m for m in range(3) if m != k]
             if matrix[i, i] + matrix[j, j] < matrix[k, k]:
                 names = [f"I{INERTIA_ENTRIES[m]}" for m in (i, j, k)]
-                values = [matrix[m, m] for m in (i, j, k)]
+                values = [written_text(matrix[m, m]) for m in (i, j, k)]
+                flat = " (a flat model that needs only one moment can give a thin disc's: the other two half of it)" \
+                    if matrix[i, i] == matrix[j, j] == 0 else ""
                 return (f"{names[0]} + {names[1]} ≥ {names[2]} fails ({values[0]} + {values[1]} < {values[2]}): "
-                        f"{advice}")
+                        f"{advice}{flat}")
     moments = sorted(float(sympy.re(x)) for x in matrix.evalf(30).eigenvals(multiple=True))
     moments = ", ".join(f"{x:.4g}" for x in moments)
 
