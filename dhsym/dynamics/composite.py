@@ -64,7 +64,8 @@ def _carried(tape: Tape, body, mass, h, inertia) -> tuple:
     rotated = tensor_into_previous(tape, body, inertia)
     pp = tape.name(p[0] ** 2 + p[1] ** 2 + p[2] ** 2)
     ph = tape.name(2 * (p[0] * turned[0] + p[1] * turned[1] + p[2] * turned[2]))
-    diagonal = [tape.name(mass * (pp - p[a] ** 2) + ph - 2 * p[a] * turned[a]) for a in range(3)]
+    diagonal = [tape.name(mass * tape.name(pp - p[a] ** 2) + ph - 2 * p[a] * turned[a]) for a in range(3)]
+
     off = [tape.name(-mass * p[a] * p[b] - p[a] * turned[b] - turned[a] * p[b]) for a, b in ((0, 1), (0, 2), (1, 2))]
     moved = tape.vector(x + y for x, y in zip(rotated, diagonal + off))
     return mass, add(tape, turned, tuple(mass * x for x in p)), moved

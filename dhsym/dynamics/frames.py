@@ -83,9 +83,10 @@ def tensor_into_previous(tape: Tape, body, inertia) -> tuple:
     # Rz(θ) I Rz(θ)ᵀ, with the sums and differences shared
     cc, ss, cs = tape.name(c * c), tape.name(s * s), tape.name(c * s)
     turned = (cc * xx + ss * yy - 2 * cs * xy, ss * xx + cc * yy + 2 * cs * xy, zz,
-              cs * (xx - yy) + (cc - ss) * xy, c * xz - s * yz, s * xz + c * yz)
+              cs * tape.name(xx - yy) + tape.name(cc - ss) * xy, c * xz - s * yz, s * xz + c * yz)
     xx, yy, zz, xy, xz, yz = tape.vector(turned)
     ca, sa = trig(tape, body.twist)  # then Rx(α) · Rx(α)ᵀ
     caa, saa, csa = tape.name(ca * ca), tape.name(sa * sa), tape.name(ca * sa)
     return tape.vector((xx, caa * yy + saa * zz - 2 * csa * yz, saa * yy + caa * zz + 2 * csa * yz,
-                        ca * xy - sa * xz, sa * xy + ca * xz, csa * (yy - zz) + (caa - saa) * yz))
+                        ca * xy - sa * xz, sa * xy + ca * xz, csa * tape.name(yy - zz) + tape.name(caa - saa) * yz))
+

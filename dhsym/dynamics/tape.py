@@ -35,7 +35,29 @@ def is_trivial(expr: sympy.Expr) -> bool:
     return expr.is_Mul and len(expr.args) == 2 and expr.args[0] == -1 and expr.args[1].is_Atom
 
 
+def leads_negative(expr: sympy.Expr) -> bool:
+    """Whether `expr` is written with a minus in front, decided the same way for −expr (so that a
+    value and its negative share a name) and cheaply: a product by its coefficient, a sum by the
+    coefficient of its first term in SymPy's structural order, its coefficient left out.
+
+    >>> x, y = sympy.symbols("x y", real=True)
+    >>> leads_negative(x - y), leads_negative(y - x), leads_negative(-2*x*y)
+    (False, True, True)
+    """
+    if expr.is_Mul or expr.is_Number:
+        return expr.as_coeff_Mul()[0].is_negative
+    if not expr.is_Add:
+        return False
+    first = None
+    for term in expr.args:
+        coefficient, rest = term.as_coeff_Mul()
+        if rest != 1 and (first is None or rest.compare(first[1]) < 0):
+            first = (coefficient, rest)
+    return first is not None and first[0].is_negative
+
+
 class Tape:
+
     """Named values in the order they were made; each name is a Dummy, so that it never meets a
     symbol of the robot."""
 
@@ -50,7 +72,7 @@ class Tape:
         expr = sympy.sympify(expr)
         if is_trivial(expr):
             return expr
-        if expr.could_extract_minus_sign():
+        if leads_negative(expr):
             return -self.name(-expr)
         known = self._names.get(expr)
         if known is not None:
@@ -114,8 +136,9 @@ class _Derivative:
             factors = expr.args
             parts = []
             for k, factor in enumerate(factors):
-                change = self.of(factor)
+                change = self.tape.name(self.of(factor))  # a product of a sum is slow to build: name the sum
                 if change != 0:
+
                     parts.append(sympy.Mul(*factors[:k], change, *factors[k + 1:]))
             return sympy.Add(*parts)
         if expr.is_Pow and expr.exp.is_Integer:
