@@ -66,7 +66,7 @@ def module_text(program: Program, name: str, sample: dict, numbers=None, command
     values = {s.name: v for s, v in sample.items()}
     keywords = [f"{names[s.name]}={default_text(values[s.name])}" for s in constants if s.name in values]
     keywords += [names[s.name] for s in constants if s.name not in values]
-    renamed = _variable_names(program, set(names.values()))
+    renamed = _variable_names(program.tape, set(names.values()))
     n = len(program.variables)
     made = f"Made by `{comment_text(command)}`." if command else "Made by dhsym."
     lines = [f'"""Dynamics of {comment_text(name)}: M, C, g, tau and qdd. {made}\n',
@@ -121,10 +121,29 @@ def _function(program: Program, function: str, names: dict, renamed: dict, code,
     return lines
 
 
-def _variable_names(program: Program, taken: set) -> dict:
+def tape_function(tape, inputs: list, outputs: list):
+    """A numpy function of the symbols `inputs` (each a number or an array of one shape, in that
+    order) that returns the values of `outputs` (expressions on `tape`) as one array, outputs first:
+    what the base-parameter search and the tests evaluate the tape with, at many points at once."""
+    import numpy  # only to evaluate: writing a module needs no numpy
+
+    names = python_names([s.name for s in inputs])
+    code = NumpyCode(names, None)
+    renamed = _variable_names(tape, set(names.values()) | {"numpy", "broadcast"})
+    lines = [f"def evaluate({', '.join(names[s.name] for s in inputs)}):"]
+    for symbol in tape.used(outputs):
+        lines.append(f"    {renamed[symbol].name} = {code.doprint(tape.definitions[symbol].xreplace(renamed))}")
+    values = ", ".join(code.doprint(sympy.sympify(x).xreplace(renamed)) for x in outputs)
+    lines.append(f"    return numpy.array(numpy.broadcast_arrays({values}), dtype=float)")
+    namespace = {"numpy": numpy}
+    exec(compile("\n".join(lines), "<dhsym tape>", "exec"), namespace)
+    return namespace["evaluate"]
+
+
+def _variable_names(tape, taken: set) -> dict:
     """{name on the tape: a Dummy named for the module}: cos_theta_1 for cos θ1, v1, v2, … else."""
     renamed, count = {}, 0
-    for symbol, value in program.tape.definitions.items():
+    for symbol, value in tape.definitions.items():
         text = None
         if isinstance(value, (sympy.cos, sympy.sin)) and value.args[0].is_Symbol:
             text = f"{type(value).__name__}_{value.args[0].name}"
