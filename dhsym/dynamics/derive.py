@@ -25,7 +25,7 @@ from ..core.chain import Chain
 from ..core.inertia import MassModel
 from ..errors import UserError
 from .coriolis import christoffel_symbols
-from .lagrange import gravity_vector
+from .polynomial import angle_sums, multiplied_out
 from .program import Program, dynamics_program
 from .textbook import MAX_TERMS, compact, expanded_terms
 
@@ -62,26 +62,26 @@ class Dynamics:
 
 def derive(chain: Chain, masses: MassModel) -> Dynamics:
     """The dynamics of `chain` with the filled `masses`, in textbook form."""
-    program = dynamics_program(chain, masses)
+    program = dynamics_program(chain, masses, parts=("M", "g"))
     tape = program.tape
     christoffel = christoffel_symbols(tape, program.model, program.outputs["M"])
-    values = [*program.outputs["M"], *program.outputs["C"], *program.outputs["g"], *christoffel.values()]
+    values = [*program.outputs["M"], *program.outputs["g"], *christoffel.values()]
     size = expanded_terms(tape, values)
     if size > MAX_TERMS:
         raise UserError(f"the elements of M, C and g would have about {size:,} terms multiplied out, more than the "
                         f"{MAX_TERMS:,} dhsym writes out; give the links' masses, centres of mass and inertias as "
                         "numbers, take fewer links, or generate code with --format python, which needs no printing")
     masses_symbols = [link.mass for link in masses.links if isinstance(link.mass, sympy.Symbol)]
-    memo: dict = {}
-    formulas: dict = {}
-
-    def written(value):
-        return compact(tape.expanded(value, memo), masses_symbols, formulas)
-
-    M = program.outputs["M"]
+    M, g = program.outputs["M"], program.outputs["g"]
     n = M.rows
-    upper = {(i, j): written(M[i, j]) for i in range(n) for j in range(i, n)}
-    gravity = gravity_vector(chain, masses).applyfunc(lambda x: compact(x, masses_symbols, formulas))
-    return Dynamics(program, sympy.Matrix(n, n, lambda i, j: upper[min(i, j), max(i, j)]),
-                    program.outputs["C"].applyfunc(written), gravity,
-                    {key: value for key, value in ((k, written(v)) for k, v in christoffel.items()) if value != 0})
+    cells = [(i, j) for i in range(n) for j in range(i, n)]
+    written = [compact(x, masses_symbols, multiplied=True) for x in
+               multiplied_out(tape, [*(M[i, j] for i, j in cells), *g, *christoffel.values()],
+                              angle_sums(program.model.bodies[1:]))]
+    upper = dict(zip(cells, written))
+    symbols = {key: value for key, value in zip(christoffel, written[len(cells) + n:]) if value != 0}
+    rates = program.rates
+    C = sympy.Matrix(n, n, lambda k, j: sympy.Add(*[symbols[i + 1, j + 1, k + 1] * rates[i] for i in range(n)
+                                                    if (i + 1, j + 1, k + 1) in symbols]))
+    return Dynamics(program, sympy.Matrix(n, n, lambda i, j: upper[min(i, j), max(i, j)]), C,
+                    sympy.Matrix(written[len(cells):len(cells) + n]), symbols)

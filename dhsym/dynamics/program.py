@@ -33,8 +33,9 @@ MAX_PROGRAM_JOINTS = 12  # C by derivatives grows as n³: 12 joints is some 20,0
 @dataclass(frozen=True)
 class Program:
     """Named values (`tape`) and what they give: `outputs` M (n×n), C (n×n), g (n×1) and tau
-    (n×1), functions of the joint variables, their rates (`rates`, q̇) and accelerations (q̈) and
-    the robot's constants; `steps` are Newton–Euler's passes, link by link."""
+    (n×1) (those asked for), functions of the joint variables, their rates (`rates`, q̇) and
+    accelerations (q̈) and the robot's constants; `steps` are Newton–Euler's passes, link by link
+    (when tau is asked for)."""
 
     tape: Tape
     model: RigidModel
@@ -42,7 +43,8 @@ class Program:
     rates: tuple
     accelerations: tuple
     outputs: dict
-    steps: NewtonEuler
+    steps: NewtonEuler | None
+
 
     def operations(self, *names: str) -> Operations:
         """What computing the named outputs (all of them when none is named) costs."""
@@ -65,9 +67,11 @@ def _entries(matrix: sympy.Matrix, name: str) -> list:
     return list(matrix)
 
 
-def dynamics_program(chain: Chain, masses: MassModel, parameters: list | None = None) -> Program:
+def dynamics_program(chain: Chain, masses: MassModel, parameters: list | None = None,
+                     parts=("M", "C", "g", "tau")) -> Program:
     """The program of `chain` with the filled `masses` (see `dhsym.dynamics.model.rigid_model`
-    for `parameters`). A chain of more than MAX_PROGRAM_JOINTS joints is refused before any work."""
+    for `parameters`), with the outputs named in `parts` (C needs M). A chain of more than
+    MAX_PROGRAM_JOINTS joints is refused before any work."""
     if chain.n > MAX_PROGRAM_JOINTS:
         raise UserError(f"the dynamics of {chain.n} joints would be too long to work out (C grows as the cube of "
                         f"the number of joints); dhsym derives it for at most {MAX_PROGRAM_JOINTS}: take fewer links")
@@ -75,10 +79,15 @@ def dynamics_program(chain: Chain, masses: MassModel, parameters: list | None = 
     model = rigid_model(chain, masses, parameters)
     variables = tuple(model.variables)
     rates, accelerations = tuple(rate_symbols(variables)), tuple(rate_symbols(variables, 2))
-    steps = newton_euler(tape, model, rates, accelerations)
-    zero = [sympy.Integer(0)] * model.n
-    gravity = newton_euler(tape, model, zero, zero).torques
-    M = mass_matrix(tape, model)
-    C = coriolis_matrix(tape, model, M, rates)
-    outputs = {"M": M, "C": C, "g": sympy.Matrix(gravity), "tau": sympy.Matrix(steps.torques)}
+    outputs: dict = {}
+    steps = newton_euler(tape, model, rates, accelerations) if "tau" in parts else None
+    if "g" in parts:
+        zero = [sympy.Integer(0)] * model.n
+        outputs["g"] = sympy.Matrix(newton_euler(tape, model, zero, zero).torques)
+    if "M" in parts or "C" in parts:
+        outputs["M"] = mass_matrix(tape, model)
+    if "C" in parts:
+        outputs["C"] = coriolis_matrix(tape, model, outputs["M"], rates)
+    if steps is not None:
+        outputs["tau"] = sympy.Matrix(steps.torques)
     return Program(tape, model, variables, rates, accelerations, outputs, steps)

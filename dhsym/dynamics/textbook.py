@@ -13,49 +13,105 @@ g*m_2*(l_1*cos(q_1) + lc_2*cos(q_1 + q_2))
 """
 from __future__ import annotations
 
+import itertools
 import math
 
 import sympy
-from sympy.simplify.fu import TR10i
 
-from ..core.size import length
+from ..core.size import tree_size
+from .tape import cost
 
 MAX_TERMS = 20_000  # of all the printed elements, multiplied out; past this they are not written out
 
 
-def compact(expr: sympy.Expr, masses=(), memo: dict | None = None) -> sympy.Expr:
+def compact(expr: sympy.Expr, masses=(), memo: dict | None = None, multiplied: bool = False) -> sympy.Expr:
     """The shortest textbook form of `expr` (see the module's docstring); `masses` are the
     symbols to group by first; `memo` keeps the sum formulas of the cos/sin sums met before. The
-    form given is a candidate too."""
-    given, expr = expr, pythagoras(sympy.expand(expr))
+    form given is a candidate too, unless it is `multiplied` out already (with sin² + cos² = 1
+    applied: dhsym.dynamics.polynomial)."""
+    given, expr = expr, expr if multiplied else pythagoras(sympy.expand(expr))
     if expr.is_Atom or not expr.is_Add:
         return expr
-    candidates = [expr, grouped(expr)] + ([given] if given.has(sympy.sin, sympy.cos) else [])
-    summed = sum_formulas(expr, {} if memo is None else memo) if expr.has(sympy.sin, sympy.cos) else expr
+    candidates = [expr, grouped(expr)] + ([given] if not multiplied and given.has(sympy.sin, sympy.cos) else [])
+    summed = sum_formulas(expr) if expr.has(sympy.sin, sympy.cos) else expr
     if summed != expr:
         candidates.append(grouped(summed))
     symbols = [m for m in masses if summed.has(m)]
     if symbols:
         by_mass = sympy.collect(summed, symbols, evaluate=False)
-        candidates.append(sympy.Add(*[key * grouped(sympy.expand(value)) for key, value in by_mass.items()]))
-    return min(candidates, key=length)
+        candidates.append(sympy.Add(*[key * grouped(value) for key, value in by_mass.items()]))
+    return min(candidates, key=_cost)
 
 
-def sum_formulas(expr: sympy.Expr, memo: dict) -> sympy.Expr:
-    """c1 c2 − s1 s2 = c12 and the other three, applied to the cos/sin part of each group of
-    terms that share the rest of their factors, multiplied out again."""
-    groups: dict = {}
+def _cost(expr: sympy.Expr) -> tuple:
+    """Operations as code counts them, then the size of the tree: a fast stand-in for count_ops."""
+    return cost(expr).total, tree_size(expr)
+
+
+def sum_formulas(expr: sympy.Expr, memo: dict | None = None) -> sympy.Expr:
+    """c1 c2 − s1 s2 = c12 and the other three, wherever two terms differ only in such a pair of
+    factors and have equal or opposite coefficients, until none is left.
+
+    >>> a, b, k = sympy.symbols("a b k", real=True)
+    >>> c, s = sympy.cos, sympy.sin
+    >>> sum_formulas(k*c(a)*c(b) - k*s(a)*s(b) + 2*s(a)*c(b) - 2*c(a)*s(b))
+    k*cos(a + b) + 2*sin(a - b)
+    """
+    terms: dict = {}  # the multiset of a term's factors -> its coefficient
     for term in sympy.Add.make_args(expr):
-        number, term = term.as_coeff_Mul()
-        trig, rest = _split(term)
-        groups.setdefault(rest, []).append(number * trig)
-    parts = []
-    for rest, trigs in groups.items():
-        key = sympy.Add(*trigs)
-        if key not in memo:
-            memo[key] = TR10i(key) if len(trigs) > 1 else key
-        parts.append(rest * memo[key])
-    return sympy.expand(sympy.Add(*parts))
+        number, rest = term.as_coeff_Mul()
+        key = _multiset(sympy.Mul.make_args(rest))
+        terms[key] = terms.get(key, 0) + number
+    changed = True
+    while changed:
+        changed = False
+        for key in list(terms):
+            if key in terms and _combine(terms, key):
+                changed = True
+    return sympy.Add(*[number * sympy.Mul(*[f ** k for f, k in key]) for key, number in terms.items()])
+
+
+def _multiset(factors) -> frozenset:
+    """A product's factors as a multiset {(base, power)}: cos(x)**2 is (cos(x), 2)."""
+    counted: dict = {}
+    for factor in factors:
+        base, power = (factor.base, factor.exp) if factor.is_Pow and factor.exp.is_Integer else (factor, 1)
+        counted[base] = counted.get(base, 0) + power
+    return frozenset(counted.items())
+
+
+def _combine(terms: dict, key: frozenset) -> bool:
+    """Merge the term `key` with a partner by a sum formula, if it has one."""
+    number = terms[key]
+    single = sorted((base for base, power in key if power == 1 and isinstance(base, (sympy.cos, sympy.sin))),
+                    key=sympy.default_sort_key)  # the same pair first, whatever the hash seed
+    swap = {sympy.cos: sympy.sin, sympy.sin: sympy.cos}
+    for first, second in itertools.combinations(single, 2):
+        a, b = first.args[0], second.args[0]
+        if a == b:
+            continue
+        rest = key - {(first, 1), (second, 1)}
+        partner = rest | {(swap[type(first)](a), 1), (swap[type(second)](b), 1)}
+        other = terms.get(partner)
+        if other is None or abs(other) != abs(number):
+            continue
+        same = other == number
+        if isinstance(first, sympy.cos) and isinstance(second, sympy.cos):
+            merged = sympy.cos(a - b) if same else sympy.cos(a + b)
+        elif isinstance(first, sympy.sin) and isinstance(second, sympy.sin):
+            merged = sympy.cos(a - b) if same else -sympy.cos(a + b)
+        elif isinstance(first, sympy.sin):  # sin a cos b ± cos a sin b
+            merged = sympy.sin(a + b) if same else sympy.sin(a - b)
+        else:  # cos a sin b ± sin a cos b
+            merged = sympy.sin(a + b) if same else -sympy.sin(a - b)
+        del terms[key], terms[partner]
+        coefficient, factor = (number * merged).as_coeff_Mul()
+        joined = _multiset([f ** k for f, k in rest] + [factor])
+        terms[joined] = terms.get(joined, 0) + coefficient
+        if terms[joined] == 0:
+            del terms[joined]
+        return True
+    return False
 
 
 def _split(term: sympy.Expr) -> tuple:
