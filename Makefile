@@ -55,6 +55,7 @@ bench: install
 	$(BIN)/python benchmarks/geometry_speed.py
 	$(BIN)/python benchmarks/ik_speed.py
 	$(BIN)/python benchmarks/ik_peers.py
+	$(BIN)/python benchmarks/dynamics_speed.py
 	$(BIN)/python benchmarks/startup.py
 
 notebooks: install node-packages
