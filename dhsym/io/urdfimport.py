@@ -65,11 +65,13 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     notes = "Derived by dhsym import; joint variables: " + ", ".join(
         f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
     assignment = assign_frames(urdf.axes, urdf.tool, convention, symbols)
-    masses, rounded = in_dh_frames(urdf.bodies, [frame.pose for frame in assignment.frames[1:]])
+    masses, rounded, odd = in_dh_frames(urdf.bodies, [frame.pose for frame in assignment.frames[1:]])
     robot = assignment.robot(
         name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}",
         notes=joined(notes, inertia_note(urdf.bodies, rounded)), masses=masses,
-        sample={GRAVITY_SYMBOL: G_SAMPLE} if masses.given else {}, warnings=[*expansion_warnings, *urdf.warnings])
+        sample={GRAVITY_SYMBOL: G_SAMPLE} if masses.given else {},
+        warnings=[*expansion_warnings, *urdf.warnings, *odd])
+
     return Imported(robot, list(urdf.joint_names))
 
 

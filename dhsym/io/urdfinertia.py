@@ -14,6 +14,7 @@ in an error is the attribute's own: FILE:LINE:COL.
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import sympy
@@ -21,6 +22,7 @@ import sympy
 from ..core.inertia import LinkInertia, MassModel, entries, tensor
 from ..errors import UserError
 from ..geometry.rounding import fit
+from .inertia import physical_problem
 
 INERTIA_ATTRIBUTES = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
 MAX_MERGED_LINKS = 200  # links merged into the bodies of one table, as many as a path may hold
@@ -36,6 +38,7 @@ class Body:
     com: sympy.Matrix
     inertia: sympy.Matrix
     held: tuple  # joints off the path whose links are in it, held at zero
+    place: str = ""  # FILE:LINE:COL of the first <inertial> in it
 
 
 def link_bodies(reader, path: list, poses: dict) -> list:
@@ -55,7 +58,11 @@ def link_bodies(reader, path: list, poses: dict) -> list:
         parts = [part for part in (_inertial(reader, name, pose) for name, pose in group) if part is not None]
         held = tuple(reader.joints[name].get("name", "").strip() for name, _ in group[1:]
                      if name not in on_path and reader.joints[name].get("type", "").strip() != "fixed")
-        bodies.append(_merged(parts, held) if parts else None)
+        body = _merged(parts, held) if parts else None
+        if body is not None:
+            first = next(name for name, _ in group if reader.links[name].find("inertial") is not None)
+            body = dataclasses.replace(body, place=str(reader.where(reader.links[first].find("inertial"))))
+        bodies.append(body)
     return bodies
 
 
@@ -115,10 +122,12 @@ def _merged(parts: list, held: tuple) -> Body | None:
 
 
 def in_dh_frames(bodies: list, frames: list) -> tuple:
-    """(MassModel with each body seen from its DH frame i, whether a value was rounded): `frames`
-    are the DH frames' poses at zero in base coordinates, frame i for body i (1..n)."""
-    links, rounded = [], False
-    for body, pose in zip(bodies, frames):
+    """(MassModel with each body seen from its DH frame i, whether a value was rounded, warnings):
+    `frames` are the DH frames' poses at zero in base coordinates, frame i for body i (1..n). An
+    inertia that no body can have (CAD exports have them) is left generic, with a warning, so that
+    the robot file reads back."""
+    links, rounded, warnings = [], False, []
+    for number, (body, pose) in enumerate(zip(bodies, frames), 1):
         if body is None:
             links.append(LinkInertia())
             continue
@@ -128,9 +137,16 @@ def in_dh_frames(bodies: list, frames: list) -> tuple:
         values = [body.mass, *com, *entries(inertia)]
         written = [fit(value) for value in values]
         rounded = rounded or any(w != v for w, v in zip(written, values))
-        links.append(LinkInertia(written[0], tuple(written[1:4]), tuple(written[4:])))
+        tensor_entries = tuple(written[4:])
+        problem = physical_problem(tensor_entries)
+        if problem:
+            warnings.append(f"{body.place}: the inertia of DH link {number} is not one a body can have "
+                            f"({problem.split(':')[0]}); it is left as the generic symbols I_xx{number} … I_yz{number}")
+
+            tensor_entries = None
+        links.append(LinkInertia(written[0], tuple(written[1:4]), tensor_entries))
     given = tuple(links) if any(link.given for link in links) else ()
-    return MassModel(given), rounded
+    return MassModel(given), rounded, warnings
 
 
 def inertia_note(bodies: list, rounded: bool) -> str:
