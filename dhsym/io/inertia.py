@@ -32,7 +32,6 @@ import yaml
 
 from ..core.inertia import INERTIA_ENTRIES, LinkInertia, MassModel, tensor
 from ..errors import UserError
-from ..geometry.rounding import written_text
 from .expr import Reading
 
 ROW_KEYS = ("mass", "com", "inertia")
@@ -62,7 +61,7 @@ def _link(reader, items: dict, what: str, variables, reading: Reading) -> LinkIn
     if "mass" in items:
         mass = _value(reader, items["mass"], f"{what} mass", variables, reading)
         if mass.is_number and not mass.is_positive:
-            raise UserError(f"{what} mass: must be more than 0, not {written_text(mass)}; give the link's mass in "
+            raise UserError(f"{what} mass: must be more than 0, not {_shown(mass)}; give the link's mass in "
                             "kilograms (or a name such as m_1)", reader.where(items["mass"]))
     if "com" in items:
         com = _vector(reader, items["com"], f"{what} com", 3, COM_FORM, variables, reading)
@@ -117,7 +116,7 @@ def physical_problem(entries) -> str:
             i, j = [m for m in range(3) if m != k]
             if matrix[i, i] + matrix[j, j] < matrix[k, k]:
                 names = [f"I{INERTIA_ENTRIES[m]}" for m in (i, j, k)]
-                values = [written_text(matrix[m, m]) for m in (i, j, k)]
+                values = [_shown(matrix[m, m]) for m in (i, j, k)]
                 flat = " (a flat model that needs only one moment can give a thin disc's: the other two half of it)" \
                     if matrix[i, i] == matrix[j, j] == 0 else ""
                 return (f"{names[0]} + {names[1]} ≥ {names[2]} fails ({values[0]} + {values[1]} < {values[2]}): "
@@ -134,3 +133,10 @@ def _semidefinite(matrix: sympy.Matrix) -> bool:
     minors += [matrix.extract([i, j], [i, j]).det() for i, j in ((0, 1), (0, 2), (1, 2))]
     minors.append(matrix.det())
     return not any(m.is_negative for m in minors)
+
+
+def _shown(value) -> str:
+    """A number as a robot file writes it (0.01, not 1/100), for a message."""
+    from ..geometry.rounding import written_text  # only after a mistake: reading a file needs no geometry
+
+    return written_text(value)
