@@ -15,6 +15,7 @@ from dhsym.core.inertia import LinkInertia, MassModel, tensor
 from dhsym.dynamics import lagrange
 from dhsym.dynamics.codegen import keyword_names, module_text
 from dhsym.dynamics.derive import derive
+from dhsym.dynamics.polynomial import multiplied_out
 from dhsym.dynamics.program import dynamics_program
 from dhsym.dynamics.tape import differentiate
 from dhsym.errors import UserError
@@ -225,3 +226,24 @@ def test_masses_are_written_back_and_survive_a_change_of_convention(robot):
     values = values_for(sorted(set(first.constants()) | set(second.constants()), key=str), 3)
     state = [numpy.full(robot.n, 0.3), numpy.full(robot.n, -0.7), numpy.full(robot.n, 1.1)]
     assert numpy.allclose(evaluated(first, values)["tau"](*state), evaluated(second, values)["tau"](*state))
+
+
+@pytest.mark.parametrize("name", ["planar2r", "cylindrical_rpp", "planar3r", "spong",
+                                  pytest.param("scara_spong", marks=pytest.mark.slow),
+                                  pytest.param("spherical_wrist", marks=pytest.mark.slow)])
+def test_lagrange_equals_newton_euler_by_algebra(name):
+    """τ_k = Σ d_kj q̈_j + Σ (∂d_kj/∂q_i − ½ ∂d_ij/∂q_k) q̇_i q̇_j + ∂P/∂q_k with SymPy's derivatives of the
+    Lagrange records, minus Newton–Euler's τ, multiplied out: zero."""
+    robot = load_robot_file(SPONG) if name == "spong" else load(name)
+    chain, masses = robot.chain, robot.filled_masses()
+    program = dynamics_program(chain, masses, parts=("tau",))
+    energies = lagrange.link_energies(chain, masses)
+    M = lagrange.mass_matrix(chain, masses, energies)
+    potential = sympy.Add(*[e.potential for e in energies])
+    q, qd, qdd, n = chain.joint_variables, program.rates, program.accelerations, chain.n
+    differences = []
+    for k in range(n):
+        torque = sum(M[k, j] * qdd[j] for j in range(n)) + potential.diff(q[k])
+        torque += sum((M[k, j].diff(q[i]) - M[i, j].diff(q[k]) / 2) * qd[i] * qd[j] for i in range(n) for j in range(n))
+        differences.append(sympy.expand_trig(torque) - program.outputs["tau"][k])
+    assert multiplied_out(program.tape, differences) == [0] * n

@@ -79,7 +79,9 @@ class Robot:
         if self.masses.links and len(self.masses.links) != self.chain.n:
             raise ValueError(f"{len(self.masses.links)} links' masses for {self.chain.n} joints")
         unknown = [s for s in self.sample if s not in self.chain.symbols]
-        unknown = sorted(str(s) for s in unknown if s not in self.masses.symbols(self.n, self.frame_offset + 1))
+        weights = self.masses.symbols(self.n, self.frame_offset + 1) if unknown else set()
+        unknown = sorted(str(s) for s in unknown if s not in weights)
+
         if unknown:
             raise UserError(f"sample: the robot has no symbol {unknown[0]!r}")
         object.__setattr__(self, "sample", MappingProxyType(dict(self.sample)))

@@ -138,19 +138,20 @@ def _rational(number) -> bool:
 
 
 def _pythagoras(polynomial, atoms, gens, position):
-    """sin² = 1 − cos² or cos² = 1 − sin², angle by angle, whichever gives fewer terms."""
-    for atom in atoms:
-        if not isinstance(atom, sympy.sin):
-            continue
-        cosine = sympy.cos(atom.args[0])
-        s, c = position[atom], position[cosine]
-        best = polynomial
-        for square, other in ((s, c), (c, s)):
-            candidate = _reduce(polynomial, square, other, gens)
-            if len(candidate) < len(best):
-                best = candidate
-        polynomial = best
+    """sin² = 1 − cos² or cos² = 1 − sin², angle by angle, whichever gives fewer terms, over and over
+    while the terms get fewer (one angle's rewriting can open another's: s2²(s4² + c4² − 1) is 0
+    only once s2² is left alone)."""
+    pairs = [(position[a], position[sympy.cos(a.args[0])]) for a in atoms if isinstance(a, sympy.sin)]
+    shorter = True
+    while shorter and polynomial:
+        shorter = False
+        for s, c in pairs:
+            for square, other in ((s, c), (c, s)):
+                candidate = _reduce(polynomial, square, other, gens)
+                if len(candidate) < len(polynomial):
+                    polynomial, shorter = candidate, True
     return polynomial
+
 
 
 def _reduce(polynomial, square: int, other: int, gens):
