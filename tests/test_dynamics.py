@@ -13,7 +13,7 @@ from strategies import robots_with_masses
 
 from dhsym.core.inertia import LinkInertia, MassModel, tensor
 from dhsym.dynamics import lagrange
-from dhsym.dynamics.codegen import keyword_names, module_text
+from dhsym.dynamics.codegen import keyword_names, module_text, tape_function
 from dhsym.dynamics.derive import derive
 from dhsym.dynamics.polynomial import multiplied_out
 from dhsym.dynamics.program import dynamics_program
@@ -247,3 +247,25 @@ def test_lagrange_equals_newton_euler_by_algebra(name):
         torque += sum((M[k, j].diff(q[i]) - M[i, j].diff(q[k]) / 2) * qd[i] * qd[j] for i in range(n) for j in range(n))
         differences.append(sympy.expand_trig(torque) - program.outputs["tau"][k])
     assert multiplied_out(program.tape, differences) == [0] * n
+
+
+@settings(max_examples=10)
+@given(robots_with_masses(max_joints=3))
+def test_textbook_forms_are_the_programs_values(robot):
+    """derive's M, C and g, written out and regrouped, are the program's at random points; or the
+    robot is refused as too large, at once."""
+    masses = robot.filled_masses()
+    try:
+        result = derive(robot.chain, masses)
+    except UserError as error:
+        assert "terms multiplied out" in str(error)
+        return
+    program = dynamics_program(robot.chain, masses)
+    symbols = sorted(set(program.constants()) | set(program.variables) | set(program.rates), key=str)
+    values = values_for(symbols, 5)
+    evaluate = tape_function(program.tape, symbols, [*program.outputs["M"], *program.outputs["C"],
+                                                     *program.outputs["g"]])
+    expected = evaluate(*[float(values[s]) for s in symbols])
+    written = [float(sympy.sympify(x).xreplace(values)) for x in [*result.M, *result.C, *result.g]]
+    assert numpy.allclose(written, expected)
+    assert result.M == result.M.T

@@ -46,7 +46,8 @@ def angle_sums(bodies) -> dict:
 
         sign = -sign if half_turns % 2 else sign
         before, total = total, total + sign * body.angle
-        if body.angle.free_symbols:
+        if body.angle.free_symbols and before.free_symbols:  # after a constant angle, θ is its own sum
+
             cos, sin = sympy.cos, sympy.sin
             out[cos(body.angle)] = cos(total) * cos(before) + sin(total) * sin(before)
             out[sin(body.angle)] = sign * (sin(total) * cos(before) - cos(total) * sin(before))
@@ -75,8 +76,9 @@ def multiplied_out(tape, values, sums: dict | None = None) -> list:
             return gens[position[expr]]
         if expr in opaque:
             return gens[position[opaque[expr]]]
-        if expr.is_Number:
+        if expr.is_number:  # 1/2, and √3/2 from a twist of π/6 (then the coefficients are expressions)
             return polynomials(domain.from_sympy(expr))
+
         if expr.is_Add:
             return sum((convert(a) for a in expr.args), polynomials.zero)
         if expr.is_Mul:
@@ -145,8 +147,12 @@ def _pythagoras(polynomial, atoms, gens, position):
     shorter = True
     while shorter and polynomial:
         shorter = False
+        degrees = polynomial.degrees()
         for s, c in pairs:
+            if degrees[s] < 2 and degrees[c] < 2:
+                continue
             for square, other in ((s, c), (c, s)):
+
                 candidate = _reduce(polynomial, square, other, gens)
                 if len(candidate) < len(polynomial):
                     polynomial, shorter = candidate, True
