@@ -1,10 +1,13 @@
 """The equations of motion τ = M(q) q̈ + C(q, q̇) q̇ + g(q) of a chain, element by element.
 
-`derive` runs the program (`dhsym.dynamics.program`) and writes each element of M, C and g and
-each Christoffel symbol that is not zero in textbook form (`dhsym.dynamics.textbook`). Before any
-element is written out, their size multiplied out is counted on the program's names, and a chain
-whose elements would be too large to print (the fully symbolic PUMA 560) is refused at once, with
-what to do instead.
+`derive` runs the program (`dhsym.dynamics.program`: M by composite bodies, g by Newton–Euler with
+no motion, the Christoffel symbols from the derivatives of M) and writes each element of M and g
+and each Christoffel symbol that is not zero in textbook form (`dhsym.dynamics.textbook`); C is
+Spong's C_kj = Σ_i c_ijk q̇_i of them. Before any element is written out, their size multiplied
+out is counted on the program's names, and a chain whose elements would be too large to print (the
+fully symbolic PUMA 560) is refused at once, with what to do instead. The Euler–Lagrange route in
+the robot's own frames (`dhsym.dynamics.lagrange`: energies, g from the potential energy) gives
+the same, as the tests prove.
 
 >>> import dhsym
 >>> from dhsym.core.inertia import MassModel
@@ -32,9 +35,10 @@ from .textbook import MAX_TERMS, compact, expanded_terms
 
 @dataclass(frozen=True)
 class Dynamics:
-    """M (d_ij), C, g (Spong's φ_k, from the potential energy) and the Christoffel symbols
-    {(i, j, k): c_ijk} that are not zero (joints counted from 1), in textbook form; `program`
-    computes the same as code."""
+    """M (d_ij), C, g (Spong's φ_k) and the Christoffel symbols {(i, j, k): c_ijk} that are not
+    zero (joints counted from 1), in textbook form; `program` computes M and g as code (with
+    `dynamics_program`'s other parts, C and τ too)."""
+
 
     program: Program
     M: sympy.Matrix
