@@ -13,6 +13,7 @@ import sympy
 from hypothesis import strategies as st
 
 from dhsym.core.chain import Chain, DHRow
+from dhsym.core.inertia import LinkInertia, MassModel
 from dhsym.core.numbers import WrittenNumbers
 from dhsym.core.robot import Robot
 from dhsym.core.transforms import Step
@@ -83,3 +84,35 @@ def robots(draw, max_joints: int = 4, conventions=("standard", "modified")):
     numbers = WrittenNumbers(places=5) if decimals else WrittenNumbers()
     return Robot(chain, name=draw(st.sampled_from(["arm", "wrist", "Ärm “3”"])), source="drawn by hypothesis",
                  notes=draw(st.sampled_from(["", "a note"])), sample=sample, numbers=numbers, frame_offset=offset)
+
+
+@st.composite
+def link_inertias(draw, number: int, decimals: bool):
+    """What a robot file may say about link `number`: nothing (the generic symbols), numbers (a
+    tensor some body has: about its centre, the moments of a box), names, or a mix."""
+    kind = draw(st.sampled_from(["none", "numbers", "names", "mass only", "com only"]))
+    if kind == "none":
+        return LinkInertia()
+    value = (lambda: draw(st.sampled_from(DECIMALS))) if decimals else (lambda: sympy.Integer(draw(st.integers(1, 3))))
+    if kind == "names":
+        return LinkInertia(real(f"m_{number}"), (real(f"lc_{number}"), 0, 0), (0, 0, real(f"I_{number}"), 0, 0, 0))
+    mass = value()
+    com = tuple(draw(st.sampled_from([sympy.Integer(0), value(), -value()])) for _ in range(3))
+    if kind == "mass only":
+        return LinkInertia(mass=mass)
+    if kind == "com only":
+        return LinkInertia(com=com)
+    x, y, z = value(), value(), value()  # a box of sides x, y, z: moments m(y² + z²)/12 ...
+    box = [mass * (y**2 + z**2) / 12, mass * (x**2 + z**2) / 12, mass * (x**2 + y**2) / 12]
+    return LinkInertia(mass, com, (*box, 0, 0, 0))
+
+
+@st.composite
+def robots_with_masses(draw, max_joints: int = 4, conventions=("standard", "modified")):
+    """A robot of `robots` with masses on some links and, perhaps, gravity of its own."""
+    robot = draw(robots(max_joints, conventions))
+    decimals = robot.numbers.places > 0
+    links = tuple(draw(link_inertias(robot.frame_offset + k, decimals)) for k in range(1, robot.n + 1))
+    gravity = draw(st.sampled_from([None, (0, 0, -sympy.Rational("9.81")), (0, -real("g"), 0)]))
+    masses = MassModel(links if any(link.given for link in links) else (), gravity)
+    return robot.replace(masses=masses)

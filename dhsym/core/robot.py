@@ -35,6 +35,7 @@ import sympy
 
 from ..errors import UserError
 from .chain import Chain, Frame, TransformTooLarge, frame_named, too_large_message
+from .inertia import MassModel
 from .numbers import WrittenNumbers
 
 MAX_FIRST_FRAME = 999  # a robot file writes first_frame with at most 3 digits
@@ -46,8 +47,8 @@ class Robot:
     constants, for pictures and numeric checks), `numbers` (how the file wrote its numbers, so
     that printers write them back the same way), `frame_offset` (the number printed for the
     chain's frame 0: a robot file's `first_frame`), `file` (the file it was read from) and
-    `warnings` (what its reading noticed: "FILE:LINE:COL: message"). Frames are numbered as
-    printed.
+    `warnings` (what its reading noticed: "FILE:LINE:COL: message") and `masses` (its links'
+    inertial parameters and gravity, dhsym.core.inertia). Frames are numbered as printed.
 
     >>> import sympy
     >>> from dhsym.core.chain import DHRow
@@ -66,6 +67,7 @@ class Robot:
     frame_offset: int = 0
     file: str = ""
     warnings: tuple = ()
+    masses: MassModel = MassModel()
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False, hash=False)
 
     def __post_init__(self):
@@ -74,7 +76,12 @@ class Robot:
         offset = self.frame_offset
         if isinstance(offset, bool) or not (isinstance(offset, int) and 0 <= offset <= MAX_FIRST_FRAME):
             raise UserError(f"first_frame must be a whole number from 0 to {MAX_FIRST_FRAME}, not {offset!r}")
-        unknown = sorted(str(s) for s in self.sample if s not in self.chain.symbols)
+        if self.masses.links and len(self.masses.links) != self.chain.n:
+            raise ValueError(f"{len(self.masses.links)} links' masses for {self.chain.n} joints")
+        unknown = [s for s in self.sample if s not in self.chain.symbols]
+        weights = self.masses.symbols(self.n, self.frame_offset + 1) if unknown else set()
+        unknown = sorted(str(s) for s in unknown if s not in weights)
+
         if unknown:
             raise UserError(f"sample: the robot has no symbol {unknown[0]!r}")
         object.__setattr__(self, "sample", MappingProxyType(dict(self.sample)))
@@ -120,6 +127,11 @@ class Robot:
         return dataclasses.replace(self, **changes)
 
     # ------------------------------------------------------------ what does not depend on numbering
+
+    def filled_masses(self) -> MassModel:
+        """Every link's mass, centre of mass and inertia, and gravity: the generic symbols
+        (m_4, x_c4, I_xx4 …, numbered as the joints are printed) where the file gives none."""
+        return self.masses.filled(self.n, self.frame_offset + 1)
 
     @property
     def n(self) -> int:

@@ -24,15 +24,17 @@ from __future__ import annotations
 import sympy
 
 from ..core.chain import Chain, DHRow
+from ..core.inertia import MassModel
 from ..core.robot import Robot
-from ..core.transforms import CONVENTIONS, Step
+from ..core.transforms import CONVENTIONS, Step, rotation
 from ..errors import UserError
 
 
 def to_convention(robot: Robot | Chain, convention: str) -> Robot | Chain:
     """The same robot in `convention` (a copy when it already is in it)."""
     if isinstance(robot, Robot):
-        return robot.with_chain(to_convention(robot.chain, convention))
+        chain = to_convention(robot.chain, convention)
+        return robot.replace(chain=chain, masses=_moved_masses(robot.masses, robot.chain, chain))
     chain = robot
     if convention not in CONVENTIONS:
         raise UserError(f"unknown convention {convention!r}; use standard or modified")
@@ -75,6 +77,23 @@ def _x_steps(steps: list) -> tuple:
         step = steps.pop(0)
         taken[step.kind] = step.value
     return taken.get("Rx", sympy.Integer(0)), taken.get("Tx", sympy.Integer(0)), steps
+
+
+def _moved_masses(masses: MassModel, before: Chain, after: Chain) -> MassModel:
+    """The links' parameters in the frames of the other convention. Spong's frame i is Craig's frame
+    i moved by Tx(a_i) Rx(α_i) of the standard row i, and both move with link i; gravity stays in the
+    first frame, which the regrouping keeps."""
+    if not masses.links or before.convention == after.convention:
+        return masses
+    standard = before if before.convention == "standard" else after
+    links = []
+    for link, row in zip(masses.links, standard.rows):
+        turn = rotation(0, row.alpha)[:3, :3]
+        if before.convention == "standard":
+            links.append(link.moved(turn, (row.a, 0, 0)))
+        else:
+            links.append(link.moved(turn.T, (-row.a, 0, 0)))
+    return MassModel(tuple(links), masses.gravity, masses.numbers)
 
 
 def _nonzero(steps) -> list[Step]:

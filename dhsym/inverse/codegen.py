@@ -42,12 +42,30 @@ _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
-class _NumpyCode(NumPyPrinter):
-    """numpy.arctan2, numpy.sqrt, …; names made safe for Python, decimals as the robot file wrote them."""
+class NumpyCode(NumPyPrinter):
+    """numpy.cos, numpy.sqrt, …; names made safe for Python (`names`: symbol name → Python name),
+    a Dummy is a variable of the module's own, named already; decimals as the robot file wrote them."""
 
     def __init__(self, names: dict, numbers):
         super().__init__({"fully_qualified_modules": True})
         self.names, self.numbers = names, numbers
+
+    def _print_Symbol(self, expr):
+        return self.names.get(expr.name, expr.name)
+
+    def _print_Dummy(self, expr):
+        return expr.name
+
+    def _print_Rational(self, expr):
+        decimal = self.numbers.decimal(expr, alone=True) if self.numbers else None
+        return decimal if decimal else f"{expr.p}/{expr.q}"
+
+
+class _NumpyCode(NumpyCode):
+    """numpy.arctan2 of values found through complex numbers, square roots at the workspace's edge."""
+
+    def __init__(self, names: dict, numbers):
+        super().__init__(names, numbers)
         self.complex: set = set()  # the module's variables that hold complex values (a quartic's roots)
         self.casting = False  # printing a value that is computed in complex numbers (dhsym.inverse.quartic)
 
@@ -67,18 +85,8 @@ class _NumpyCode(NumPyPrinter):
             return f"numpy.arccos({self._print(expr.args[0])} + 0j)"
         return super()._print_acos(expr)
 
-    def _print_Symbol(self, expr):
-        return self.names.get(expr.name, expr.name)
-
-    def _print_Dummy(self, expr):  # a variable of the module's own, named already
-        return expr.name
-
     def _print_Written(self, expr):  # a number as the robot file wrote it (dhsym.inverse.written)
         return expr.name
-
-    def _print_Rational(self, expr):
-        decimal = self.numbers.decimal(expr, alone=True) if self.numbers else None
-        return decimal if decimal else f"{expr.p}/{expr.q}"
 
     def _print_Pow(self, expr, rational=False):
         if expr.exp == sympy.Rational(1, 2) and self.casting:  # complex on purpose: the root of a negative number
@@ -113,7 +121,7 @@ def python_names(names) -> dict:
     return out
 
 
-def _default(value) -> str:
+def default_text(value) -> str:
     """A sample value as the file wrote it: 0.4318, not 2159/5000."""
     value = sympy.nsimplify(value) if not isinstance(value, sympy.Basic) else value
     if value.is_Rational and (10 ** 30) % value.q == 0:
@@ -128,7 +136,8 @@ def module_text(solution, command: str = "") -> str:
     names, constants = _names(solution)
     code = _NumpyCode(names, chain.numbers)
     sample = {str(symbol): value for symbol, value in chain.sample.items()}
-    keywords = [f"{names[s.name]}={_default(sample[s.name])}" for s in constants if s.name in sample]
+    keywords = [f"{names[s.name]}={default_text(sample[s.name])}" for s in constants if s.name in sample]
+
     keywords += [names[s.name] for s in constants if s.name not in sample]
     keywords += [names[s.name] for s in solution.free]
     used = set().union(*(value.free_symbols for _, value in solution.definitions),
@@ -143,8 +152,8 @@ def module_text(solution, command: str = "") -> str:
     body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
     body += ["        " + line for line in _computation(solution, names, code)]
     lines = [
-        f'"""Closed-form inverse kinematics of {_comment(chain.name)} ({chain.convention} DH).\n',
-        (f"Made by `{_comment(command)}`.\n" if command else "Made by dhsym.\n"),
+        f'"""Closed-form inverse kinematics of {comment_text(chain.name)} ({chain.convention} DH).\n',
+        (f"Made by `{comment_text(command)}`.\n" if command else "Made by dhsym.\n"),
         "ik(T, **constants): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by",
         "default; the result holds every branch's joint values, shaped (B, n) or (N, B, n): branches in",
         "the order of BRANCHES, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN where a",
@@ -238,7 +247,7 @@ def _computation(solution, names: dict, code) -> list[str]:
         shared[name] = compute(name, value, shared)
     columns = []
     for branch in solution.branches:
-        lines.append((_comment(branch.name), None, None))
+        lines.append((comment_text(branch.name), None, None))
         known = dict(shared)
         for name, value in branch.assignments:
             known[name] = compute(name, value, known)
@@ -298,6 +307,6 @@ def _temporaries(taken: set):
             yield sympy.Dummy(f"common_{number}")
 
 
-def _comment(text: str) -> str:
+def comment_text(text: str) -> str:
     """Text from a robot file, safe inside a comment or a docstring: one line, no quotes to end it."""
     return " ".join(str(text).split()).replace("\\", "/").replace('"""', "'''")

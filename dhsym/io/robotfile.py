@@ -31,11 +31,22 @@ from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, STEP_KINDS, Step
 from ..errors import Location, UserError
 from .expr import Reading, parse_expression
-from .suspicious import decimal_angle, looks_like_degrees, misplaced_variable, misspelt_pi, printed_key, printed_text
+from .inertia import ROW_KEYS as INERTIA_KEYS
+from .inertia import read_masses
+from .suspicious import (
+    decimal_angle,
+    looks_like_degrees,
+    misplaced_variable,
+    misspelt_pi,
+    printed_key,
+    printed_text,
+)
+from .yamlhints import glued_key, node_kind
 from .yamlsafe import MAX_JOINTS, YAML_TAG, compose, mark_location, read_text_file
 
-TOP_KEYS = ("name", "source", "convention", "joints", "axes", "base", "tool", "sample", "notes", "first_frame")
-ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var")
+TOP_KEYS = ("name", "source", "convention", "joints", "axes", "base", "tool", "sample", "notes", "first_frame",
+            "gravity")
+ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var", *INERTIA_KEYS)
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 LENGTHS = ("a", "d", "Tx", "Ty", "Tz")  # fields that hold distances; the others hold angles
 
@@ -89,18 +100,20 @@ class _Reader:
     def mapping(self, node: yaml.Node, what: str, allowed) -> dict:
         """A mapping's items as {key: (key node, value node)}, refusing unknown keys."""
         if not isinstance(node, yaml.MappingNode):
-            glued = _glued_key(node) if isinstance(node, yaml.ScalarNode) else ""
-            raise UserError(f"{what} must be a mapping of keys to values, not {_kind(node)}{glued}", self.where(node))
+            glued = glued_key(node) if isinstance(node, yaml.ScalarNode) else ""
+            raise UserError(f"{what} must be a mapping of keys to values, not {node_kind(node)}{glued}",
+                            self.where(node))
+
         items, previous = {}, None
         for key_node, value_node in node.value:
             if not isinstance(key_node, yaml.ScalarNode):
-                raise UserError(f"keys in {what} must be plain names, not {_kind(key_node)}", self.where(key_node))
+                raise UserError(f"keys in {what} must be plain names, not {node_kind(key_node)}", self.where(key_node))
             key = key_node.value
             if key not in allowed and key.isdigit() and previous is not None and previous.strip().isdigit():
                 raise UserError(f"unknown key {key!r} in {what}: inside {{...}} a comma separates entries; write "
                                 f"decimals with a point, as in {previous.strip()}.{key}", self.where(key_node))
             if key not in allowed:
-                hint = _glued_key(key_node) or _suggestion(key, allowed)
+                hint = glued_key(key_node) or _suggestion(key, allowed)
                 raise UserError(f"unknown key {key!r} in {what}{hint}", self.where(key_node))
             if key in items:
                 raise UserError(f"key {key!r} appears twice in {what}", self.where(key_node))
@@ -110,7 +123,7 @@ class _Reader:
 
     def text(self, node: yaml.Node, what: str) -> str:
         if not isinstance(node, yaml.ScalarNode):
-            raise UserError(f"{what} must be a single value, not {_kind(node)}", self.where(node))
+            raise UserError(f"{what} must be a single value, not {node_kind(node)}", self.where(node))
         return node.value
 
     def expression(self, node: yaml.Node, what: str, table: bool = True) -> sympy.Expr:
@@ -166,13 +179,13 @@ class _Reader:
         if isinstance(node, yaml.ScalarNode) and node.tag == YAML_TAG + "null":
             return []
         if not isinstance(node, yaml.SequenceNode):
-            raise UserError(f"{what} must be a list, not {_kind(node)}", self.where(node))
+            raise UserError(f"{what} must be a list, not {node_kind(node)}", self.where(node))
         return node.value
 
     def robot(self, root: yaml.Node) -> Robot:
         if not isinstance(root, yaml.MappingNode):
             raise UserError(f"a robot file must be a mapping of keys (convention, joints, ...) to values, "
-                            f"not {_kind(root)}", self.where(root))
+                            f"not {node_kind(root)}", self.where(root))
         top = self.mapping(root, "the robot file", TOP_KEYS)
         if "convention" not in top:
             raise UserError("missing key 'convention' (standard or modified)", self.where(root))
@@ -192,10 +205,14 @@ class _Reader:
             notes = joined(notes, rounded)
         else:
             chain = self.dh_chain(top, convention)
+        masses = read_masses(self, top, chain.joint_variables)
         self.check_names()
-        sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols}) if "sample" in top else {}
         first_frame = self.first_frame(top["first_frame"][1]) if "first_frame" in top else 0
-        return Robot(chain, name=self.optional_text(top, "name", Path(self.filename).stem),
+        weights = masses.symbols(chain.n, first_frame + 1)  # the generic m_4 … too; listed when the file has masses
+        listed = {s.name for s in chain.symbols | (weights if masses.given else set())}
+        sample = self.sample(top["sample"][1], {s.name: s for s in chain.symbols | weights}, listed) \
+            if "sample" in top else {}
+        return Robot(chain, name=self.optional_text(top, "name", Path(self.filename).stem), masses=masses,
                      source=self.optional_text(top, "source", ""), notes=notes, sample=sample,
                      numbers=self.reading.numbers,  # how the table's fields wrote numbers, for the printers
                      frame_offset=first_frame, file=self.filename, warnings=self.warnings + self.snaps.warnings())
@@ -361,15 +378,16 @@ class _Reader:
                             f"frame), not {text!r}", self.where(node))
         return int(text)
 
-    def sample(self, node: yaml.Node, symbols: dict) -> dict:
-        """Numbers for the robot's symbols; a name the robot does not use is a typo."""
+    def sample(self, node: yaml.Node, symbols: dict, listed=None) -> dict:
+        """Numbers for the robot's symbols; a name the robot does not use is a typo (the message lists `listed`)."""
         keys = [k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)] \
             if isinstance(node, yaml.MappingNode) else []
         values = {}
         for key, (key_node, value_node) in self.mapping(node, "sample", keys).items():
             if key.strip() not in symbols:
-                raise UserError(f"sample {key}: the robot has no symbol {key!r}{_suggestion(key, sorted(symbols))}",
-                                self.where(key_node))
+                hint = _suggestion(key, sorted(listed or symbols))
+                raise UserError(f"sample {key}: the robot has no symbol {key!r}{hint}", self.where(key_node))
+
             value = self.expression(value_node, f"sample {key}", table=False)
             if not value.is_number:
                 raise UserError(f"sample {key}: must be a number, not {value}", self.where(value_node))
@@ -382,19 +400,3 @@ class _Row:
     number: int
     dh: DHRow
     nodes: dict  # field name -> YAML value node, for locating later errors
-
-
-def _kind(node: yaml.Node) -> str:
-    if isinstance(node, yaml.SequenceNode):
-        return "a list"
-    if isinstance(node, yaml.MappingNode):
-        return "a mapping"
-    return "a single value" if node.value else "an empty value"
-
-
-def _glued_key(node: yaml.ScalarNode) -> str:
-    """`; write 'alpha: 0' ...` for a value that is a key and its value without the space."""
-    key, colon, value = node.value.partition(":")
-    if node.style is None and colon and key.strip() and value and not value[0].isspace():
-        return f"; a key needs a space after its ':': write '{key.strip()}: {value}'"
-    return ""

@@ -31,6 +31,7 @@ import re
 import sympy
 
 from ..core.chain import Chain, DHRow
+from ..core.inertia import LinkInertia, MassModel
 from ..core.numbers import WrittenNumbers
 from ..core.robot import Robot, as_robot
 from ..core.transforms import Step
@@ -133,7 +134,7 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
     if robot.frame_offset:
         lines.append(f"first_frame: {robot.frame_offset}")
     lines.append("joints:")
-    rows = []
+    rows, links = [], []
     for number, row in enumerate(chain.rows, 1):
         moving = "theta" if row.joint == "R" else "d"
         written, fields = {}, [f"joint: {row.joint}"]
@@ -151,8 +152,12 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
             fields.append(f"{key}: {_yaml_value(text)}")
         if len(written[moving].free_symbols) > 1 or _looks_misplaced(row.joint, written):
             fields.append(f"var: {row.variable.name}")
+        fields += _inertia_fields(robot.masses.link(number), values, f"joint row {number}", links)
         lines.append("  - {" + ", ".join(fields) + "}")
         rows.append(DHRow(row.joint, written["theta"], written["d"], written["a"], written["alpha"], row.variable))
+    gravity = None
+    if robot.masses.gravity is not None:
+        gravity = tuple(values.written(g, "gravity", "gravity")[0] for g in robot.masses.gravity)
     steps = {}
     for key, chain_steps in (("base", chain.base), ("tool", chain.tool)):
         steps[key] = [Step(s.kind, values.written(s.value, f"{key} {s.kind}", f"{key} step {n} {s.kind}",
@@ -160,6 +165,8 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
         if steps[key]:
             texts = (f"{{{s.kind}: {_yaml_value(expression_text(s.value, values.numbers))}}}" for s in steps[key])
             lines.append(f"{key}: [" + ", ".join(texts) + "]")
+    if gravity is not None:
+        lines.append(f"gravity: {_list(gravity, values.numbers)}")
     sample = {}
     if robot.sample:
         for s, v in sorted(robot.sample.items(), key=lambda i: i[0].name):
@@ -173,8 +180,9 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
     if size > MAX_FILE_BYTES:
         raise UserError(f"the robot file would be {size} bytes; robot files are limited to {MAX_FILE_BYTES >> 20} "
                         "MiB, so none was written")
+    masses = MassModel(tuple(links) if robot.masses.links else (), gravity)
     written = robot.replace(chain=Chain(rows, chain.convention, steps["base"], steps["tool"]), notes=all_notes,
-                            sample={s: value for s, (value, _) in sample.items()})
+                            sample={s: value for s, (value, _) in sample.items()}, masses=masses)
     _check_reads_back(text, written)
     return text
 
@@ -189,13 +197,37 @@ def _check_reads_back(text: str, robot: Robot) -> None:
             from None
     same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.rows] == \
         [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in robot.rows]
-    same_details = [getattr(again, key) for key in ("name", "source", "notes", "sample", "frame_offset")] == \
-        [getattr(robot, key) for key in ("name", "source", "notes", "sample", "frame_offset")]
+    same_details = [getattr(again, key) for key in ("name", "source", "notes", "sample", "frame_offset", "masses")] \
+        == [getattr(robot, key) for key in ("name", "source", "notes", "sample", "frame_offset", "masses")]
     if not (same and same_details and list(again.base) == list(robot.base) and list(again.tool) == list(robot.tool)):
         raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")
 
 
+def _inertia_fields(link: LinkInertia, values: _Values, place: str, links: list) -> list[str]:
+    """`mass: …`, `com: [...]`, `inertia: [...]` of a row, for what the robot gives; the link as it
+    will read back is added to `links`."""
+    fields, written = [], {}
+    for key in ("mass", "com", "inertia"):
+        value = getattr(link, key)
+        if value is None:
+            continue
+        if key == "mass":
+            written[key] = values.written(value, f"{place} mass", f"{place} mass")[0]
+            fields.append(f"mass: {_yaml_value(expression_text(written[key], values.numbers))}")
+        else:
+            written[key] = tuple(values.written(x, f"{place} {key}", f"{place} {key}")[0] for x in value)
+            fields.append(f"{key}: {_list(written[key], values.numbers)}")
+    links.append(LinkInertia(**written))
+    return fields
+
+
+def _list(entries, numbers) -> str:
+    """A YAML flow list of expressions: [0.1, -l_1/2, 0]."""
+    return "[" + ", ".join(_yaml_value(expression_text(x, numbers)) for x in entries) + "]"
+
+
 def _looks_misplaced(joint: str, written: dict) -> bool:
+
     """Would the reader take a name in theta or d for a joint variable in the wrong column (a URDF
     joint named d_1 that turns)? Then `var:` says which symbol moves.
 

@@ -38,6 +38,7 @@ from ..errors import Location, UserError
 from ..geometry.exact import LENGTH_NOISE, rational_turn, snap_direction, tidy_vector, vector
 from ..geometry.lines import JointAxis
 from .suspicious import looks_like_degrees, near_multiple_of_pi
+from .urdfinertia import link_bodies
 from .xmlsource import MAX_XML_BYTES, parse_xml_text, read_regular_file
 
 MAX_URDF_BYTES = MAX_XML_BYTES
@@ -64,6 +65,7 @@ class UrdfChain:
     tool: sympy.Matrix
     joint_names: list
     warnings: list = field(default_factory=list)
+    bodies: list = field(default_factory=list)  # each moving joint's link, merged (io.urdfinertia), or None
 
 
 def read_urdf(path: str | Path, base: str | None = None, tip: str | None = None) -> UrdfChain:
@@ -227,7 +229,7 @@ class _Reader:
                                 self.where(origin, "rpy"))
 
     def walk(self, base: str, tip: str, path: list) -> UrdfChain:
-        pose, axes, names = sympy.eye(4), [], []
+        pose, axes, names, poses = sympy.eye(4), [], [], {}
         for joint, self.reach in zip(path, _reaches(path)):
             name, kind = joint.get("name").strip(), self.attribute(joint, "type")
             if kind in UNSUPPORTED:
@@ -241,6 +243,7 @@ class _Reader:
                                 "joint's), so it has no variable of its own; dhsym needs independent joints on the "
                                 "path: choose a --tip before it", self.where(mimic))
             pose = (pose * self.origin(joint, name)).applyfunc(sympy.expand)
+            poses[joint.find("child").get("link").strip()] = pose
             if kind == "fixed":
                 continue
             direction = tidy_vector(pose[:3, :3] * self.axis(joint))
@@ -248,9 +251,10 @@ class _Reader:
             names.append(name)
         if not axes:
             raise UserError(f"no revolute, continuous or prismatic joint between {base!r} and {tip!r}")
+        bodies = link_bodies(self, path, poses)
         self.report()
         robot_name = self.root.get("name") or Path(self.filename).stem
-        return UrdfChain(robot_name, self.filename, base, tip, axes, pose, names, self.warnings)
+        return UrdfChain(robot_name, self.filename, base, tip, axes, pose, names, self.warnings, bodies)
 
     def numbers(self, element, key: str, default: str, count: int = 3) -> list:
         """The written numbers of an attribute, exact; noise below 1e-9 is 0 (and remembered)."""

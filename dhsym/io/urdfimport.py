@@ -19,10 +19,13 @@ from pathlib import Path
 
 import sympy
 
+from ..core.inertia import GRAVITY_SYMBOL
 from ..core.robot import Robot
 from ..errors import UserError
 from ..geometry.frames import assign_frames
+from ..geometry.rounding import joined
 from .expr import parse_expression
+from .urdfinertia import G_SAMPLE, in_dh_frames, inertia_note
 
 _NAME_START = re.compile(r"^[A-Za-z]")
 
@@ -55,9 +58,14 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     symbols = joint_symbols(urdf.joint_names, variables)
     notes = "Derived by dhsym import; joint variables: " + ", ".join(
         f"{v} = {name}" for v, name in zip(symbols, urdf.joint_names))
-    robot = assign_frames(urdf.axes, urdf.tool, convention, symbols).robot(
-        name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}", notes=notes,
-        warnings=[*expansion_warnings, *urdf.warnings])
+    assignment = assign_frames(urdf.axes, urdf.tool, convention, symbols)
+    masses, rounded, odd = in_dh_frames(urdf.bodies, [frame.pose for frame in assignment.frames[1:]])
+    robot = assignment.robot(
+        name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}",
+        notes=joined(notes, inertia_note(urdf.bodies, rounded)), masses=masses,
+        sample={GRAVITY_SYMBOL: G_SAMPLE} if masses.given else {},
+        warnings=[*expansion_warnings, *urdf.warnings, *odd])
+
     return Imported(robot, list(urdf.joint_names))
 
 

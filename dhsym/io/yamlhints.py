@@ -199,3 +199,20 @@ def _open_quote(error, problem, lines, line, column):
         return None
     quote = lines[start.line][start.column] if start.line < len(lines) else '"'
     return f"this {quote} is never closed; end the text with {quote}", start.line, start.column
+
+
+def node_kind(node: yaml.Node) -> str:
+    """What a node is, in words, for messages: a list, a mapping, a single value."""
+    if isinstance(node, yaml.SequenceNode):
+        return "a list"
+    if isinstance(node, yaml.MappingNode):
+        return "a mapping"
+    return "a single value" if node.value else "an empty value"
+
+
+def glued_key(node: yaml.ScalarNode) -> str:
+    """`; write 'alpha: 0' ...` for a value that is a key and its value without the space."""
+    key, colon, value = node.value.partition(":")
+    if node.style is None and colon and key.strip() and value and not value[0].isspace():
+        return f"; a key needs a space after its ':': write '{key.strip()}: {value}'"
+    return ""

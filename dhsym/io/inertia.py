@@ -1,0 +1,142 @@
+"""Inertial parameters in robot files: each joint row's `mass`, `com` and `inertia`, and the
+file's `gravity`, read with the safe parser and checked where they stand.
+
+    joints:
+      - {joint: R, theta: q_1, d: 0, a: l_1, alpha: 0,
+         mass: m_1, com: [lc_1 - l_1, 0, 0], inertia: [0, 0, I_1, 0, 0, 0]}
+    gravity: [0, -g, 0]
+
+`com` is the link's centre of mass in the frame its row ends in; `inertia` the six entries
+[Ixx, Iyy, Izz, Ixy, Ixz, Iyz] of its inertia tensor about the centre of mass, axes parallel to
+that frame; `gravity` the acceleration of gravity in the first frame (the base frame when there
+is one), [0, 0, -g] when not given. A row without them is fully symbolic (see dhsym.core.inertia).
+A numeric mass must be positive, and a numeric tensor one that a body can have: its principal
+moments are not negative and each is at most the sum of the other two.
+
+>>> from dhsym.io.robotfile import load_robot_text
+>>> robot = load_robot_text('''convention: standard
+... joints: [{joint: R, theta: q_1, d: 0, a: 1, alpha: 0, mass: 2.5, com: [-0.5, 0, 0]}]
+... gravity: [0, -9.81, 0]''', "arm.yaml")
+>>> robot.masses.links[0].mass, robot.masses.links[0].com, robot.masses.gravity
+(5/2, (-1/2, 0, 0), (0, -981/100, 0))
+>>> load_robot_text('''convention: standard
+... joints: [{joint: R, theta: q_1, d: 0, a: 1, alpha: 0, inertia: [1, 1, 3, 0, 0, 0]}]''', "arm.yaml")
+... # doctest: +ELLIPSIS
+Traceback (most recent call last):
+dhsym.errors.UserError: arm.yaml:2:64: joint row 1 inertia: Ixx + Iyy ≥ Izz fails (1 + 1 < 3): no body has ...
+"""
+from __future__ import annotations
+
+import sympy
+import yaml
+
+from ..core.inertia import INERTIA_ENTRIES, LinkInertia, MassModel, tensor
+from ..errors import UserError
+from .expr import Reading
+
+ROW_KEYS = ("mass", "com", "inertia")
+COM_FORM = "[x, y, z] (the centre of mass in the frame this row ends in)"
+INERTIA_FORM = "[Ixx, Iyy, Izz, Ixy, Ixz, Iyz] (the tensor's entries about the centre of mass)"
+
+
+def read_masses(reader, top: dict, variables) -> MassModel:
+    """The mass model of a robot file: its rows' `mass`, `com`, `inertia` and its `gravity`;
+    `reader` is the robot-file reader (dhsym.io.robotfile), `variables` the joint variables."""
+    reading = Reading()  # how these numbers were written, apart from the table's
+    links = []
+    row_nodes = reader.sequence(top["joints"][1], "joints") if "joints" in top else []
+    for number, node in enumerate(row_nodes, 1):
+        items = {key.value: value for key, value in node.value if key.value in ROW_KEYS}
+        links.append(_link(reader, items, f"joint row {number}", variables, reading))
+    gravity = None
+    if "gravity" in top:
+        gravity = _vector(reader, top["gravity"][1], "gravity", 3, "[gx, gy, gz] (in the first frame)", variables,
+                          reading, "gravity is one constant vector, given in the first frame")
+    given = tuple(links) if any(link.given for link in links) else ()
+    return MassModel(given, gravity, reading.numbers)
+
+
+def _link(reader, items: dict, what: str, variables, reading: Reading) -> LinkInertia:
+    mass = com = inertia = None
+    if "mass" in items:
+        mass = _value(reader, items["mass"], f"{what} mass", variables, reading)
+        if mass.is_number and not mass.is_positive:
+            raise UserError(f"{what} mass: must be more than 0, not {_shown(mass)}; give the link's mass in "
+                            "kilograms (or a name such as m_1)", reader.where(items["mass"]))
+    if "com" in items:
+        com = _vector(reader, items["com"], f"{what} com", 3, COM_FORM, variables, reading)
+    if "inertia" in items:
+        inertia = _vector(reader, items["inertia"], f"{what} inertia", 6, INERTIA_FORM, variables, reading)
+        problem = physical_problem(inertia)
+        if problem:
+            raise UserError(f"{what} inertia: {problem}", reader.where(items["inertia"]))
+    return LinkInertia(mass, com, inertia)
+
+
+def _vector(reader, node: yaml.Node, what: str, size: int, form: str, variables, reading: Reading,
+            why: str = "") -> tuple:
+    if not isinstance(node, yaml.SequenceNode):
+        raise UserError(f"{what} must be a list of {size} values {form}, not a single value", reader.where(node))
+    if len(node.value) != size:
+        raise UserError(f"{what} must be a list of {size} values {form}, not {len(node.value)}", reader.where(node))
+    return tuple(_value(reader, element, what, variables, reading, why) for element in node.value)
+
+
+def _value(reader, node: yaml.Node, what: str, variables, reading: Reading, why: str = "") -> sympy.Expr:
+    value, read = reader.read(node, what, table=False)
+    reading.absorb(read)
+    reader.reading.names += read.names  # two spellings of one printed name are warned about with the table's
+    moving = sorted(value.free_symbols & set(variables), key=str)
+    if moving:
+        why = why or "a link's mass, centre of mass and inertia are constants, given in the link's own frame"
+        raise UserError(f"{what}: {moving[0]} is a joint variable; {why}", reader.where(node))
+    return value
+
+
+def physical_problem(entries) -> str:
+    """Why a numeric inertia tensor (six entries about the centre of mass) belongs to no body,
+    else "": a negative principal moment, or one larger than the sum of the other two. Decided
+    exactly: the tensor and ½·trace − tensor (the body's second moments) must both be positive
+    semi-definite. Symbolic entries are not judged.
+
+    >>> physical_problem((1, 1, 1, 0, 0, 0)), physical_problem((1, 1, 1, 2, 0, 0))[:30]
+    ('', 'not positive semi-definite: a ')
+    """
+    if not all(sympy.sympify(x).is_number for x in entries):
+        return ""
+    matrix = tensor(entries)
+    if not _semidefinite(matrix):
+        return ("not positive semi-definite: a principal moment of inertia would be negative; give the entries of "
+                "the tensor [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] as a URDF does")
+    if _semidefinite(matrix.trace() / 2 * sympy.eye(3) - matrix):
+        return ""
+    advice = "no body has these moments of inertia; each principal moment is at most the sum of the other two"
+    if all(matrix[r, c] == 0 for r in range(3) for c in range(3) if r != c):
+        for k in range(3):
+            i, j = [m for m in range(3) if m != k]
+            if matrix[i, i] + matrix[j, j] < matrix[k, k]:
+                names = [f"I{INERTIA_ENTRIES[m]}" for m in (i, j, k)]
+                values = [_shown(matrix[m, m]) for m in (i, j, k)]
+                flat = " (a flat model that needs only one moment can give a thin disc's: the other two half of it)" \
+                    if matrix[i, i] == matrix[j, j] == 0 else ""
+                return (f"{names[0]} + {names[1]} ≥ {names[2]} fails ({values[0]} + {values[1]} < {values[2]}): "
+                        f"{advice}{flat}")
+    moments = sorted(float(sympy.re(x)) for x in matrix.evalf(30).eigenvals(multiple=True))
+    moments = ", ".join(f"{x:.4g}" for x in moments)
+
+    return f"the principal moments {moments} break the triangle inequality: {advice}"
+
+
+def _semidefinite(matrix: sympy.Matrix) -> bool:
+    """Every principal minor is not negative."""
+    minors = [matrix[k, k] for k in range(3)]
+    minors += [matrix.extract([i, j], [i, j]).det() for i, j in ((0, 1), (0, 2), (1, 2))]
+    minors.append(matrix.det())
+    return not any(m.is_negative for m in minors)
+
+
+def _shown(value) -> str:
+    """A number as a robot file writes it (0.01, not 1/100), for a message."""
+    from ..geometry.rounding import written_text  # only after a mistake: reading a file needs no geometry
+
+    return written_text(value)
