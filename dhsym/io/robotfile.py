@@ -33,14 +33,7 @@ from ..errors import Location, UserError
 from .expr import Reading, parse_expression
 from .inertia import ROW_KEYS as INERTIA_KEYS
 from .inertia import read_masses
-from .suspicious import (
-    decimal_angle,
-    looks_like_degrees,
-    misplaced_variable,
-    misspelt_pi,
-    printed_key,
-    printed_text,
-)
+from .suspicious import decimal_angle, looks_like_degrees, misplaced_variable, misspelt_pi, printed_key, printed_text
 from .yamlhints import glued_key, node_kind
 from .yamlsafe import MAX_JOINTS, YAML_TAG, compose, mark_location, read_text_file
 
