@@ -69,8 +69,8 @@ class DHRow:
 
 
 class TransformTooLarge(UserError):
-    """A transform refused before it is built; `start`, `end` are the chain's frames (a Robot
-    renames them with its own numbers)."""
+    """A transform refused before it is built; `start`, `end` are the chain's frames (a robot's
+    numbering renames them with the printed numbers: `Numbering.printed`)."""
 
     def __init__(self, start: Frame, end: Frame, size: int, message: str):
         super().__init__(message)
@@ -150,12 +150,6 @@ class Chain:
         works out again when asked."""
         return {**self.__dict__, "_cache": {}}
 
-    def _repr_latex_(self) -> str:
-        """Jupyter shows a chain as its DH table."""
-        from ..printing.render import latex_table  # printing sits above the math; only this display needs it
-
-        return f"$$\n{latex_table(self)}\n$$"
-
     @property
     def n(self) -> int:
         return len(self.rows)
@@ -185,7 +179,7 @@ class Chain:
 
     def frame(self, text: str) -> Frame:
         """The frame a user names: "3", "03" and "+3" are frame 3; "base"/"tool" where present.
-        (A `Robot` numbered from 3 names its frames with `chain_frame`.)
+        (A robot numbered from 3 names its frames with `robot.numbering.chain_frame`.)
 
         >>> import sympy
         >>> Chain([DHRow.revolute(sympy.Symbol("q", real=True))], "standard").frame(" 01")
@@ -217,24 +211,6 @@ class Chain:
         if start > end:
             return [step.inverse() for step in reversed(self._steps()[end:start])]
         return self._steps()[start:end]
-
-    def jacobian(self, frame: Frame | None = None, point: Frame | None = None) -> sympy.Matrix:
-        """The geometric Jacobian (rows vx vy vz ωx ωy ωz) of the origin of `point` (default:
-        the last frame), expressed in `frame` (default: the first); see dhsym.velocity."""
-        from ..velocity.jacobian import jacobian  # velocity is built on core, not the other way
-
-        return jacobian(self, frame=frame, point=point)
-
-    def ik(self, free=()):
-        """The closed-form inverse kinematics, with the joint variables `free` (symbols or names)
-        kept as parameters: its branches, `.evaluate(T)`, `.latex()` and `.code()`; see
-        dhsym.inverse. Solved once per choice of `free`."""
-        from ..inverse.api import inverse_kinematics  # the inverse layer is built on core
-
-        key = ("ik", frozenset(getattr(v, "name", str(v)) for v in free))
-        if key not in self._cache:
-            self._cache[key] = inverse_kinematics(self, free)
-        return self._cache[key]
 
     def _compute(self, start: int, end: int, raw: bool) -> sympy.Matrix:
         """The transform between two step positions. Its size is estimated first, so that a

@@ -9,10 +9,12 @@ estimated block by block, the raw form link by link; both come within a factor o
 real size, in milliseconds whatever the chain.
 
 >>> from dhsym.io.library import load
->>> estimated_size(load("puma560"), 0, 6) < 1000 < estimated_size(load("iiwa7"), 0, 7)
+>>> estimated_size(load("puma560").chain, 0, 6) < 1000 < estimated_size(load("iiwa7").chain, 0, 7)
 True
 """
 from __future__ import annotations
+
+from typing import Protocol
 
 import sympy
 
@@ -23,12 +25,22 @@ from .transforms import product
 Sizes = list  # 4×4 of ints: 0 for a zero element, else the size of its expression tree
 
 
-def estimated_size(chain, start, end, raw: bool = False) -> int:
+class Steps(Protocol):
+    """What an estimate reads of a chain (dhsym.core.chain.Chain, which imports this module): its
+    rows, convention and fixed steps. A robot has none of them: its chain has."""
+
+    rows: tuple
+    convention: str
+    base: tuple
+    tool: tuple
+
+
+def estimated_size(chain: Steps, start, end, raw: bool = False) -> int:
     """Estimated total size (expression-tree nodes) of the 3×4 upper part of {start}T{end}."""
     return span_size(chain, _step_index(chain, start), _step_index(chain, end), raw)
 
 
-def span_size(chain, start: int, end: int, raw: bool = False) -> int:
+def span_size(chain: Steps, start: int, end: int, raw: bool = False) -> int:
     """estimated_size between two positions in the chain's list of steps (either order)."""
     first, last = sorted((start, end))
     steps = _steps(chain)[first:last]
@@ -63,11 +75,11 @@ def _total(sizes) -> int:
     return sum(sum(row) for row in sizes[:3]) if sizes else 0
 
 
-def _steps(chain) -> list:
+def _steps(chain: Steps) -> list:
     return list(chain.base) + [s for row in chain.rows for s in row.steps(chain.convention)] + list(chain.tool)
 
 
-def _step_index(chain, frame) -> int:
+def _step_index(chain: Steps, frame) -> int:
     """Where frame `frame` sits in the chain's list of steps."""
     if frame == "base":
         return 0
@@ -76,7 +88,7 @@ def _step_index(chain, frame) -> int:
     return len(chain.base) + 4 * int(frame)
 
 
-def _link_spans(chain, first: int, last: int) -> list[tuple[int, int]]:
+def _link_spans(chain: Steps, first: int, last: int) -> list[tuple[int, int]]:
     """The step spans of the whole link (and base, tool) matrices between two frames."""
     bounds = sorted({0, len(chain.base), len(_steps(chain))} |
                     {len(chain.base) + 4 * k for k in range(chain.n + 1)})

@@ -9,7 +9,7 @@ layers below the pictures never load it. Many configurations at once: give each 
 numpy array (all of one length m), and every entry of the poses is an array of m values.
 
 >>> import sympy, dhsym
->>> arm = NumericChain(dhsym.load("planar2r"), {"a_1": sympy.Rational(1, 2), "a_2": 0.4})
+>>> arm = NumericChain(dhsym.load("planar2r").chain, {"a_1": sympy.Rational(1, 2), "a_2": 0.4})
 >>> [(frame, [round(x, 3) for x in origin(pose)]) for frame, pose in arm.poses([0, sympy.pi / 2])]
 [(0, [0.0, 0.0, 0.0]), (1, [0.5, 0.0, 0.0]), (2, [0.5, 0.4, 0.0])]
 >>> [round(x, 3) for x in arm.axes([0, sympy.pi / 2])[1][0]]   # joint 2 turns about z_1
@@ -26,6 +26,7 @@ from typing import Callable, Mapping, Sequence
 
 import sympy
 
+from .chain import Chain, plain
 from .transforms import as_expr, joint_axis_frame, turned_plane
 
 Pose = list  # 4×4 floats, row by row: the rotation's columns are the frame's x, y, z axes, column 3 its origin
@@ -35,9 +36,9 @@ class NumericChain:
     """`chain` with numbers for its constants (keys are symbols or their names, values exact or
     floats; joint variables among them are ignored), ready to be evaluated at joint values q."""
 
-    def __init__(self, chain, constants: Mapping):
+    def __init__(self, chain: Chain, constants: Mapping):
         named = {getattr(key, "name", str(key)): value for key, value in constants.items()}
-        self.variables = tuple(chain.joint_variables)
+        self.variables = tuple(plain(chain).joint_variables)
         fixed_symbols = chain.symbols - set(self.variables)
         missing = sorted(s.name for s in fixed_symbols if s.name not in named)
         if missing:

@@ -9,8 +9,8 @@ given the reference's sample value, else the candidate's, else a random value sh
 configurations, agreeing to 1e-9; the diagnosis of a difference is numeric.
 
 >>> from dhsym.io.library import load
->>> from dhsym.geometry.convert import to_convention
->>> compare(to_convention(load("puma560"), "standard"), load("puma560")).same
+>>> from dhsym.geometry.convert import convert_robot
+>>> compare(convert_robot(load("puma560"), "standard"), load("puma560")).same
 True
 >>> print(compare(load("spatial3r"), load("inline6")).message)
 the tables have 3 and 6 joints; they cannot describe the same robot
@@ -23,10 +23,11 @@ from dataclasses import dataclass
 
 import sympy
 
-from ..core.chain import Chain
+from ..core.chain import Chain, plain
 from ..core.estimate import estimated_size
+from ..core.numbering import Numbering
 from ..core.numeric import NumericChain
-from ..core.robot import Robot, as_chain, as_robot
+from ..core.robot import Robot
 from ..core.size import expanded_terms, rough_count
 from ..core.transforms import joint_axis_frame
 from ..core.verify import algebraically_equal
@@ -56,21 +57,22 @@ class Comparison:
         return self.message
 
 
-def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -> Comparison:
-    """Compare `candidate` against `reference` (robots or chains), joint i with joint i; joints and
-    rows named as the candidate's table numbers them (a wrist's 4..6)."""
-    candidate, reference = as_robot(candidate), as_robot(reference)  # their sample values, names, numbering
-    if candidate.n != reference.n:
-        return Comparison(False, "joints", None, f"the tables have {candidate.n} and {reference.n} joints; "
+def compare(candidate: Robot, reference: Robot, seed: int = 0) -> Comparison:
+    """Compare `candidate` against `reference`, joint i with joint i, constants by name with their
+    sample values; joints and rows named as the candidate's table numbers them (a wrist's 4..6)."""
+    chain, other = candidate.chain, reference.chain
+    if chain.n != other.n:
+        return Comparison(False, "joints", None, f"the tables have {chain.n} and {other.n} joints; "
                           "they cannot describe the same robot")
-    for number, (mine, theirs) in enumerate(zip(candidate.rows, reference.rows), candidate.frame_offset + 1):
+    numbering = candidate.numbering
+    for number, mine, theirs in zip(numbering.joints(chain), chain.rows, other.rows):
         if mine.joint != theirs.joint:
             return Comparison(False, "joints", number, f"joint {number} is {_type(mine.joint)} in yours but "
                               f"{_type(theirs.joint)} in the reference")
     values = _constants(candidate, reference, seed)
     mine, theirs = _numeric_fk(candidate, values), _numeric_fk(reference, values)
     rng = random.Random(seed)
-    configurations = [[rng.uniform(-math.pi, math.pi) for _ in range(candidate.n)] for _ in range(TRIALS)]
+    configurations = [[rng.uniform(-math.pi, math.pi) for _ in range(chain.n)] for _ in range(TRIALS)]
     if all(_close(mine(q), theirs(q)) for q in configurations):
         algebra = _algebra_agrees(candidate, reference)
         if algebra is not False:
@@ -78,31 +80,32 @@ def compare(candidate: Robot | Chain, reference: Robot | Chain, seed: int = 0) -
             unproven = "" if algebra is True else f"; not proven by algebra: {algebra}"
             return Comparison(True, "same", None, f"same kinematics: base → tool agrees {how} at {TRIALS} "
                               f"random configurations (to 1e-9){unproven}".replace("agrees  at", "agrees at"))
-    note = _names_note(candidate, reference)
+    note = _names_note(chain, other)
     for kind, side in (("tool", "right"), ("base", "left")):
         if _constant_difference(mine, theirs, configurations, side):
             return Comparison(False, kind, None, f"the joints agree; only the {kind} frame differs" + note)
-    shifts = _zero_shifts(candidate, reference, values, mine, theirs, configurations)
+    shifts = _zero_shifts(chain, other, values, mine, theirs, configurations)
     if shifts:
-        first = min(shifts) + 1 + candidate.frame_offset  # as the table numbers it
-        return Comparison(False, "offset", first, _offset_message(candidate, shifts) + note)
-    return _first_axis_difference(candidate, reference, values, note)
+        first = numbering.joint(min(shifts) + 1)  # as the table numbers it
+        return Comparison(False, "offset", first, _offset_message(chain, numbering, shifts) + note)
+    return _first_axis_difference(chain, other, numbering, values, note)
 
 
-def _algebra_agrees(candidate: Chain, reference: Chain) -> bool | str:
+def _algebra_agrees(candidate: Robot, reference: Robot) -> bool | str:
     """Whether base → tool is identical by algebra (joint i's variable renamed to the reference's,
     constants by name, sample values in exactly); a reason instead when it is too large to expand."""
-    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in map(as_chain, (candidate, reference)))
+    chain, other = candidate.chain, reference.chain
+    size = max(estimated_size(c, c.first_frame, c.last_frame, raw=True) for c in (chain, other))
     if size > ALGEBRA_MAX_NODES:
         return (f"base → tool has {rough_count(size)} expression nodes, more than the {ALGEBRA_MAX_NODES:,} "
                 "that are expanded")
-    names = {s.name: s for s in reference.symbols}
-    renamed = dict(zip(candidate.joint_variables, reference.joint_variables))
-    renamed.update({s: names[s.name] for s in candidate.symbols - set(candidate.joint_variables) if s.name in names})
+    names = {s.name: s for s in other.symbols}
+    renamed = dict(zip(chain.joint_variables, other.joint_variables))
+    renamed.update({s: names[s.name] for s in chain.symbols - set(chain.joint_variables) if s.name in names})
     sample = {s.name: v for s, v in list(candidate.sample.items()) + list(reference.sample.items())}
-    exact = {s: sample[s.name] for s in reference.symbols | set(renamed.values()) if s.name in sample}
-    mine = candidate.fk(raw=True).xreplace(renamed).xreplace(exact)
-    theirs = reference.fk(raw=True).xreplace(exact)
+    exact = {s: sample[s.name] for s in other.symbols | set(renamed.values()) if s.name in sample}
+    mine = chain.fk(raw=True).xreplace(renamed).xreplace(exact)
+    theirs = other.fk(raw=True).xreplace(exact)
     memo: dict = {}
     terms = sum(expanded_terms(a, True, memo) + expanded_terms(b, True, memo) for a, b in zip(mine, theirs))
     if terms > ALGEBRA_MAX_TERMS:
@@ -115,11 +118,11 @@ def _type(joint: str) -> str:
     return "revolute" if joint == "R" else "prismatic"
 
 
-def _constants(candidate: Chain, reference: Chain, seed: int) -> dict:
+def _constants(candidate: Robot, reference: Robot, seed: int) -> dict:
     """A number for every constant symbol, by name, the same for both chains."""
     rng = random.Random(seed + 1)
     names = {}
-    for chain in (reference, candidate):
+    for chain in (reference.chain, candidate.chain):
         variables = set(chain.joint_variables)
         for symbol in sorted(chain.symbols - variables, key=str):
             if symbol.name not in names:
@@ -128,15 +131,15 @@ def _constants(candidate: Chain, reference: Chain, seed: int) -> dict:
     return names
 
 
-def _numeric_fk(chain: Chain, constants: dict):
+def _numeric_fk(robot: Robot, constants: dict):
     """q ↦ base → tool as a flat list of 12 floats, the constants filled in (core.numeric, step by
     step in floats, so that its cost grows with the number of joints and not with the expressions)."""
-    numeric = NumericChain(as_chain(chain), constants)
+    numeric = NumericChain(robot.chain, constants)
 
     def fk(q):
         flat = [x for row in numeric.end(q)[:3] for x in row]
         if not all(math.isfinite(x) for x in flat):
-            raise UserError(f"{chain.name or 'the robot'}: base → tool overflows the floating-point numbers at a "
+            raise UserError(f"{robot.name or 'the robot'}: base → tool overflows the floating-point numbers at a "
                             "random configuration (lengths too large), so it cannot be compared by numbers")
         return flat
     return fk
@@ -198,22 +201,23 @@ def _least_squares(b: list, c: list, t: list) -> tuple[float, float]:
     return (bt * cc - ct * bc) / det, (bb * ct - bc * bt) / det
 
 
-def _offset_message(candidate: Robot, shifts: dict) -> str:
-    joints, shown = sorted(shifts), candidate.frame_offset  # joints and rows as the table numbers them
-    exact = {k: _exact_shift(shifts[k], candidate.rows[k].joint) for k in joints}
+def _offset_message(chain: Chain, numbering: Numbering, shifts: dict) -> str:
+    """`shifts`: {row index 0..n−1: δ}; joints and rows named as the table numbers them."""
+    joints = sorted(shifts)
+    exact = {k: _exact_shift(shifts[k], chain.rows[k].joint) for k in joints}
     fixes = []
     for k in joints:
-        row = candidate.rows[k]
+        row = chain.rows[k]
         moving, written = ("θ", row.theta) if row.joint == "R" else ("d", row.d)
-        fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {k + 1 + shown} instead of "
+        fixes.append(f"{moving} = {_show_exact(written - exact[k])} in row {numbering.joint(k + 1)} instead of "
                      f"{_show_exact(written)}")
     if len(joints) == 1:
-        return f"the same axes, but joint {joints[0] + 1 + shown}'s zero differs by " \
+        return f"the same axes, but joint {numbering.joint(joints[0] + 1)}'s zero differs by " \
             f"{_show_exact(exact[joints[0]])}: write " + fixes[0]
-    numbers = " and ".join(str(k + 1 + shown) for k in joints)
+    numbers = " and ".join(str(numbering.joint(k + 1)) for k in joints)
     if len(joints) == 2 and joints[1] == joints[0] + 1 and all(abs(exact[k]) == sympy.pi for k in joints):
         # Rz(π) Tx(a) Rx(α) Rz(π) = Tx(−a) Rx(−α): two half-turn zeros are one flipped twist
-        row = joints[0] + (1 if candidate.convention == "standard" else 2) + shown
+        row = numbering.joint(joints[0] + (1 if chain.convention == "standard" else 2))
         return (f"the same axes, but the zeros of joints {numbers} both differ by π: the sign of α (and of a) in "
                 f"row {row} is flipped; flip it back, or write " + " and ".join(fixes))
     amounts = " and ".join(_show_exact(exact[k]) for k in joints)
@@ -295,7 +299,7 @@ def _same(axis, other) -> bool:
 def _axes_at(chain: Chain, values: dict):
     """q ↦ every joint axis (point, direction) in the base frame at configuration q, each direction
     along the joint's positive motion (d = −d3 moves along −z)."""
-    numeric = NumericChain(as_chain(chain), values)
+    numeric = NumericChain(plain(chain), values)
     fixed = {s: values[s.name] for s in chain.symbols if s.name in values}
     signs = [float(rate(row).xreplace(fixed)) for row in chain.rows]
 
@@ -317,34 +321,37 @@ def _show_exact(value) -> str:
     return str(sympy.sympify(value)).replace("pi", "π").replace("*", "·")
 
 
-def _first_axis_difference(candidate: Robot, reference: Robot, values: dict, note: str) -> Comparison:
+def _first_axis_difference(candidate: Chain, reference: Chain, numbering: Numbering, values: dict,
+                           note: str) -> Comparison:
     """The first joint whose axis (at the zero configuration) is not where the reference has it."""
     zero = [0.0] * candidate.n
     mine, theirs = _axes_at(candidate, values)(zero), _axes_at(reference, values)(zero)
-    for number, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), candidate.frame_offset + 1):
+    for index, ((p, u), (p_ref, u_ref)) in enumerate(zip(mine, theirs), 1):
+        number = numbering.joint(index)
         if _distance(u, u_ref) > 1e-7:
             reversed_axis = _distance(u, [-x for x in u_ref]) <= 1e-7
             what = ("is reversed: the joint moves the other way round" if reversed_axis else
                     f"points along {_show(u)} at the zero pose; the reference's points along {_show(u_ref)}")
             return Comparison(False, "direction", number, f"joint {number}'s axis {what}; "
-                              + _where_to_look(candidate, number, "the twist α") + note)
+                              + _where_to_look(candidate, numbering, index, "the twist α") + note)
         along = [a - b for a, b in zip(p, p_ref)]
         dot = sum(a * b for a, b in zip(along, u_ref))
         off = [a - dot * b for a, b in zip(along, u_ref)]
         if math.sqrt(sum(x * x for x in off)) > 1e-7:
             return Comparison(False, "position", number, f"joint {number}'s axis points the right way but is "
                               f"shifted by {_show(off)} from the reference's; "
-                              + _where_to_look(candidate, number, "the lengths a and d") + note)
+                              + _where_to_look(candidate, numbering, index, "the lengths a and d") + note)
     return Comparison(False, "different", None, "the joint axes agree at the zero pose, but base → tool differs "
                       "in more than one fixed frame" + note)
 
 
-def _where_to_look(chain: Robot, number: int, what: str) -> str:
-    """The row that places joint `number`'s axis: row number−1 in standard DH, its own row in modified."""
-    row = joint_axis_frame(chain.convention, number)  # numbered as the table numbers them
-    if row == chain.frame_offset:
+def _where_to_look(chain: Chain, numbering: Numbering, joint: int, what: str) -> str:
+    """The row that places the axis of `joint` (1..n): the row before in standard DH, its own row in
+    modified; named as the table numbers its rows."""
+    row = joint_axis_frame(chain.convention, joint)
+    if row == 0:
         return "check the base steps"
-    return f"check {what} in row {row}" + (" and the rows before it" if row > chain.frame_offset + 1 else "")
+    return f"check {what} in row {numbering.joint(row)}" + (" and the rows before it" if row > 1 else "")
 
 
 def _distance(a, b) -> float:

@@ -7,35 +7,41 @@ regroups into modified rows [Rx(αi−1)Tx(ai−1)Rz(θi)Tz(di)], with α0 = a0 
 Tx(an)Rx(αn) moved into the tool. The frames on the joint axes stay where they were.
 
 >>> from dhsym.io.library import load
->>> modified = to_convention(load("planar2r"), "modified")
+>>> modified = to_convention(load("planar2r").chain, "modified")
 >>> [(r.alpha, r.a, r.d, r.theta) for r in modified.rows]
 [(0, 0, 0, theta_1), (0, a_1, 0, theta_2)]
->>> [str(s) for s in modified.tool], modified.name
-(['Tx(a_2)'], 'Planar elbow manipulator (2R)')
+>>> [str(s) for s in modified.tool]
+['Tx(a_2)']
 >>> [(r.theta, r.d, r.a, r.alpha) for r in to_convention(modified, "standard").rows]
 [(theta_1, 0, a_1, 0), (theta_2, 0, a_2, 0)]
 
-A `Robot` converts to a Robot that keeps everything its file said (name, source, notes, sample
-values, the number of its first frame — the frames on the joint axes are the same ones —, how
-it wrote its numbers, the file, the warnings); a plain `Chain` to a Chain.
+`convert_robot` converts a `Robot` to one that keeps everything its file said (name, source, notes,
+sample values, the number of its first frame — the frames on the joint axes are the same ones —,
+how it wrote its numbers, the file, the warnings), its links' inertias moved into the new frames.
+
+>>> convert_robot(load("planar2r"), "modified").name
+'Planar elbow manipulator (2R)'
 """
 from __future__ import annotations
 
 import sympy
 
-from ..core.chain import Chain, DHRow
+from ..core.chain import Chain, DHRow, plain
 from ..core.inertia import MassModel
 from ..core.robot import Robot
 from ..core.transforms import CONVENTIONS, Step, rotation
 from ..errors import UserError
 
 
-def to_convention(robot: Robot | Chain, convention: str) -> Robot | Chain:
-    """The same robot in `convention` (a copy when it already is in it)."""
-    if isinstance(robot, Robot):
-        chain = to_convention(robot.chain, convention)
-        return robot.replace(chain=chain, masses=_moved_masses(robot.masses, robot.chain, chain))
-    chain = robot
+def convert_robot(robot: Robot, convention: str) -> Robot:
+    """The same robot in `convention`, with everything its file said."""
+    chain = to_convention(robot.chain, convention)
+    return robot.replace(chain=chain, masses=_moved_masses(robot.masses, robot.chain, chain))
+
+
+def to_convention(chain: Chain, convention: str) -> Chain:
+    """The same chain in `convention` (a copy when it already is in it)."""
+    plain(chain)
     if convention not in CONVENTIONS:
         raise UserError(f"unknown convention {convention!r}; use standard or modified")
     if convention == chain.convention:

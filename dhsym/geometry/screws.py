@@ -10,7 +10,7 @@ chain) is simplified further with sympy.simplify, whose time grows fast with the
 4-link chain's would take seconds, 6 links minutes); a larger one keeps the contracted form.
 
 >>> from dhsym.io.library import load
->>> screws = screw_axes(load("planar2r"))
+>>> screws = screw_axes(load("planar2r").chain)
 >>> screws.matrix.T
 Matrix([
 [0, 0, 1, 0,    0, 0],
@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from ..core.chain import Chain, DHRow, plain
 from ..core.simplify import contract
 from ..core.size import tree_size
 from ..core.transforms import Step, joint_axis_frame
@@ -45,7 +46,7 @@ class Screws:
     home: sympy.Matrix
 
 
-def zero_poses(chain) -> list[sympy.Matrix]:
+def zero_poses(chain: Chain) -> list[sympy.Matrix]:
     """The pose of each joint's frame at the zero configuration (the frame whose z is the
     joint axis: i−1 in standard DH, i in modified), then the last frame's pose (tool, else n)."""
     steps = zero_steps(chain)
@@ -57,19 +58,19 @@ def zero_poses(chain) -> list[sympy.Matrix]:
     return [p.applyfunc(lambda e: sympy.simplify(e) if small and e.free_symbols else _numbers(e)) for p in poses]
 
 
-def zero_steps(chain) -> list[Step]:
+def zero_steps(chain: Chain) -> list[Step]:
     """The chain's steps, base to tool, with every joint variable zero."""
     zero = {v: 0 for v in chain.joint_variables}
     links = [step for row in chain.rows for step in row.steps(chain.convention)]
     return [Step(step.kind, step.value.xreplace(zero)) for step in [*chain.base, *links, *chain.tool]]
 
 
-def rate(row) -> sympy.Expr:
+def rate(row: DHRow) -> sympy.Expr:
     """How fast the row's θ (revolute) or d (prismatic) changes with its joint variable: ±1 as a rule."""
     return sympy.diff(row.theta if row.joint == "R" else row.d, row.variable)
 
 
-def chain_axes(chain) -> tuple[list[JointAxis], sympy.Matrix]:
+def chain_axes(chain: Chain) -> tuple[list[JointAxis], sympy.Matrix]:
     """The joint axes at the zero configuration (base coordinates), each pointing along the
     joint's positive motion (d = −d3 moves along −z), and the tool pose."""
     poses = zero_poses(chain)
@@ -83,9 +84,9 @@ def chain_axes(chain) -> tuple[list[JointAxis], sympy.Matrix]:
     return axes, poses[-1]
 
 
-def screw_axes(chain) -> Screws:
+def screw_axes(chain: Chain) -> Screws:
     """S_i = (ω_i, −ω_i × p_i) for a revolute joint, (0, ω_i) for a prismatic one; and M."""
-    poses = zero_poses(chain)
+    poses = zero_poses(plain(chain))
     columns = []
     for row, pose in zip(chain.rows, poses):
         direction, point = rate(row) * pose[:3, 2], pose[:3, 3]

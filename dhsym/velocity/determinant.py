@@ -7,7 +7,7 @@ centre has a zero upper-right block and ``det J = det A · det C``: A the linear
 the first three joints, C the three wrist axes. The PUMA factors in a fraction of a second:
 
 >>> import dhsym
->>> result = determinant(dhsym.load("puma560"))
+>>> result = determinant(dhsym.load("puma560").chain)
 >>> for factor in result.factors:
 ...     print(factor)
 sin(theta_5)
@@ -25,16 +25,19 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
+from typing import Mapping
 
 import sympy
 
-from ..core.robot import as_robot
+from ..core.chain import Chain, Frame, plain
+from ..core.numbering import PLAIN, Numbering
+from ..core.numbers import WrittenNumbers
 from ..core.simplify import collect_by_trig
 from ..core.size import expanded_terms, length, rough_count
 from ..geometry.convert import to_convention
 from .expanded import expanded_det, leibniz_terms, minors_det, term_count
 from .geometry import wrist_centre
-from .jacobian import ROWS, angular_part, axis_frame, jacobian, jacobian_size, linear_part, resolve_frames
+from .jacobian import ROWS, angular_part, axis_frame, chain_frames, jacobian, jacobian_size, linear_part
 
 # Terms of a determinant written out, at most, counted before it is expanded (expanded.leibniz_terms): past
 # this it is not factored. The UR5's in frame 4 has 336, in frame 1 57,420, and a general six-link chain's
@@ -63,27 +66,40 @@ class Determinant:
     note: str
 
 
-def determinant(chain, frame=None, point=None) -> Determinant:
+@dataclass(frozen=True)
+class Printed:
+    """What `determinant` is told of the robot file, handed down: its numbers as written, the sample
+    values of its constants, its numbering."""
+
+    numbers: WrittenNumbers
+    sample: Mapping
+    numbering: Numbering
+
+
+def determinant(chain: Chain, frame: Frame | None = None, point: Frame | None = None, *,
+                numbers: WrittenNumbers | None = None, sample: Mapping | None = None,
+                numbering: Numbering = PLAIN) -> Determinant:
     """The factored determinant of ᵏJ (or of the square block of the rows that move), or a note
     saying why none is computed: J is not square, or its determinant would expand to more than
-    FACTOR_MAX_TERMS terms (counted before any expansion, so the answer is the same everywhere)."""
-    frame, point = resolve_frames(chain, frame, point)  # checked even where J in `frame` is not needed
-    robot = as_robot(chain)
+    FACTOR_MAX_TERMS terms (counted before any expansion, so the answer is the same everywhere).
+    `frame`, `point`: the chain's frames (None: the first and the last). From the robot file:
+    `numbers` as it wrote them, `sample` values of its constants, the `numbering` its notes print."""
+    frame, point = chain_frames(plain(chain), frame, point)  # checked even where J in `frame` is not needed
+    printed = Printed(numbers or WrittenNumbers(), sample or {}, numbering)
     try:
-        return _determinant(robot.chain, frame, point, robot)
+        return _determinant(chain, frame, point, printed)
     except TooManyTerms as error:
         return Determinant(None, "", [], f"the determinant would expand to {rough_count(error.terms)} terms, "
                            f"more than the {FACTOR_MAX_TERMS:,} that dhsym factors: not computed.")
 
 
-def _determinant(chain, frame, point, robot) -> Determinant:
-    """`chain` the robot's own (frames 0..n); `robot` for its numbers as written and its numbering."""
+def _determinant(chain: Chain, frame: Frame, point: Frame, printed: Printed) -> Determinant:
     n = chain.n
     if n == 6:  # the same in every frame: worked out where it is short, not from J in `frame`
-        centre = wrist_centre(chain, sample=robot.sample)
+        centre = wrist_centre(chain, sample=printed.sample)
         if centre is not None:
-            return _wrist_partitioned(chain, centre, robot)
-        return _full(chain, robot)
+            return _wrist_partitioned(chain, centre, printed)
+        return _full(chain, printed)
     if n > 6:
         return Determinant(None, "", [], f"J is 6×{n}: the arm is redundant, and no determinant is computed. "
                            f"It is singular where all {sympy.binomial(n, 6)} of its 6×6 minors vanish (rank < 6); "
@@ -99,7 +115,7 @@ def _determinant(chain, frame, point, robot) -> Determinant:
     others = dict.fromkeys([*(axis_frame(chain, j) for j in range(1, n + 1)), chain.last_frame])
     turned = (jacobian(chain, other, point) for other in others if other != frame)
     candidates = [matrix] + [candidate for candidate in turned if _moving(candidate) == moving]
-    results = [_block(candidates, moving, rows, robot) for rows in square]
+    results = [_block(chain, candidates, moving, rows, printed) for rows in square]
     return next((r for r in results if r.value != 0), results[0])
 
 
@@ -108,7 +124,7 @@ def _moving(matrix) -> list:
     return [r for r in range(6) if any(x != 0 for x in matrix.row(r))]
 
 
-def _block(candidates, moving, rows, robot) -> Determinant:
+def _block(chain: Chain, candidates, moving, rows, printed: Printed) -> Determinant:
     """The determinant of the block `rows` of J, from the frame where it has the fewest terms.
     The candidates' frames turn the block by a rotation within the rows that move, so the
     determinant is the same up to its sign; the sign is that of the frame asked for, the first."""
@@ -117,10 +133,10 @@ def _block(candidates, moving, rows, robot) -> Determinant:
     what = "the rows that move" if rows == moving else "the velocity of the point" if rows[0] < 3 else "the axes"
     note = f"J is 6×{n}; the determinant is that of its {n}×{n} block of {block} ({what})."
     squares = [candidate.extract(rows, list(range(n))) for candidate in candidates]
-    result = _result(robot, fewest_terms(squares), block, note)
+    result = _result(chain, printed, fewest_terms(squares), block, note)
     if _same_sign(result.value, squares[0]):
         return result
-    return _result(robot, -result.value, block, note)
+    return _result(chain, printed, -result.value, block, note)
 
 
 def fewest_terms(matrices) -> sympy.Expr:
@@ -155,7 +171,7 @@ def _same_sign(value, square) -> bool:
     return True  # zero everywhere we looked: the sign cannot matter
 
 
-def _full(chain, robot) -> Determinant:
+def _full(chain: Chain, printed: Printed) -> Determinant:
     """det J of a 6-joint arm without a wrist centre. det J is the same in every frame (a rotation of
     both halves has determinant 1) and for every reference point, and in both conventions: the
     same robot written in the other one has its frames on the same joint axes, so J is the same
@@ -173,34 +189,34 @@ def _full(chain, robot) -> Determinant:
         det = fewest_terms(matrices)
     except TooManyTerms as error:
         c, frame = places[error.position]
-        where = f"frame {robot.frame_number(frame)}" + (f" of the {c.convention} convention" if c is other else "")
+        where = f"frame {printed.numbering.frame(frame)}" + (f" of the {c.convention} convention" if c is other else "")
         return Determinant(None, "J", [], f"the axes of joints 4–6 do not meet in a point, and the full 6×6 "
                            f"determinant would expand to {rough_count(error.terms)} terms even in {where}, where "
                            f"J is shortest; that is more than the {FACTOR_MAX_TERMS:,} that dhsym factors: not "
                            "computed.")
-    return _result(robot, det, "J", "")
+    return _result(chain, printed, det, "J", "")
 
 
-def _wrist_partitioned(chain, centre, robot) -> Determinant:
+def _wrist_partitioned(chain: Chain, centre: Frame, printed: Printed) -> Determinant:
     """det A · det C, each in the frame where it is short: A (linear rows, joints 1–3) in the
     axis frame of joint 3 (Craig's ³J₆), C (angular rows, joints 4–6) in that of joint 5."""
     body, arm_frame, wrist_frame = chain.last_frame, axis_frame(chain, 3), axis_frame(chain, 5)
     arm = [linear_part(chain, j, arm_frame, centre, body) for j in (1, 2, 3)]
     wrist = [angular_part(chain, j, wrist_frame, centre, body) for j in (4, 5, 6)]
     arm_det = factored(sympy.Matrix(arm).T.det(method="berkowitz"))
-    result = _result(robot, arm_det * factored(sympy.Matrix(wrist).T.det(method="berkowitz")), "J", "")
-    note = (f"The last three axes meet at the origin of frame {robot.frame_number(centre)} (the wrist centre), "
+    result = _result(chain, printed, arm_det * factored(sympy.Matrix(wrist).T.det(method="berkowitz")), "J", "")
+    note = (f"The last three axes meet at the origin of frame {printed.numbering.frame(centre)} (the wrist centre), "
             "so det J = (det A)(det C): "
             "A the linear velocities of the wrist centre from joints 1–3, C the wrist axes 4–6.")
     return Determinant(result.value, "J", result.factors, note)
 
 
-def _result(chain, det, block: str, note: str) -> Determinant:
-    value = as_written(factored(det), chain.numbers)
+def _result(chain: Chain, printed: Printed, det, block: str, note: str) -> Determinant:
+    value = as_written(factored(det), printed.numbers)
     return Determinant(value, block, joint_factors(value, chain), note)
 
 
-def joint_factors(value, chain) -> list:
+def joint_factors(value, chain: Chain) -> list:
     """The distinct factors of `value` that hold joint variables, sign-normalised and collected, the
     one with the latest joint first (how the singularities are listed)."""
     variables = set(chain.joint_variables)

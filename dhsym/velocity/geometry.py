@@ -5,16 +5,17 @@ The poses come from core.numeric, the one numeric evaluator (plain floats, no nu
 layer sits below the plotting layer); the vectors from core.vectors.
 
 >>> import dhsym
->>> wrist_centre(dhsym.load("puma560")), wrist_centre(dhsym.load("stanford")), wrist_centre(dhsym.load("ur5"))
-(6, 5, None)
+>>> [wrist_centre(dhsym.load(name).chain) for name in ("puma560", "stanford", "ur5")]
+[6, 5, None]
 """
 from __future__ import annotations
 
 import math
 import random
+from typing import Mapping
 
+from ..core.chain import Chain, plain
 from ..core.numeric import NumericChain
-from ..core.robot import as_chain, as_robot
 from ..core.vectors import cross, dot
 from .jacobian import axis_frame
 
@@ -25,11 +26,9 @@ __all__ = ["TOLERANCE", "axis_line", "cross", "distance_to_axis", "dot", "minus"
 TOLERANCE = 1e-9
 
 
-def sample_values(chain, rng: random.Random, sample=None) -> dict:
-    """Joint variables uniform in (−π, π); constants from `sample` (default: the robot's, when
-    `chain` is a Robot), else in (0.5, 1.5)."""
-    sample = as_robot(chain).sample if sample is None else sample
-    values = {}
+def sample_values(chain: Chain, rng: random.Random, sample: Mapping | None = None) -> dict:
+    """Joint variables uniform in (−π, π); constants from `sample` (a robot file's), else in (0.5, 1.5)."""
+    values, sample = {}, sample or {}
     for symbol in sorted(chain.symbols, key=str):
         if symbol in chain.joint_variables:
             values[symbol] = rng.uniform(-math.pi, math.pi)
@@ -44,7 +43,7 @@ _EVALUATORS: dict = {}  # (chain, its constants' values) -> NumericChain: many p
 EVALUATORS_KEPT = 32
 
 
-def poses(chain, values: dict) -> dict:
+def poses(chain: Chain, values: dict) -> dict:
     """Frame -> (rotation rows, origin) in the first frame, for numbers `values` of every symbol."""
     variables = set(chain.joint_variables)
     key = (id(chain), tuple(sorted((s.name, values[s]) for s in values if s not in variables)))
@@ -58,7 +57,7 @@ def poses(chain, values: dict) -> dict:
             for frame, pose in numeric.poses([values[v] for v in chain.joint_variables])}
 
 
-def axis_line(chain, joint: int, frame_poses: dict) -> tuple:
+def axis_line(chain: Chain, joint: int, frame_poses: dict) -> tuple:
     """(a point on the axis of `joint`, its unit direction), from `poses`."""
     rotation, origin = frame_poses[axis_frame(chain, joint)]
     return origin, [rotation[r][2] for r in range(3)]
@@ -90,12 +89,11 @@ def nearest_point(line, other) -> list:
     return [a + t * b for a, b in zip(p, d)]
 
 
-def wrist_centre(chain, trials: int = 3, sample=None):
+def wrist_centre(chain: Chain, trials: int = 3, sample: Mapping | None = None):
     """The last frame whose origin lies on the axes of the last three joints (all revolute) in
-    every configuration tried, or None: the point where a spherical wrist's axes meet."""
-    sample = as_robot(chain).sample if sample is None else sample
-    chain = as_chain(chain)  # frames 0..n
-    n = chain.n
+    every configuration tried, or None: the point where a spherical wrist's axes meet. `sample`:
+    numbers for the constants (a robot file's), else random ones."""
+    n = plain(chain).n
     if n < 6 or any(row.joint != "R" for row in chain.rows[-3:]):
         return None
     rng = random.Random(7)

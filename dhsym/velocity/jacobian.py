@@ -18,12 +18,12 @@ contracted frames, in the form a textbook derives it:
   that gives the shortest entries is kept, or the plain ᵏz × (ᵏp − ᵏp_i) when that is shorter.
 
 >>> import dhsym
->>> arm = dhsym.load("planar2r")
+>>> arm = dhsym.load("planar2r").chain
 >>> jacobian(arm)[:2, :]
 Matrix([
 [-a_1*sin(theta_1) - a_2*sin(theta_1 + theta_2), -a_2*sin(theta_1 + theta_2)],
 [ a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2),  a_2*cos(theta_1 + theta_2)]])
->>> jacobian(dhsym.load("puma560"), frame=3)[:3, 1]   # Craig's ³J₆, column 2
+>>> jacobian(dhsym.load("puma560").chain, frame=3)[:3, 1]   # Craig's ³J₆, column 2
 Matrix([
 [a_2*sin(theta_3) - d_4],
 [a_2*cos(theta_3) + a_3],
@@ -33,8 +33,8 @@ from __future__ import annotations
 
 import sympy
 
+from ..core.chain import Chain, Frame, plain
 from ..core.estimate import estimated_size
-from ..core.robot import as_chain, as_robot
 from ..core.simplify import block_matrix, collect_by_trig, merge_steps, split_into_blocks
 from ..core.size import length
 from ..core.transforms import joint_axis_frame
@@ -45,40 +45,39 @@ ROWS = ("vx", "vy", "vz", "ωx", "ωy", "ωz")
 ZERO = (sympy.Integer(0),) * 3
 
 
-def jacobian(chain, frame=None, point=None, body=None) -> sympy.Matrix:
+def jacobian(chain: Chain, frame: Frame | None = None, point: Frame | None = None,
+             body: Frame | None = None) -> sympy.Matrix:
     """ᵏJ: the 6×n geometric Jacobian of frame `point` (default: the last frame), its origin's
     velocity and its angular velocity, expressed in `frame` (default: the first frame, base
     else 0). With `body`, the velocity is that of the point of frame `body` that is at the
     origin of `point` at this instant (a change of reference point: det J does not change).
-    Frames are numbered as `chain` numbers them: a Robot's printed numbers (3..6 for a wrist)."""
-    frame, point = resolve_frames(chain, frame, point)
-    body = point if body is None else resolve_frames(chain, body, None)[0]
-    chain = as_chain(chain)
+    Frames are the chain's own, 0..n ("3" as text too); a robot's printed numbers are translated by
+    its numbering first."""
+    frame, point = chain_frames(chain, frame, point)
+    body = point if body is None else chain.frame(body)
     columns = [column(chain, joint, frame, point, body) for joint in range(1, chain.n + 1)]
     return sympy.Matrix([[col[r] for col in columns] for r in range(6)])
 
 
-def resolve_frames(chain, frame, point) -> tuple:
-    """The chain's own frames (0..n, "base", "tool") for the frames a user names (numbers as the
-    robot prints them, "3", "base", "tool"); None is the first frame and the last."""
-    robot = as_robot(chain)
-    frame = robot.chain.frames[0] if frame is None else robot.chain_frame(frame)
-    point = robot.chain.frames[-1] if point is None else robot.chain_frame(point)
-    return frame, point
+def chain_frames(chain: Chain, frame: Frame | None, point: Frame | None) -> tuple[Frame, Frame]:
+    """The chain's frames (0..n, "base", "tool") that `frame` and `point` name, checked; None is the
+    first frame and the last."""
+    frames = plain(chain).frames
+    return (frames[0] if frame is None else chain.frame(frame)), (frames[-1] if point is None else chain.frame(point))
 
 
-def jacobian_size(chain, frame, point) -> int:
+def jacobian_size(chain: Chain, frame, point) -> int:
     """Estimated nodes of ᵏJ, before it is built: the transform to the point plus one to each
     joint's axis (a general 8-link chain in frame 0: 203,000 estimated, 200,000 built)."""
     axes = (axis_frame(chain, joint) for joint in range(1, chain.n + 1))
     return estimated_size(chain, frame, point) + sum(estimated_size(chain, frame, axis) for axis in axes)
 
 
-def axis_frame(chain, joint: int):
+def axis_frame(chain: Chain, joint: int):
     """The frame whose z axis is the axis of `joint` (1..n): i − 1 (standard) or i (modified).
 
     >>> import dhsym
-    >>> axis_frame(dhsym.load("planar2r"), 1), axis_frame(dhsym.load("puma560"), 1)
+    >>> axis_frame(dhsym.load("planar2r").chain, 1), axis_frame(dhsym.load("puma560").chain, 1)
     (0, 1)
     """
     if not 1 <= joint <= chain.n:
@@ -86,17 +85,17 @@ def axis_frame(chain, joint: int):
     return joint_axis_frame(chain.convention, joint)
 
 
-def moves(chain, joint: int, point) -> bool:
+def moves(chain: Chain, joint: int, point) -> bool:
     """Whether `joint` moves the frame `point`: frame i and every frame after it move with joint i."""
     return chain.frames.index(point) >= chain.frames.index(joint)
 
 
-def column(chain, joint: int, frame, point, body=None) -> list:
+def column(chain: Chain, joint: int, frame, point, body=None) -> list:
     """The six entries of column `joint` of ᵏJ for the origin of `point`, moving with `body`."""
     return linear_part(chain, joint, frame, point, body) + angular_part(chain, joint, frame, point, body)
 
 
-def linear_part(chain, joint: int, frame, point, body=None) -> list:
+def linear_part(chain: Chain, joint: int, frame, point, body=None) -> list:
     """vx, vy, vz of column `joint`: z × (p − p_axis) (revolute) or z (prismatic)."""
     if not moves(chain, joint, point if body is None else body):
         return list(ZERO)
@@ -107,21 +106,21 @@ def linear_part(chain, joint: int, frame, point, body=None) -> list:
     return [gain(chain, joint) * x for x in lever(chain, joint, frame, point)]
 
 
-def angular_part(chain, joint: int, frame, point, body=None) -> list:
+def angular_part(chain: Chain, joint: int, frame, point, body=None) -> list:
     """ωx, ωy, ωz of column `joint`: the joint axis z (revolute), zero (prismatic)."""
     if chain.rows[joint - 1].joint == "P" or not moves(chain, joint, point if body is None else body):
         return list(ZERO)
     return [gain(chain, joint) * x for x in axis(chain, frame, joint)]
 
 
-def gain(chain, joint: int) -> sympy.Expr:
+def gain(chain: Chain, joint: int) -> sympy.Expr:
     """How fast the row's θ (revolute) or d (prismatic) changes with its variable: 1 for
     θ2 − π/2, −1 for a slide written d = −d3."""
     row = chain.rows[joint - 1]
     return derivative(row.theta if row.joint == "R" else row.d, row.variable)
 
 
-def lever(chain, joint: int, frame, point) -> list:
+def lever(chain: Chain, joint: int, frame, point) -> list:
     """z × (p − p_axis) in `frame`, the shortest of the ways that apply:
 
     * when the joint does not move `frame`, it is ∂ᵏp/∂θ of the contracted position ᵏp, which
@@ -143,7 +142,7 @@ def lever(chain, joint: int, frame, point) -> list:
     return min(candidates, key=length)
 
 
-def pivots(chain, axis, frame, point) -> list:
+def pivots(chain: Chain, axis, frame, point) -> list:
     """Where to split the lever: the frame nearest to `frame` between the axis and the point and
     its neighbours, the axis frame and the one after it (the end of a run of parallel axes, as
     frame 3 for the PUMA's joint 2), and the point: a few, so that long chains stay fast."""
@@ -154,13 +153,13 @@ def pivots(chain, axis, frame, point) -> list:
     return [chain.frames[k] for k in sorted(wanted) if first <= k <= last]
 
 
-def lever_in(chain, axis, pivot, point) -> list:
+def lever_in(chain: Chain, axis, pivot, point) -> list:
     """z × (p − p_axis) in frame `pivot` (between the axis frame and the point), in two parts:
     z × (p_m − p_axis) worked out in the axis frame, where z = (0, 0, 1) and the cross product
     is (−y, x, 0) of the contracted ᵃp_m, and z × (p − p_m) in frame m itself.
 
     >>> import dhsym
-    >>> lever_in(dhsym.load("puma560"), 2, 3, 6)    # Craig's ³J₆, column 2
+    >>> lever_in(dhsym.load("puma560").chain, 2, 3, 6)    # Craig's ³J₆, column 2
     [a_2*sin(theta_3) - d_4, a_2*cos(theta_3) + a_3, 0]
     """
     near = far = ZERO
@@ -201,12 +200,12 @@ def derivative(expr, variable):
     return sympy.diff(expr, variable)
 
 
-def rotate(chain, target, source, vector) -> tuple:
+def rotate(chain: Chain, target, source, vector) -> tuple:
     """ᵗR_s·v, turned block by block from the inside out like the contraction multiplies a
     transform, each product collected by that block's cos/sin: a vector, not a 4×4 matrix.
 
     >>> import dhsym
-    >>> rotate(dhsym.load("puma560"), 0, 3, (0, 0, 1))   # z3 in frame 0
+    >>> rotate(dhsym.load("puma560").chain, 0, 3, (0, 0, 1))   # z3 in frame 0
     (-sin(theta_1), cos(theta_1), 0)
     """
     vector = tuple(sympy.sympify(x) for x in vector)
@@ -222,6 +221,6 @@ def rotate(chain, target, source, vector) -> tuple:
     return vector
 
 
-def axis(chain, frame, joint: int) -> list:
+def axis(chain: Chain, frame, joint: int) -> list:
     """The axis of `joint` in `frame`: z of its axis frame, turned into `frame`."""
     return list(rotate(chain, frame, axis_frame(chain, joint), (0, 0, 1)))

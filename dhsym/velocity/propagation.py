@@ -12,7 +12,7 @@ The joint rates are symbols named after the joint variables (`rate_symbols`); th
 their coefficients are the columns of the Jacobian of the last frame, in the last frame.
 
 >>> import dhsym
->>> arm = dhsym.load("planar2r")
+>>> arm = dhsym.load("planar2r").chain
 >>> steps = propagate(arm)
 >>> steps[-1].velocity[1]
 a_2*theta_2_dot + theta_1_dot*(a_1*cos(theta_2) + a_2)
@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import sympy
 from sympy.simplify.fu import TR10i
 
-from ..core.robot import as_robot
+from ..core.chain import Chain, Frame, plain
 from ..core.simplify import collect_by_trig
 from ..core.size import length
 from ..core.vectors import cross
@@ -37,30 +37,27 @@ from .jacobian import ZERO, axis_frame, derivative, gain, rotate
 
 @dataclass(frozen=True)
 class Step:
-    """ω and v of frame `frame`, in that frame; `joint` is the joint whose rate enters here
-    (None for a fixed base or tool step)."""
+    """ω and v of frame `frame` (the chain's), in that frame; `joint` is the joint whose rate enters
+    here (None for a fixed base or tool step)."""
 
-    frame: object
+    frame: Frame
     joint: int | None
     omega: tuple
     velocity: tuple
 
 
-def rate_symbols(chain) -> list[sympy.Symbol]:
+def rate_symbols(chain: Chain) -> list[sympy.Symbol]:
     """θ̇ᵢ or ḋᵢ of each joint, as real symbols named `<variable>_dot`."""
     return [sympy.Symbol(f"{v.name}_dot", real=True) for v in chain.joint_variables]
 
 
-def propagate(chain) -> list[Step]:
-    """ω and v of every frame, from the first (at rest) to the last; each step's `frame` numbered
-    as `chain` numbers its frames (a Robot: as printed)."""
-    robot = as_robot(chain)
-    chain = robot.chain
+def propagate(chain: Chain) -> list[Step]:
+    """ω and v of every frame, from the first (at rest) to the last; each step's `frame` is the chain's."""
     rates = rate_symbols(chain)
     variables = frozenset(chain.joint_variables) | frozenset(rates)
-    frames = chain.frames
+    frames = plain(chain).frames
     omega, velocity = ZERO, ZERO
-    out = [Step(robot.frame_number(frames[0]), None, omega, velocity)]
+    out = [Step(frames[0], None, omega, velocity)]
     for before, frame in zip(frames, frames[1:]):
         joint = frame if isinstance(frame, int) and frame >= 1 else None
         rate = rates[joint - 1] * gain(chain, joint) if joint else 0
@@ -77,11 +74,11 @@ def propagate(chain) -> list[Step]:
             if joint:
                 omega, velocity = (omega, _add(velocity, z)) if prismatic else (_add(omega, z), velocity)
         omega, velocity = _tidy(omega, rates, variables), _tidy(velocity, rates, variables)
-        out.append(Step(robot.frame_number(frame), joint, omega, velocity))
+        out.append(Step(frame, joint, omega, velocity))
     return out
 
 
-def propagated_jacobian(chain, steps: list[Step] | None = None) -> sympy.Matrix:
+def propagated_jacobian(chain: Chain, steps: list[Step] | None = None) -> sympy.Matrix:
     """The Jacobian read off the last step: column i holds the coefficients of joint i's rate."""
     steps = propagate(chain) if steps is None else steps
     last = steps[-1].velocity + steps[-1].omega

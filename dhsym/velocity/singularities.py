@@ -20,7 +20,7 @@ A factor that none of them describes is said to be so.
 
 >>> import dhsym
 >>> from dhsym.velocity.determinant import determinant
->>> puma = dhsym.load("puma560")
+>>> puma = dhsym.load("puma560").chain
 >>> for singularity in singularities(puma, determinant(puma)):
 ...     print(singularity.meaning)
 wrist: axes 4 and 6 line up
@@ -32,13 +32,14 @@ from __future__ import annotations
 import math
 import random
 from dataclasses import dataclass
+from typing import Mapping
 
 import sympy
 
-from ..core.robot import as_robot
+from ..core.chain import Chain, Frame, plain
+from ..core.numbering import PLAIN, Numbering
 from ..core.vectors import cross, dot
 from .geometry import TOLERANCE, axis_line, distance_to_axis, minus, poses, sample_values, wrist_centre
-from .jacobian import resolve_frames
 
 SCAN_STEPS = 720
 
@@ -63,36 +64,39 @@ class Singularity:
         return self.template.format(*(label(j) for j in self.joints))
 
 
-def singularities(chain, determinant, point=None) -> list[Singularity]:
-    """One Singularity per factor of `determinant` (a velocity.determinant.Determinant); `point`
-    numbered as `chain` numbers its frames (a Robot: as printed)."""
-    robot = as_robot(chain)
-    point = resolve_frames(robot, None, point)[1]
-    chain = robot.chain
-    centre = wrist_centre(chain, sample=robot.sample) if chain.n >= 6 else None
+def singularities(chain: Chain, determinant, point: Frame | None = None, *, sample: Mapping | None = None,
+                  numbering: Numbering = PLAIN) -> list[Singularity]:
+    """One Singularity per factor of `determinant` (a velocity.determinant.Determinant); `point`: the
+    chain's frame (default: the last). `sample`: the robot file's values of its constants (for the
+    numbers), `numbering`: how the meanings number frames and joints."""
+    point = plain(chain).frames[-1] if point is None else chain.frame(point)
+    sample = sample or {}
+    centre = wrist_centre(chain, sample=sample) if chain.n >= 6 else None
     point = centre if centre is not None else point
     name = "wrist centre" if centre is not None else \
-        POINT_NAMES.get(point, f"origin of frame {robot.frame_number(point)}")
-    return [Singularity(f, *meaning(chain, f, point, name, robot), robot.frame_offset + 1) for f in determinant.factors]
+        POINT_NAMES.get(point, f"origin of frame {numbering.frame(point)}")
+    return [Singularity(f, *meaning(chain, f, point, name, sample, numbering), numbering.first_joint)
+            for f in determinant.factors]
 
 
 POINT_NAMES = {"tool": "tool point", "base": "origin of the base frame"}
 
 
-def meaning(chain, factor, point, name: str, robot=None) -> tuple[str, tuple]:
+def meaning(chain: Chain, factor, point: Frame, name: str, sample: Mapping | None = None,
+            numbering: Numbering = PLAIN) -> tuple[str, tuple]:
     """The first geometric description that holds wherever `factor` vanishes: (template, joints).
-    `robot` (default: the chain as it is) gives the sample values and the frames' numbers."""
-    robot = as_robot(chain) if robot is None else robot
+    `sample` gives the constants' values, `numbering` the frames' printed numbers."""
+    sample = sample or {}
     variables = [v for v in chain.joint_variables if v in factor.free_symbols]
     joint = chain.joint_variables.index(variables[-1]) + 1
     if factor == variables[-1] and chain.rows[joint - 1].joint == "P":
         return "joint {0} retracted to zero extension", (joint,)
-    roots = _roots(chain, factor, variables, sample=robot.sample)
+    roots = _roots(chain, factor, variables, sample=sample)
     if not roots:
         return "no real configuration found where this factor vanishes (for random dimensions)", ()
     n = chain.n
     revolute = [j for j in range(1, n + 1) if chain.rows[j - 1].joint == "R"]
-    generic = poses(chain, sample_values(chain, random.Random(11), robot.sample))
+    generic = poses(chain, sample_values(chain, random.Random(11), sample))
     def holds(test, *args) -> bool:  # test(*args, pose) where the factor vanishes, and not everywhere
         return all(test(*args, pose) for pose in roots) and not test(*args, generic)
 
@@ -115,7 +119,7 @@ def meaning(chain, factor, point, name: str, robot=None) -> tuple[str, tuple]:
                     return stretched + "axis {2} lies in the plane of axes {0} and {1}", (j - 1, j, k)
     # the point first, then the other origins from the tip down: the UR5's shoulder singularity is
     # where axes 5 and 6 meet (the origin of frame 5), not its flange, crossing a plane
-    origins = [(point, name)] + [(f, f"origin of frame {robot.frame_number(f)}") for f in reversed(chain.frames)
+    origins = [(point, name)] + [(f, f"origin of frame {numbering.frame(f)}") for f in reversed(chain.frames)
                                  if f != point]
     for where, called in origins:
         for a in revolute:
@@ -126,7 +130,7 @@ def meaning(chain, factor, point, name: str, robot=None) -> tuple[str, tuple]:
     return "the joint velocities are dependent here (no simpler description found)", ()
 
 
-def _roots(chain, factor, variables, configurations: int = 3, sample=None) -> list:
+def _roots(chain: Chain, factor, variables, configurations: int = 3, sample=None) -> list:
     """Poses of the chain at up to `configurations` zeros of `factor`: the other joints at random
     values, one of its `variables` scanned for a change of sign, the last first (θ5 of s5), then
     the others (a2 c2 + a3 c23 + d5 s234 has a zero in θ2 whatever θ3 and θ4, not always in θ4)."""
@@ -144,7 +148,7 @@ def _roots(chain, factor, variables, configurations: int = 3, sample=None) -> li
     return found
 
 
-def _root_in(chain, factor, variable, values) -> float | None:
+def _root_in(chain: Chain, factor, variable, values) -> float | None:
     """A zero of `factor` in `variable` (the others at `values`), or None."""
     f = sympy.lambdify([variable], factor.xreplace({s: v for s, v in values.items() if s != variable}), "math")
     span = math.pi if chain.rows[chain.joint_variables.index(variable)].joint == "R" else 3.0
@@ -165,16 +169,16 @@ def _bisect(f, lo: float, hi: float) -> float:
     return (lo + hi) / 2
 
 
-def _parallel(chain, a: int, b: int, pose) -> bool:
+def _parallel(chain: Chain, a: int, b: int, pose) -> bool:
     return math.dist(cross(axis_line(chain, a, pose)[1], axis_line(chain, b, pose)[1]), (0, 0, 0)) < 1e-6
 
 
-def _collinear(chain, a: int, b: int, pose) -> bool:
+def _collinear(chain: Chain, a: int, b: int, pose) -> bool:
     return _parallel(chain, a, b, pose) and distance_to_axis(axis_line(chain, b, pose)[0],
                                                              axis_line(chain, a, pose)) < 1e-6
 
 
-def _in_plane(chain, a: int, b: int, where, pose) -> bool:
+def _in_plane(chain: Chain, a: int, b: int, where, pose) -> bool:
     """The point `where` lies in the plane of the parallel axes a and b."""
     first, second = axis_line(chain, a, pose), axis_line(chain, b, pose)
     normal = cross(first[1], minus(second[0], first[0]))
@@ -184,16 +188,16 @@ def _in_plane(chain, a: int, b: int, where, pose) -> bool:
     return abs(dot(normal, minus(where, first[0]))) / size < 1e-6
 
 
-def _origin_in_plane(chain, a: int, b: int, frame, pose) -> bool:
+def _origin_in_plane(chain: Chain, a: int, b: int, frame, pose) -> bool:
     return _in_plane(chain, a, b, pose[frame][1], pose)
 
 
-def _axis_in_plane(chain, a: int, b: int, joint: int, pose) -> bool:
+def _axis_in_plane(chain: Chain, a: int, b: int, joint: int, pose) -> bool:
     """Axis `joint`, parallel to a and b, lies in their plane (a point of it does)."""
     return _in_plane(chain, a, b, axis_line(chain, joint, pose)[0], pose)
 
 
-def _over(chain, a: int, b: int, point, pose) -> bool:
+def _over(chain: Chain, a: int, b: int, point, pose) -> bool:
     """The point lies in the plane through axis a that is parallel to axis b."""
     first, second = axis_line(chain, a, pose), axis_line(chain, b, pose)
     normal = cross(first[1], second[1])
