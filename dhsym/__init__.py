@@ -6,7 +6,9 @@ A notebook or a script needs one import:
 >>> arm = dhsym.load("planar2r")
 >>> dhsym.fk(arm)[0, 3]
 a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2)
->>> dhsym.velocity.determinant(arm).value
+>>> arm.determinant().value
+a_1*a_2*sin(theta_2)
+>>> dhsym.velocity.determinant(arm.chain).value   # the layers below take the plain chain, frames 0..n
 a_1*a_2*sin(theta_2)
 
 Every name is imported on first use (`__getattr__` below), so that `import dhsym`, and each
@@ -17,19 +19,20 @@ command of the command line, loads only what it uses: numpy comes with `dhsym.pl
 """
 from __future__ import annotations
 
-import os
 from importlib import import_module
 
-# Each exported name and where it lives: (module, attribute), or (module, None) for a module.
-# The functions defined below are the command line's commands, for Python.
+# Each exported name and where it lives: (module, attribute), or (module, None) for a module. The
+# notebook surface (dhsym.api) translates the robot file's frame numbers; the layers below it take
+# plain chains, frames 0..n.
 _LAZY = {
-    "load": ("dhsym.io.library", "load"),
+    "load": ("dhsym.api.functions", "load"),
     "builtin_names": ("dhsym.io.library", "builtin_names"),
-    "Robot": ("dhsym.core.robot", "Robot"),
+    "Robot": ("dhsym.api.robot", "Robot"),
     "Chain": ("dhsym.core.chain", "Chain"),
     "DHRow": ("dhsym.core.chain", "DHRow"),
     "Step": ("dhsym.core.transforms", "Step"),
-    "show": ("dhsym.latex.display", None),
+    "Numbering": ("dhsym.core.numbering", "Numbering"),
+    "show": ("dhsym.api.show", None),
     "plot": ("dhsym.plot", None),  # numpy and matplotlib only when pictures are wanted
     "velocity": ("dhsym.velocity", None),
     "errata": ("dhsym.checking.errata", None),
@@ -38,10 +41,12 @@ _LAZY = {
     "parse_expression": ("dhsym.io.expr", "parse_expression"),
     "UserError": ("dhsym.errors", "UserError"),
     "Location": ("dhsym.errors", "Location"),
+    # the command line's commands, for Python
+    **{name: ("dhsym.api.functions", name) for name in ("fk", "jacobian", "convert", "check", "screws",
+                                                          "import_urdf", "ik")},
 }
-_COMMANDS = ["fk", "jacobian", "convert", "check", "screws", "import_urdf", "ik"]
 
-__all__ = sorted([*_LAZY, *_COMMANDS])
+__all__ = sorted(_LAZY)
 
 
 def __getattr__(name: str):
@@ -55,128 +60,3 @@ def __getattr__(name: str):
 
 def __dir__() -> list[str]:
     return list(__all__)
-
-
-def _robot_of(value):
-    """A robot (what `load` gives), the robot that `import_urdf` derived, or a plain chain."""
-    return getattr(value, "robot", value)
-
-
-def fk(robot, start=None, end=None, raw: bool = False):
-    """ⁱTⱼ, the transform from frame `start` (default: the first) to frame `end` (default: the
-    last), simplified into textbook form unless `raw`, as `dhsym fk ROBOT --from I --to J`.
-
-    >>> import dhsym
-    >>> dhsym.fk(dhsym.load("planar2r"))[:2, 3]
-    Matrix([
-    [a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2)],
-    [a_1*sin(theta_1) + a_2*sin(theta_1 + theta_2)]])
-    """
-    robot = _robot_of(robot)
-    return robot.transform(robot.first_frame if start is None else start,
-                           robot.last_frame if end is None else end, raw=raw)
-
-
-def jacobian(robot, frame=None, point=None):
-    """The 6×n geometric Jacobian of the origin of frame `point` (default: the last), expressed
-    in frame `frame` (default: the first), as `dhsym jacobian`; `dhsym.velocity` has the
-    determinant, the singularities and velocity propagation.
-
-    >>> import dhsym
-    >>> dhsym.jacobian(dhsym.load("planar2r"))[:2, :]
-    Matrix([
-    [-a_1*sin(theta_1) - a_2*sin(theta_1 + theta_2), -a_2*sin(theta_1 + theta_2)],
-    [ a_1*cos(theta_1) + a_2*cos(theta_1 + theta_2),  a_2*cos(theta_1 + theta_2)]])
-    """
-    return _robot_of(robot).jacobian(frame, point)
-
-
-def convert(robot, convention: str):
-    """The same robot in the other DH convention ("standard" or "modified"), as `dhsym convert`.
-
-    >>> import dhsym
-    >>> arm = dhsym.convert(dhsym.load("puma560"), "standard")
-    >>> arm.convention, dhsym.check(arm, "puma560").same
-    ('standard', True)
-    """
-    from .geometry.convert import to_convention
-
-    return to_convention(_robot_of(robot), convention)
-
-
-def check(a, b):
-    """Are `a` and `b` the same? Two robots (the second may be a built-in name or a file's path): the
-    same kinematics from base to tool for every joint value, as `dhsym check A --against B`,
-    and if not, what to fix (`.same`, `.message`). Two expressions or matrices: equal, proven
-    by algebra and by numbers at random points (a verdict that is true or false).
-
-    >>> import dhsym, sympy
-    >>> print(dhsym.check(dhsym.load("spatial3r"), "inline6"))
-    the tables have 3 and 6 joints; they cannot describe the same robot
-    >>> t = sympy.Symbol("t", real=True)
-    >>> print(dhsym.check(sympy.sin(2*t), 2*sympy.sin(t)*sympy.cos(t)))  # doctest: +ELLIPSIS
-    equal: by algebra, and numerically (max error ...)
-    """
-    from .core.chain import Chain
-    from .core.robot import Robot
-
-    if isinstance(_robot_of(a), (Robot, Chain)):
-        from .geometry.compare import compare
-        from .io.library import load
-
-        reference = load(b) if isinstance(b, (str, os.PathLike)) else b
-        return compare(_robot_of(a), _robot_of(reference))
-    from .checking.verify import check as equal
-
-    return equal(a, b)
-
-
-def screws(robot):
-    """The screw axes of the joints (the columns of a 6×n matrix, ω over v) and the home pose M,
-    in the first frame with every joint at zero, as `dhsym screws`.
-
-    >>> import dhsym
-    >>> dhsym.screws(dhsym.load("planar2r")).matrix.T
-    Matrix([
-    [0, 0, 1, 0,    0, 0],
-    [0, 0, 1, 0, -a_1, 0]])
-    """
-    from .geometry.screws import screw_axes
-
-    return screw_axes(_robot_of(robot))
-
-
-def import_urdf(path, base: str | None = None, tip: str | None = None, convention: str = "standard",
-                variables: str = "q", xacro_args: dict | None = None, package_paths=()):
-    """A DH robot derived from a URDF (or .xacro) file's base → tip path, as `dhsym import`:
-    `.robot` (its notes name each variable's URDF joint, its warnings are the reader's) and
-    `.joint_names`; `variables="urdf"` names the joint variables after the URDF's joints;
-    `xacro_args` ({"ur_type": "ur5e"}) and `package_paths` as `--xacro-arg` and `--package-path`.
-
-    >>> import dhsym, pathlib, tempfile
-    >>> urdf = pathlib.Path(tempfile.mkdtemp(), "arm.urdf")
-    >>> _ = urdf.write_text('''<robot name="arm"> <link name="base"/> <link name="upper"/> <link name="tip"/>
-    ...   <joint name="shoulder" type="revolute"> <parent link="base"/> <child link="upper"/>
-    ...     <axis xyz="0 0 1"/> <limit lower="-3" upper="3" effort="1" velocity="1"/> </joint>
-    ...   <joint name="hand" type="fixed"> <parent link="upper"/> <child link="tip"/>
-    ...     <origin xyz="0.5 0 0"/> </joint> </robot>''')
-    >>> dhsym.fk(dhsym.import_urdf(urdf))[:2, 3].T
-    Matrix([[cos(q_1)/2, sin(q_1)/2]])
-    """
-    from .io.urdfimport import import_urdf as imported
-
-    return imported(path, base, tip, convention, variables, xacro_args, package_paths)
-
-
-def ik(robot, free=()):
-    """The closed-form inverse kinematics, every branch named, as `dhsym ik`: `.branches`,
-    `.evaluate(T)` (all branches at once, numpy), `.latex()`, `.text()`, `.code()`; the joint
-    variables `free` stay parameters (a redundant arm).
-
-    >>> import dhsym
-    >>> [branch.name for branch in dhsym.ik(dhsym.load("planar2r")).branches]
-    ['elbow down', 'elbow up']
-    """
-    from .inverse.api import inverse_kinematics
-
-    return inverse_kinematics(_robot_of(robot), free)

@@ -6,6 +6,7 @@ cannot be read.
 """
 from __future__ import annotations
 
+from ..core.robot import Robot
 from ..geometry.compare import compare
 from ..io import library
 from .limits import refuse_long_entries
@@ -35,7 +36,7 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str:
+def run(robot: Robot, args) -> str:
     reference = library.read(args.against)
     warn(reference.warnings)
     refuse_long_entries(robot)

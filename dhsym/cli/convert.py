@@ -6,7 +6,8 @@ Same joint variables, same base → tool for every joint value; symbols stay sym
 """
 from __future__ import annotations
 
-from ..geometry.convert import to_convention
+from ..core.robot import Robot
+from ..geometry.convert import convert_robot
 from ..io.output import write_atomic
 from ..io.robotwriter import robot_yaml
 from .options import robot_options
@@ -23,8 +24,8 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str | None:
-    text = robot_yaml(to_convention(robot, args.to))  # keeps name, sample, first_frame...
+def run(robot: Robot, args) -> str | None:
+    text = robot_yaml(convert_robot(robot, args.to))  # keeps name, sample, first_frame...
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[robot.path])

@@ -33,9 +33,9 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str:
-    from ..inverse.api import inverse_kinematics  # here: the other commands need no solver
+    from ..api.robot import notebook_robot  # here: the other commands need no solver
 
-    result = inverse_kinematics(robot, args.free)
+    result = notebook_robot(robot).ik(args.free)
     if args.format == "json":
         return json.dumps(result.json(), indent=2, ensure_ascii=False)
     if args.format == "python":

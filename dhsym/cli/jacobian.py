@@ -9,11 +9,11 @@ from __future__ import annotations
 
 import json
 
+from ..core.robot import Robot
 from ..printing import jacobian as show
 from ..printing.printers import chain_settings
 from ..printing.render import convention_note, text_legend
-from ..velocity import determinant, jacobian, propagate, rate_symbols, singularities
-from ..velocity.jacobian import resolve_frames
+from ..velocity import propagate, rate_symbols
 from .limits import (
     LATEX_MAX_NODES,
     MAX_NODES,
@@ -38,46 +38,43 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str:
-    for text, option in ((args.frame, "--frame"), (args.point, "--point")):
-        chosen_frame(robot, text, option, None)  # a frame the robot lacks is named with its option
-    own_frame, own_point = resolve_frames(robot, args.frame, args.point)  # the chain's frames 0..n
+def run(robot: Robot, args) -> str:
+    chain = robot.chain
+    frame = chosen_frame(robot, args.frame, "--frame", chain.frames[0])  # the chain's frames 0..n from here on
+    point = chosen_frame(robot, args.point, "--point", chain.frames[-1])
     refuse_long_entries(robot)
-    refuse_jacobian_if_too_large(robot, own_frame, own_point,
-                                 LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
+    refuse_jacobian_if_too_large(robot, frame, point, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
     if args.steps:
         refuse_steps_if_too_large(robot)
-    frame, point = robot.frame_number(own_frame), robot.frame_number(own_point)  # as printed, from here on
     if args.format == "latex":
         from ..latex.velocity import snippet  # the LaTeX layout lives with the documents
 
         return snippet(robot, frame, point, args.steps)
-    with robot.numbered():
-        matrix = jacobian(robot, frame, point)
-        result = determinant(robot, frame, point)
-    found = singularities(robot, result, point)
+    velocity = show.velocity_of(robot, frame, point)
     if args.format == "json":
-        return json.dumps(show.json_jacobian(robot, frame, point, matrix, result), indent=2, ensure_ascii=False)
-    steps = propagate(robot) if args.steps else None
-    return _text(robot, frame, point, matrix, result, found, steps, args)
+        return json.dumps(show.json_jacobian(robot, velocity), indent=2, ensure_ascii=False)
+    steps = propagate(chain) if args.steps else None
+    return _text(robot, velocity, steps, args)
 
 
-def _text(robot, frame, point, matrix, result, found, steps, args) -> str:
-    """`frame`, `point` and the steps' frames are numbered as the robot prints them."""
-    chain = robot
+def _text(robot: Robot, velocity: show.Velocity, steps, args) -> str:
+    """The Jacobian, the propagation `steps` (or None), the determinant and the singularities, as text."""
+    chain, numbering = robot.chain, robot.numbering
+    frame, point = numbering.frame(velocity.frame), numbering.frame(velocity.point)  # as printed
     style = "ascii" if args.ascii else "unicode"
     printer = show.RateTextPrinter(chain.joint_variables, rate_symbols(chain), ascii=args.ascii,
-                                   settings=chain_settings(chain))
-    title = (f"{chain.name}: Jacobian {show.jacobian_title(frame, point, style)} of the {show.point_words(point)}, "
+                                   settings=chain_settings(robot))
+    title = (f"{robot.name}: Jacobian {show.jacobian_title(frame, point, style)} of the {show.point_words(point)}, "
              f"in frame {frame}  ({chain.convention} DH)")
     blocks = [title, "rows vx vy vz ωx ωy ωz; " + convention_note(chain.convention, args.ascii)]
     if steps:
         blocks.append("Velocity propagation (Craig): ω and v of each frame in that frame, from the rates "
                       + ", ".join(printer.doprint(r) for r in rate_symbols(chain)) + "\n"
-                      + show.text_steps(steps, printer, args.width))
-        blocks.append(f"The rates' coefficients in the last step are the columns of J in frame {steps[-1].frame}.")
-    blocks.append(show.text_grid(matrix, printer, args.width))
-    blocks.append(show.text_determinant(result, found, printer, args.width))
+                      + show.text_steps(steps, printer, args.width, numbering))
+        blocks.append("The rates' coefficients in the last step are the columns of J in frame "
+                      f"{numbering.frame(steps[-1].frame)}.")
+    blocks.append(show.text_grid(velocity.matrix, printer, args.width))
+    blocks.append(show.text_determinant(velocity.determinant, velocity.singularities, printer, args.width))
     legend = text_legend(printer, args.width)
     text = "\n\n".join(blocks) + ("\n\n" + legend if legend else "")
     if args.ascii:

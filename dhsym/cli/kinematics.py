@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import json
 
+from ..core.robot import Robot
 from ..latex.results import ARTICLE_TEXT_WIDTH_PT, results_latex, table_latex
 from ..printing import render
 from .limits import LATEX_MAX_NODES, MAX_NODES, refuse_if_too_large
@@ -56,43 +57,44 @@ def points(text: str) -> float:
     return value
 
 
-def run_table(robot, args) -> str:
+def run_table(robot: Robot, args) -> str:
+    chain = robot.chain
     if args.format == "json":
         exact = render.exact_printer(robot)
         rows = [{"joint": r.joint, "number": number,
                  **{key: exact.doprint(getattr(r, key)) for key in ("theta", "d", "a", "alpha")},
-                 "variable": r.variable.name} for number, r in zip(robot.joints, robot.rows)]
-        return json.dumps({"robot": robot.name, "convention": robot.convention, "first_frame": robot.frame_offset,
+                 "variable": r.variable.name} for number, r in zip(robot.numbering.joints(chain), chain.rows)]
+        return json.dumps({"robot": robot.name, "convention": chain.convention, "first_frame": robot.frame_offset,
                            "rows": rows}, indent=2)
     if args.format == "latex":
         return table_latex(robot)
-    note = render.wrap(render.convention_note(robot.convention, ascii=args.ascii) + "; * marks joint variables",
+    note = render.wrap(render.convention_note(chain.convention, ascii=args.ascii) + "; * marks joint variables",
                        args.width, "  ")
     return _header(robot, "DH table", args.ascii) + "\n" + note + "\n\n" + \
         render.text_table(robot, ascii=args.ascii)
 
 
-def run_links(robot, args) -> str:
+def run_links(robot: Robot, args) -> str:
     chain = robot.chain
     return _results(robot, [(i - 1, i, chain.link(i, raw=args.raw)) for i in range(1, chain.n + 1)], args)
 
 
-def run_fk(robot, args) -> str:
+def run_fk(robot: Robot, args) -> str:
     chain = robot.chain
     start = chosen_frame(robot, args.start, "--from", chain.frames[0])
     end = chosen_frame(robot, args.end, "--to", chain.frames[-1])
     refuse_if_too_large(robot, start, end, args.raw, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
-    with robot.numbered():
+    with robot.numbering.printed():
         matrix = chain.transform(start, end, raw=args.raw)
     return _results(robot, [(start, end, matrix)], args)
 
 
-def _header(robot, what: str, ascii: bool) -> str:
-    title = f"{robot.name}: {what}  ({robot.convention} DH)"
+def _header(robot: Robot, what: str, ascii: bool) -> str:
+    title = f"{robot.name}: {what}  ({robot.chain.convention} DH)"
     return title.replace("−", "-") if ascii else title
 
 
-def _results(robot, results, args) -> str:
+def _results(robot: Robot, results, args) -> str:
     """(i, j, matrix) with i, j the chain's frames, titled with the robot's numbers."""
     if args.format == "json":
         data = [render.json_result(robot, i, j, m) for i, j, m in results]
@@ -103,7 +105,7 @@ def _results(robot, results, args) -> str:
     style = "ascii" if args.ascii else "unicode"
     blocks = []
     for i, j, matrix in results:
-        title = _header(robot, render.transform_title(robot.frame_number(i), robot.frame_number(j), style),
+        title = _header(robot, render.transform_title(robot.numbering.frame(i), robot.numbering.frame(j), style),
                         args.ascii)
         blocks.append(title + "\n\n" + render.text_matrix(matrix, printer, args.width))
     legend = render.text_legend(printer, args.width)

@@ -4,6 +4,8 @@
 """
 from __future__ import annotations
 
+from ..api.robot import notebook_robot
+from ..core.robot import Robot
 from ..errors import UserError
 from ..io.output import write_atomic
 from ..latex.document import DOCUMENTS, document
@@ -14,7 +16,7 @@ from .limits import (
     refuse_long_entries,
     refuse_steps_if_too_large,
 )
-from .options import frame_options, robot_options
+from .options import chosen_frame, frame_options, robot_options
 
 
 def add_parsers(commands) -> None:
@@ -38,13 +40,12 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str | None:
+def run(robot: Robot, args) -> str | None:
     chain = robot.chain
     try:
-        start = chain.first_frame if args.start is None else robot.chain_frame(args.start)
-        end = chain.last_frame if args.end is None else robot.chain_frame(args.end)
+        start, end = robot.numbering.chain_frames(chain, args.start, args.end)
     except UserError:
-        pass  # document() names the frame that is wrong, and the option
+        pass  # named below, with its option, after the checks of the whole command
     else:
         refuse_if_too_large(robot, start, end, limit=LATEX_MAX_NODES, others=False)
     if args.free and not args.ik:
@@ -54,8 +55,10 @@ def run(robot, args) -> str | None:
         refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame, LATEX_MAX_NODES, option="")
         if args.steps:
             refuse_steps_if_too_large(robot)
-    text = document(robot, args.document, steps=args.steps, start=args.start, end=args.end,
-                    jacobian=args.jacobian, ik=args.ik, free=args.free)
+    start = chosen_frame(robot, args.start, "--from", chain.first_frame)
+    end = chosen_frame(robot, args.end, "--to", chain.last_frame)
+    solved = (lambda: notebook_robot(robot).ik(args.free).solution) if args.ik else None
+    text = document(robot, args.document, steps=args.steps, start=start, end=end, jacobian=args.jacobian, ik=solved)
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[robot.path])

@@ -9,7 +9,9 @@ chain: 203,000 nodes estimated, 200,000 built).
 """
 from __future__ import annotations
 
+from ..core.chain import Chain, Frame
 from ..core.estimate import contracted_size, estimated_size
+from ..core.robot import Robot
 from ..core.size import expanded_terms, rough_count
 from ..errors import UserError
 from ..printing.render import transform_title
@@ -29,7 +31,8 @@ STEPS_MAX_NODES = 10_000
 ENTRY_MAX_TERMS = 1_000
 
 
-def refuse_if_too_large(robot, start, end, raw: bool = False, limit: int = MAX_NODES, others: bool = True) -> None:
+def refuse_if_too_large(robot: Robot, start: Frame, end: Frame, raw: bool = False, limit: int = MAX_NODES,
+                        others: bool = True) -> None:
     """A UserError saying what to do instead when {start}T{end} (the chain's frames) would be
     larger than `limit` nodes, naming frames with the robot's numbers. `others`: also advise
     `dhsym links` and --raw (commands that print matrices)."""
@@ -42,19 +45,20 @@ def refuse_if_too_large(robot, start, end, raw: bool = False, limit: int = MAX_N
     reach = first + 1
     while reach + 1 <= last and estimated_size(chain, frames[first], frames[reach + 1]) <= limit:
         reach += 1
-    shown = [robot.frame_number(frames[k]) for k in (first, reach)]
+    shown = [robot.numbering.frame(frames[k]) for k in (first, reach)]
     advice = f"ask for part of the chain with --from/--to (--from {shown[0]} --to {shown[1]} fits)"
     if others:
         advice += ", or print the link matrices with 'dhsym links'"
         if not raw and estimated_size(chain, start, end, raw=True) <= limit:
             advice += ", or the unsimplified product with --raw"
-    title = transform_title(robot.frame_number(start), robot.frame_number(end), "ascii")
+    title = transform_title(robot.numbering.frame(start), robot.numbering.frame(end), "ascii")
     what = "too large to print or read" if limit == MAX_NODES else "too large to lay out as LaTeX"
     raise UserError(f"{robot.path}: {title} would take {rough_count(size * CHARACTERS_PER_NODE)} "
                     f"characters, {what}; {advice}")
 
 
-def refuse_jacobian_if_too_large(robot, frame, point, limit: int = MAX_NODES, option: str = "--frame") -> None:
+def refuse_jacobian_if_too_large(robot: Robot, frame: Frame, point: Frame, limit: int = MAX_NODES,
+                                 option: str = "--frame") -> None:
     """A UserError when ᵏJ of `point` would be larger than `limit` nodes, naming a frame where it
     fits (`option` is how the command names that frame), else advising another point."""
     from ..velocity.jacobian import jacobian_size  # the velocity layer only for the commands that use it
@@ -66,18 +70,19 @@ def refuse_jacobian_if_too_large(robot, frame, point, limit: int = MAX_NODES, op
     fitting = [f for f in chain.frames if jacobian_size(chain, f, point) <= limit]
     if fitting and option:
         nearest = min(fitting, key=lambda f: abs(chain.frames.index(f) - chain.frames.index(frame)))
-        advice = f"express it in a frame nearer the point with {option} ({option} {robot.frame_number(nearest)} fits)"
+        fits = robot.numbering.frame(nearest)
+        advice = f"express it in a frame nearer the point with {option} ({option} {fits} fits)"
     elif option:
         advice = "ask for the velocity of a frame nearer the base with --point"
     else:
         advice = "leave out --jacobian, or print it with 'dhsym jacobian', which takes --frame and --point"
     what = "too large to print or read" if limit == MAX_NODES else "too large to lay out as LaTeX"
-    raise UserError(f"{robot.path}: the Jacobian of frame {robot.frame_number(point)} in frame "
-                    f"{robot.frame_number(frame)} would take {rough_count(size * CHARACTERS_PER_NODE)} "
+    raise UserError(f"{robot.path}: the Jacobian of frame {robot.numbering.frame(point)} in frame "
+                    f"{robot.numbering.frame(frame)} would take {rough_count(size * CHARACTERS_PER_NODE)} "
                     f"characters, {what}; {advice}")
 
 
-def refuse_steps_if_too_large(robot, option: str = "--steps") -> None:
+def refuse_steps_if_too_large(robot: Robot, option: str = "--steps") -> None:
     """A UserError when Craig's velocity propagation would be too large to work out."""
     size = propagation_size(robot.chain)
     if size > STEPS_MAX_NODES:
@@ -86,7 +91,7 @@ def refuse_steps_if_too_large(robot, option: str = "--steps") -> None:
                         f"leave out {option} to get the Jacobian alone")
 
 
-def propagation_size(chain) -> int:
+def propagation_size(chain: Chain) -> int:
     """Estimated nodes of every step of the propagation: frame k's ω and v depend on the axes before it."""
     from ..velocity.jacobian import axis_frame
 
@@ -95,7 +100,7 @@ def propagation_size(chain) -> int:
     return sum(estimated_size(chain, frames[k], frames[a]) for k in range(1, len(frames)) for a in axes if a < k)
 
 
-def refuse_screws_if_too_large(robot, limit: int = MAX_NODES) -> None:
+def refuse_screws_if_too_large(robot: Robot, limit: int = MAX_NODES) -> None:
     """A UserError when the zero pose, contracted as `fk` contracts, is past what dhsym prints: the
     screw axes are its joint frames' z axes and origins (a cross product of two of its columns)."""
     from ..geometry.screws import zero_steps  # the geometry layer only for the command that uses it
@@ -107,7 +112,7 @@ def refuse_screws_if_too_large(robot, limit: int = MAX_NODES) -> None:
                         f"and set the joint variables to zero by hand")
 
 
-def refuse_long_entries(robot) -> None:
+def refuse_long_entries(robot: Robot) -> None:
     """A UserError when a table entry would expand to too many terms for the commands that expand."""
     chain = robot.chain
     fields = [(f"joint row {k} {key}", getattr(row, key)) for k, row in enumerate(chain.rows, 1)  # rows of the file

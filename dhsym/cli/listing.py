@@ -10,12 +10,12 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str:
+def run(robot: None, args) -> str:
     names = builtin_names()
     width = max(len(name) for name in names)
     lines = []
     for name in names:
-        chain = load(name)
-        lines.append(f"{name:<{width}}  {chain.n} joints  {chain.convention:<8}  {chain.name}")
-        lines.append(f"{'':<{width}}  source: {chain.source}")
+        robot = load(name)
+        lines.append(f"{name:<{width}}  {robot.chain.n} joints  {robot.chain.convention:<8}  {robot.name}")
+        lines.append(f"{'':<{width}}  source: {robot.source}")
     return "\n".join(lines)

@@ -10,6 +10,8 @@ from __future__ import annotations
 import argparse
 import shutil
 
+from ..core.chain import Frame
+from ..core.robot import Robot
 from ..errors import UserError
 from ..printing.render import MIN_WIDTH
 
@@ -110,7 +112,7 @@ def frame_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--to", dest="end", metavar="T", help="end frame (default: tool, else the last)")
 
 
-def chosen_frame(robot, text, option: str, default):
+def chosen_frame(robot: Robot, text, option: str, default: Frame | None) -> Frame | None:
     """The chain's frame that `option` names by its printed number (`default` when not given); a
     frame the robot does not have is an error that names the option.
 
@@ -124,7 +126,7 @@ def chosen_frame(robot, text, option: str, default):
     if text is None:
         return default
     try:
-        return robot.chain_frame(text)
+        return robot.numbering.chain_frame(text, robot.chain)
     except UserError as error:
         raise UserError(f"{option}: {error.message}") from None
 

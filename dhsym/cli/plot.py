@@ -7,6 +7,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from ..api.robot import notebook_robot
+from ..core.robot import Robot
 from ..errors import UserError
 from ..io.expr import parse_expression
 from .options import robot_options
@@ -34,7 +36,7 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str:
+def run(robot: Robot, args) -> str:
     from matplotlib.backends.backend_agg import FigureCanvasAgg  # here: other commands need no matplotlib
     from matplotlib.figure import Figure
 
@@ -57,7 +59,7 @@ def run(robot, args) -> str:
     return str(path)
 
 
-def _branches(robot, args, values, path) -> str:
+def _branches(robot: Robot, args, values, path) -> str:
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
@@ -67,7 +69,7 @@ def _branches(robot, args, values, path) -> str:
     figure = Figure()
     FigureCanvasAgg(figure)
     constants = parse_assignments(robot, args.constants, "--set")
-    draw_branches(robot, values, parse_target(args.ik), constants, args.free, figure=figure,
+    draw_branches(notebook_robot(robot), values, parse_target(args.ik), constants, args.free, figure=figure,
                   show_frames=not args.no_frames)
     save(figure, path, inputs=[robot.path])
     return str(path)
@@ -97,15 +99,15 @@ def parse_target(text: str) -> dict:
     return values
 
 
-def parse_assignments(chain, texts, option: str) -> dict:
+def parse_assignments(robot: Robot, texts, option: str) -> dict:
     """`NAME=EXPR` texts to {name: exact value}; --q takes joint variables, --set constants.
 
     >>> from dhsym.io.library import load
     >>> parse_assignments(load("planar2r"), ["theta_1=30deg"], "--q")
     {'theta_1': pi/6}
     """
-    symbols = sorted(s.name for s in chain.symbols)
-    variables = {v.name for v in chain.joint_variables}
+    symbols = sorted(s.name for s in robot.chain.symbols)
+    variables = {v.name for v in robot.chain.joint_variables}
     values = {}
     for text in texts:
         match = _ASSIGNMENT.match(text)
@@ -114,7 +116,7 @@ def parse_assignments(chain, texts, option: str) -> dict:
                             f"{'theta_1=30deg' if option == '--q' else 'l_1=0.5'}")
         name, expression = match.group(1), match.group(2)
         if name not in symbols:
-            raise UserError(f"{option} {text!r}: {chain.name} has no symbol {name}; its symbols are "
+            raise UserError(f"{option} {text!r}: {robot.name} has no symbol {name}; its symbols are "
                             f"{', '.join(symbols)}")
         wanted = option == "--q"
         if (name in variables) != wanted:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 
+from ..core.robot import Robot
 from ..geometry.screws import screw_axes
 from ..printing import render
 from .limits import LATEX_MAX_NODES, MAX_NODES, refuse_long_entries, refuse_screws_if_too_large
@@ -22,28 +23,29 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str:
-    chain = robot  # the printers and the screw axes read its rows, numbers and numbering
+def run(robot: Robot, args) -> str:
+    chain, numbering = robot.chain, robot.numbering
     refuse_long_entries(robot)
     refuse_screws_if_too_large(robot, LATEX_MAX_NODES if args.format == "latex" else MAX_NODES)
     screws = screw_axes(chain)
     variables = chain.joint_variables
+    first = numbering.frame(chain.first_frame)
     if args.format == "json":  # exact, with the decimals as the file wrote them, as every JSON output
-        exact = render.exact_printer(chain).doprint
-        return json.dumps({"robot": chain.name, "frame": str(chain.frames[0]),
+        exact = render.exact_printer(robot).doprint
+        return json.dumps({"robot": robot.name, "frame": str(first),
                            "screws": {v.name: [exact(x) for x in screws.matrix[:, i]] for i, v in enumerate(variables)},
                            "home": [[exact(x) for x in screws.home.row(r)] for r in range(4)]}, indent=2,
                           ensure_ascii=False)
     if args.format == "latex":
-        printer = render.latex_printer(chain)
+        printer = render.latex_printer(robot)
         return (f"\\[\nS = {render.latex_matrix(screws.matrix, printer)}\n\\]\n\n"
                 f"\\[\nM = {render.latex_matrix(screws.home, printer)}\n\\]")
-    printer = render.text_printer(chain, ascii=args.ascii)
-    title = f"{chain.name}: screw axes in frame {chain.frames[0]} at q = 0  (from {chain.convention} DH)"
+    printer = render.text_printer(robot, ascii=args.ascii)
+    title = f"{robot.name}: screw axes in frame {first} at q = 0  (from {chain.convention} DH)"
     lines = [title, "S_i = (ωx, ωy, ωz; vx, vy, vz)", ""]
     for i, variable in enumerate(variables):
         column = [printer.doprint(x) for x in screws.matrix[:, i]]
-        name = f"S{robot.joints[i]} ({printer.doprint(variable)})"  # numbered as the table numbers its rows
+        name = f"S{numbering.joint(i + 1)} ({printer.doprint(variable)})"  # numbered as the table numbers its rows
         lines += _screw_lines(name, column, args.width)
     lines += ["", "M =", render.text_matrix(screws.home, printer, args.width)]
     text = "\n".join(lines)

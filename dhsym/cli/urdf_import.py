@@ -13,7 +13,7 @@ import re
 from pathlib import Path
 
 from ..errors import UserError
-from ..geometry.convert import to_convention
+from ..geometry.convert import convert_robot
 from ..io.output import write_atomic
 from ..io.robotfile import load_robot_file
 from ..io.robotwriter import robot_yaml
@@ -50,11 +50,11 @@ def add_parsers(commands) -> None:
     sub.set_defaults(run=run)
 
 
-def run(robot, args) -> str | None:
+def run(robot: None, args) -> str | None:
     if Path(args.file).suffix.lower() in (".yaml", ".yml"):
         loaded = load_robot_file(args.file)
         warn(loaded.warnings)
-        robot = to_convention(loaded, args.convention or loaded.convention)
+        robot = convert_robot(loaded, args.convention or loaded.chain.convention)
     else:
         robot = import_urdf(args.file, args.base, args.tip, args.convention or "standard", args.variables,
                             xacro_arguments(args.xacro_arg), args.package_path).robot

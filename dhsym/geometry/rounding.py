@@ -46,6 +46,7 @@ from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.str import StrPrinter
 
 from ..core.grid import ANGLE_STEP
+from ..core.numbering import PLAIN, Numbering
 from ..core.numbers import WrittenNumbers, decimal_text
 from .exact import is_zero
 
@@ -105,14 +106,17 @@ def fit(value, decimals: bool = True, length: bool = False) -> sympy.Expr:
     return _fit_number(value, decimals, length)
 
 
-def dh_label(convention: str, row: int, field: str, offset: int = 0, moving: bool = False) -> str:
-    """The DH name of a table cell: row 3's a is a_3 in the standard convention, a_2 in the
-    modified one (the same common normal either way), so a note stays true after conversion.
+def dh_label(convention: str, row: int, field: str, numbering: Numbering = PLAIN, moving: bool = False) -> str:
+    """The DH name of a table cell (`row` 1..n of the chain, named as `numbering` prints it): row 3's
+    a is a_3 in the standard convention, a_2 in the modified one (the same common normal either
+    way), so a note stays true after conversion.
 
     >>> dh_label("modified", 3, "alpha"), dh_label("standard", 2, "theta", moving=True)
     ('alpha_2', 'theta_2 offset')
+    >>> dh_label("standard", 1, "d", Numbering(3))
+    'd_4'
     """
-    index = row + offset - (1 if convention == "modified" and field in ("a", "alpha") else 0)
+    index = numbering.joint(row) - (1 if convention == "modified" and field in ("a", "alpha") else 0)
     return f"{field}_{index}" + (" offset" if moving else "")
 
 

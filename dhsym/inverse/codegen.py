@@ -11,7 +11,7 @@ numbers; an angle from them is NaN where its root is not real.
 
 >>> import sympy
 >>> from dhsym.core.chain import Chain, DHRow
->>> from dhsym.core.robot import Robot
+>>> from dhsym import Robot
 >>> from dhsym.inverse.solution import Branch, Solution
 >>> t, l = sympy.symbols("theta_1 l_1", real=True)
 >>> arm = Robot(Chain([DHRow.revolute(t, a=l)], "standard"), name="pendulum", sample={l: sympy.Rational(1, 2)})

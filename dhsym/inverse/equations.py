@@ -174,4 +174,4 @@ def _kind(column: int, to_last: bool) -> str:
 
 
 def _frame_name(robot, frame) -> str:
-    return str(robot.frame_number(frame))
+    return str(robot.numbering.frame(frame))

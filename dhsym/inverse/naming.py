@@ -96,7 +96,7 @@ def checked_names(solution):
     chain = solution.chain
     joints = [_root_joint(solution, parts, k) for k in range(len(parts[0]))]
     chosen = [None] * len(joints)
-    arm = Arm(as_chain(chain), wrist_centre(chain), chain.sample, chain.frame_offset)
+    arm = Arm(as_chain(chain), wrist_centre(as_chain(chain), sample=chain.sample), chain.sample, chain.frame_offset)
     if any(joints):
         measured = _measured(solution, arm, parts, joints)
         chosen = [_first_holding(measured, parts, k, role) if joints[k] else None

@@ -5,7 +5,7 @@ of the arm, a signed number per word pair, positive for the first word ("right",
 
 >>> import dhsym, math
 >>> from dhsym.velocity.geometry import poses
->>> arm = Arm(dhsym.load("planar2r"))
+>>> arm = Arm(dhsym.load("planar2r").chain)
 >>> a_1, a_2, theta_1, theta_2 = sorted(arm.chain.symbols, key=str)
 >>> frames = poses(arm.chain, {a_1: 1.0, a_2: 1.0, theta_1: 0.0, theta_2: math.pi / 2})
 >>> MEASURES["planar"].words, MEASURES["planar"].measure(arm, frames, 2) < 0  # the elbow right of the line

@@ -17,7 +17,7 @@ and the notes say so (see dhsym.geometry.rounding).
 ...   - {joint: R, point: [l_1, 0, 0], direction: [0, 0, 1]}
 ... tool: [{Tx: l_1 + l_2}]
 ... ''', "arm.yaml")
->>> [(row.theta, row.d, row.a, row.alpha) for row in robot.rows]
+>>> [(row.theta, row.d, row.a, row.alpha) for row in robot.chain.rows]
 [(q_1, 0, l_1, 0), (q_2, 0, l_2, 0)]
 """
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 >>> "puma560" in builtin_names()
 True
->>> load("puma560").n
+>>> load("puma560").chain.n
 6
 """
 from __future__ import annotations
@@ -33,9 +33,9 @@ def load(name_or_path: str | os.PathLike) -> Robot:
 
     >>> load("planar2r")
     Robot('Planar elbow manipulator (2R)', standard DH, 2 joints: RR, frames 0..2)
-    >>> load("spherical_wrist").frames
+    >>> load("spherical_wrist").numbering.frames(load("spherical_wrist").chain)
     [3, 4, 5, 6]
-    >>> load(ROBOTS_DIR / "planar2r.yaml").n
+    >>> load(ROBOTS_DIR / "planar2r.yaml").chain.n
     2
     """
     return read(name_or_path)

@@ -11,7 +11,7 @@ expression (see dhsym.expr) and those of dhsym.yamlsafe (1 MiB, nesting 10, 20,0
 ...   - {joint: R, alpha: 0, a: l_1, d: 0, theta: theta_1}
 ...   - {joint: R, alpha: 0, a: l_2, d: 0, theta: theta_2}
 ... ''', "arm.yaml")
->>> robot.fk()[0, 3], robot.name, robot.file
+>>> robot.chain.fk()[0, 3], robot.name, robot.file
 (l_1*cos(theta_1) + l_2*cos(theta_1 + theta_2), 'two-link arm', 'arm.yaml')
 >>> load_robot_text("convention: standard\\njoints: [{joint: R, alpah: 0}]", "arm.yaml")
 Traceback (most recent call last):

@@ -33,7 +33,7 @@ import sympy
 from ..core.chain import Chain, DHRow
 from ..core.inertia import LinkInertia, MassModel
 from ..core.numbers import WrittenNumbers
-from ..core.robot import Robot, as_robot
+from ..core.robot import Robot
 from ..core.transforms import Step
 from ..errors import UserError
 from ..geometry.rounding import Rounding, dh_label, fit, joined, rounding_note, written_text
@@ -121,11 +121,9 @@ class _Values:
         return f"{shown} does not read back as the same value"
 
 
-def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
-    """The robot file of `robot` (a Robot, or a plain Chain); it reads back to the same rows,
-    base, tool, name, source, sample and first frame. `notes` goes before the robot's own notes,
-    then a sentence on any value rounded."""
-    robot = as_robot(robot)
+def robot_yaml(robot: Robot, notes: str | None = None) -> str:
+    """The robot file of `robot`; it reads back to the same rows, base, tool, name, source, sample
+    and first frame. `notes` goes before the robot's own notes, then a sentence on any value rounded."""
     chain = robot.chain
     if chain.n > MAX_JOINTS:
         raise UserError(f"{chain.n} joints; a robot file holds at most {MAX_JOINTS}, so none was written")
@@ -133,6 +131,32 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
     lines = [f"name: {_string(robot.name)}", f"source: {_string(robot.source)}", f"convention: {chain.convention}"]
     if robot.frame_offset:
         lines.append(f"first_frame: {robot.frame_offset}")
+    rows, links = _joint_lines(robot, values, lines)
+    gravity = None
+    if robot.masses.gravity is not None:
+        gravity = tuple(values.written(g, "gravity", "gravity")[0] for g in robot.masses.gravity)
+    steps = _step_lines(chain, values, lines)
+    if gravity is not None:
+        lines.append(f"gravity: {_list(gravity, values.numbers)}")
+    sample = _sample_lines(robot, values, lines)
+    all_notes = joined(notes or "", robot.notes, rounding_note(values.roundings))
+    if all_notes:
+        lines.append(f"notes: {_string(all_notes)}")
+    text = "\n".join(lines) + "\n"
+    size = len(text.encode("utf-8"))
+    if size > MAX_FILE_BYTES:
+        raise UserError(f"the robot file would be {size} bytes; robot files are limited to {MAX_FILE_BYTES >> 20} "
+                        "MiB, so none was written")
+    masses = MassModel(tuple(links) if robot.masses.links else (), gravity)
+    written = robot.replace(chain=Chain(rows, chain.convention, steps["base"], steps["tool"]), notes=all_notes,
+                            sample=sample, masses=masses)
+    _check_reads_back(text, written)
+    return text
+
+
+def _joint_lines(robot: Robot, values: _Values, lines: list) -> tuple[list[DHRow], list[LinkInertia]]:
+    """`joints:` and a line per row added to `lines`; the rows and the links' inertias as they will read back."""
+    chain = robot.chain
     lines.append("joints:")
     rows, links = [], []
     for number, row in enumerate(chain.rows, 1):
@@ -141,7 +165,7 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
         for key in COLUMNS[chain.convention]:
             value = getattr(row, key)
             constant = value - row.variable if key == moving else value
-            label = dh_label(chain.convention, number, key, robot.frame_offset, moving=key == moving)
+            label = dh_label(chain.convention, number, key, robot.numbering, moving=key == moving)
             constant, _ = values.written(constant, label, f"joint row {number} {key}", key in ("a", "d"))
             written[key] = constant + row.variable if key == moving else constant
             text = _moving_text(row.variable, constant, values.numbers) if key == moving else None
@@ -155,9 +179,11 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
         fields += _inertia_fields(robot.masses.link(number), values, f"joint row {number}", links)
         lines.append("  - {" + ", ".join(fields) + "}")
         rows.append(DHRow(row.joint, written["theta"], written["d"], written["a"], written["alpha"], row.variable))
-    gravity = None
-    if robot.masses.gravity is not None:
-        gravity = tuple(values.written(g, "gravity", "gravity")[0] for g in robot.masses.gravity)
+    return rows, links
+
+
+def _step_lines(chain: Chain, values: _Values, lines: list) -> dict:
+    """`base:` and `tool:` added to `lines` where the chain has such steps; the steps as they will read back."""
     steps = {}
     for key, chain_steps in (("base", chain.base), ("tool", chain.tool)):
         steps[key] = [Step(s.kind, values.written(s.value, f"{key} {s.kind}", f"{key} step {n} {s.kind}",
@@ -165,26 +191,17 @@ def robot_yaml(robot: Robot | Chain, notes: str | None = None) -> str:
         if steps[key]:
             texts = (f"{{{s.kind}: {_yaml_value(expression_text(s.value, values.numbers))}}}" for s in steps[key])
             lines.append(f"{key}: [" + ", ".join(texts) + "]")
-    if gravity is not None:
-        lines.append(f"gravity: {_list(gravity, values.numbers)}")
+    return steps
+
+
+def _sample_lines(robot: Robot, values: _Values, lines: list) -> dict:
+    """`sample:` added to `lines` where the robot has sample values; the values as they will read back."""
     sample = {}
     if robot.sample:
         for s, v in sorted(robot.sample.items(), key=lambda i: i[0].name):
             sample[s] = values.written(v, s.name, f"sample {s.name}")
         lines.append("sample: {" + ", ".join(f"{s.name}: {_yaml_value(text)}" for s, (_, text) in sample.items()) + "}")
-    all_notes = joined(notes or "", robot.notes, rounding_note(values.roundings))
-    if all_notes:
-        lines.append(f"notes: {_string(all_notes)}")
-    text = "\n".join(lines) + "\n"
-    size = len(text.encode("utf-8"))
-    if size > MAX_FILE_BYTES:
-        raise UserError(f"the robot file would be {size} bytes; robot files are limited to {MAX_FILE_BYTES >> 20} "
-                        "MiB, so none was written")
-    masses = MassModel(tuple(links) if robot.masses.links else (), gravity)
-    written = robot.replace(chain=Chain(rows, chain.convention, steps["base"], steps["tool"]), notes=all_notes,
-                            sample={s: value for s, (value, _) in sample.items()}, masses=masses)
-    _check_reads_back(text, written)
-    return text
+    return {s: value for s, (value, _) in sample.items()}
 
 
 def _check_reads_back(text: str, robot: Robot) -> None:
@@ -195,11 +212,12 @@ def _check_reads_back(text: str, robot: Robot) -> None:
     except UserError as error:
         raise UserError(f"the robot file dhsym would write does not read back ({error}); nothing was written") \
             from None
-    same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.rows] == \
-        [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in robot.rows]
+    same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.chain.rows] == \
+        [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in robot.chain.rows]
     same_details = [getattr(again, key) for key in ("name", "source", "notes", "sample", "frame_offset", "masses")] \
         == [getattr(robot, key) for key in ("name", "source", "notes", "sample", "frame_offset", "masses")]
-    if not (same and same_details and list(again.base) == list(robot.base) and list(again.tool) == list(robot.tool)):
+    fixed = [list(again.chain.base), list(again.chain.tool)] == [list(robot.chain.base), list(robot.chain.tool)]
+    if not (same and same_details and fixed):
         raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")
 
 

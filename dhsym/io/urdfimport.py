@@ -2,7 +2,7 @@
 
 >>> from pathlib import Path
 >>> imported = import_urdf(Path(__file__).parents[2] / "tests" / "data" / "panda.urdf", convention="modified")
->>> imported.robot.n, imported.robot.convention, imported.robot.rows[0].d
+>>> imported.chain.n, imported.chain.convention, imported.chain.rows[0].d
 (7, 'modified', 333/1000)
 >>> imported.robot.notes[:61]
 'Derived by dhsym import; joint variables: q_1 = panda_joint1,'

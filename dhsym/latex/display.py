@@ -6,15 +6,17 @@ rows, which MathJax 2, 3 and 4 and pdflatex all stack the same way (MathJax 3 ig
 ``\\`` outside an environment).
 
 Objects here only carry LaTeX text and expose `_repr_latex_`, so the package needs no IPython.
-A notebook reaches this module as `dhsym.show` (`show.table(arm)`, `show.transform(arm, 0, 2)`,
-`show.matrix(arm, M, "J")`, `show.expression(arm, e, "p_x")`): not as `display`, a name that
-would hide IPython's own `display` after `from dhsym import *`.
+A notebook reaches these as `dhsym.show` (dhsym.api.show: `show.table(arm)`, `show.transform(arm,
+0, 2)`, `show.matrix(arm, M, "J")`, `show.expression(arm, e, "p_x")`), with frames as the robot
+prints them: not as `display`, a name that would hide IPython's own `display` after
+`from dhsym import *`.
 
->>> import dhsym
->>> arm = dhsym.load("planar2r")
->>> print(dhsym.show.transform(arm, 0, 2).latex.splitlines()[:2])
+>>> from dhsym.io.library import load
+>>> arm = load("planar2r")
+>>> print(matrix(arm, arm.chain.fk(), "{}^{0}T_{2}").latex.splitlines()[:2])
 ['\\begin{array}{l}', '{}^{0}T_{2} =']
->>> "r_{11} & r_{12}" in dhsym.show.transform(dhsym.load("puma560"), 0, 6).latex  # too wide: named elements
+>>> puma = load("puma560")
+>>> "r_{11} & r_{12}" in matrix(puma, puma.chain.fk(), "{}^{0}T_{6}").latex  # too wide: named elements
 True
 """
 from __future__ import annotations
@@ -23,14 +25,14 @@ from dataclasses import dataclass
 
 import sympy
 
-from ..core.robot import as_robot
+from ..core.robot import Robot
 from ..printing.printers import LatexPrinter, chain_settings
-from ..printing.render import latex_matrix, latex_printer, latex_table_cells, transform_title
+from ..printing.render import latex_matrix, latex_printer, latex_table_cells
 from .layout import PAGES, Block, display, matrix_height, matrix_items, stacked
 from .legend import legend_items
 from .tables import table_items
 
-__all__ = ["Latex", "expression", "matrix", "table", "transform"]
+__all__ = ["Latex", "expression", "matrix", "table"]
 
 
 @dataclass(frozen=True)
@@ -46,21 +48,21 @@ class Latex:
         return self.latex
 
 
-def table(chain, page: str = "notebook") -> Latex:
+def table(robot: Robot, page: str = "notebook") -> Latex:
     """The DH table in its convention's column order; joint variables starred. A table too
     wide for the `page` is split into tables of columns (see `tables`)."""
-    header, rows = latex_table_cells(chain, latex_printer(chain, marked=chain.joint_variables))
+    header, rows = latex_table_cells(robot, latex_printer(robot, marked=robot.chain.joint_variables))
     items = table_items(header, rows, PAGES[page], len(rows))
     if len(items) == 1 and isinstance(items[0], Block):
         return Latex(items[0].math)  # the usual case: one array
     return Latex(stacked(items, PAGES[page]))
 
 
-def matrix(chain, value, name: str = "", legend: bool = True, page: str = "notebook") -> Latex:
-    """Any matrix (or vector) of a chain in c/s notation, with its name and legend. A named
+def matrix(robot: Robot, value, name: str = "", legend: bool = True, page: str = "notebook") -> Latex:
+    """Any matrix (or vector) of a robot in c/s notation, with its name and legend. A named
     transform too wide for the `page` ("notebook", or one of the documents') is shown by its
     elements."""
-    printer = LatexPrinter(chain_settings(chain))
+    printer = LatexPrinter(chain_settings(robot))
     value = sympy.Matrix(value)
     if value.shape == (4, 4) and name and list(value[3, :]) == [0, 0, 0, 1]:  # a transform
         cells = [[printer.doprint(value[r, c]) for c in range(4)] for r in range(4)]
@@ -73,14 +75,8 @@ def matrix(chain, value, name: str = "", legend: bool = True, page: str = "noteb
     return Latex(stacked(items, PAGES[page]))
 
 
-def transform(chain, i, j, raw: bool = False, page: str = "notebook") -> Latex:
-    """{i}T_{j} of a robot (or a chain), simplified unless `raw`; frames numbered as the robot prints them."""
-    title = transform_title(i, j, "latex")
-    return matrix(chain, as_robot(chain).transform(i, j, raw=raw), title, page=page)
-
-
-def expression(chain, value, name: str = "") -> Latex:
+def expression(robot: Robot, value, name: str = "") -> Latex:
     """One expression in c/s notation, e.g. a position component."""
-    printer = LatexPrinter(chain_settings(chain))
+    printer = LatexPrinter(chain_settings(robot))
     return Latex((f"{name} = " if name else "") + printer.doprint(value))
 

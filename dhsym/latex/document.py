@@ -14,8 +14,10 @@ True
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Callable
 
-from ..core.robot import as_robot
+from ..core.chain import Frame
+from ..core.robot import Robot
 from ..errors import UserError
 from ..io.library import ROBOTS_DIR
 from ..printing.printers import LatexPrinter, chain_settings
@@ -31,58 +33,50 @@ DOCUMENTS = ("slides", "article", "snippet")
 
 # ---------------------------------------------------------------- the three documents
 
-def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None, jacobian: bool = False,
-             ik: bool = False, free=()) -> str:
-    """The LaTeX text of a document of `kind` for `chain`, about the transform from frame
+def document(robot: Robot, kind: str = "slides", steps: bool = False, start: Frame | None = None,
+             end: Frame | None = None, jacobian: bool = False, ik: Callable | None = None) -> str:
+    """The LaTeX text of a document of `kind` for `robot`, about the transform from the chain's frame
     `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics,
-    `ik` the closed-form inverse kinematics (with the joint variables `free` as parameters).
-    Frames are numbered as the robot prints them."""
-    chain = as_robot(chain)
-    start = _check_frame(chain, chain.first_frame if start is None else start, "--from")
-    end = _check_frame(chain, chain.last_frame if end is None else end, "--to")
+    `ik` the closed-form inverse kinematics: a function that gives the solution (dhsym.inverse), called
+    after the rest is laid out (a surface above this layer solves it, as `robot.ik()` does)."""
+    chain = robot.chain
+    start = chain.frames[0] if start is None else start
+    end = chain.frames[-1] if end is None else end
     if start == end:
-        raise UserError(f"--from and --to name the same frame ({chain.frame_number(start)}); choose two different "
-                        "frames")
+        raise UserError(f"--from and --to name the same frame ({robot.numbering.frame(start)}); choose two "
+                        "different frames")
     page = PAGES[kind]
-    content = sections(chain, start, end, steps, page, LatexPrinter(chain_settings(chain)))
+    content = sections(robot, start, end, steps, page, LatexPrinter(chain_settings(robot)))
     if jacobian:
-        content += velocity_sections(chain, page, steps=steps)
-    if ik:
-        content += ik_sections(chain.ik(free).solution, page)
-    return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
+        content += velocity_sections(robot, page, steps=steps)
+    if ik is not None:
+        content += ik_sections(ik(), page)
+    return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](robot, content, page)
 
 
-def _check_frame(robot, frame, option: str):
-    """The chain's own frame (0..n) for a frame as printed."""
-    try:
-        return robot.chain_frame(frame)
-    except UserError as error:
-        raise UserError(f"{option}: {error.message}") from None
+def _subtitle(robot: Robot) -> str:
+    return f"Forward kinematics, {robot.chain.convention} DH convention"
 
 
-def _subtitle(chain) -> str:
-    return f"Forward kinematics, {chain.convention} DH convention"
-
-
-def robot_file(chain) -> str:
-    """Which robot file the chain comes from: a built-in's name, else the path as given.
+def robot_file(robot: Robot) -> str:
+    """Which robot file the robot comes from: a built-in's name, else the path as given.
 
     >>> from dhsym.io.library import load
     >>> robot_file(load("puma560"))
     'puma560.yaml (built into dhsym)'
     """
-    if not chain.file:
+    if not robot.file:
         return "none (built in Python)"
-    path = Path(chain.file)
-    return f"{path.name} (built into dhsym)" if path.parent == ROBOTS_DIR else chain.file
+    path = Path(robot.file)
+    return f"{path.name} (built into dhsym)" if path.parent == ROBOTS_DIR else robot.file
 
 
-def _slides(chain, content: list[Section], page: Page) -> str:
+def _slides(robot: Robot, content: list[Section], page: Page) -> str:
     out = [SLIDES_PREAMBLE, "\\begin{document}\n",
            "\\begin{frame}[plain]\n\\centering\n{\\usebeamerfont{title}\\usebeamercolor[fg]{title}"
-           f"{tex_text(chain.name)}\\par}}\n\\bigskip\n{tex_text(_subtitle(chain))}\\par\n"
-           f"\\vfill\n{{\\small\\raggedright Source: {tex_prose(chain.source or 'not given')}\\par\n"
-           f"Robot file: {tex_text(robot_file(chain))}\\par}}\n"
+           f"{tex_text(robot.name)}\\par}}\n\\bigskip\n{tex_text(_subtitle(robot))}\\par\n"
+           f"\\vfill\n{{\\small\\raggedright Source: {tex_prose(robot.source or 'not given')}\\par\n"
+           f"Robot file: {tex_text(robot_file(robot))}\\par}}\n"
            "\\end{frame}\n"]
     for section in content:
         title = section.title
@@ -97,12 +91,12 @@ def _slides(chain, content: list[Section], page: Page) -> str:
     return "\n".join(out)
 
 
-def _article(chain, content: list[Section], page: Page) -> str:
-    out = [ARTICLE_PREAMBLE, "\\begin{document}\n", f"\\section*{{{tex_text(chain.name)}}}\n",
-           f"{tex_text(_subtitle(chain))}.\n\nSource: {tex_prose(chain.source or 'not given')}\n",
-           f"Robot file: {tex_text(robot_file(chain))}\n"]
-    if chain.notes:  # ragged right: an imported robot's notes hold long names that justify badly
-        out.append(f"{{\\raggedright Notes: {tex_prose(chain.notes)}\\par}}\n")
+def _article(robot: Robot, content: list[Section], page: Page) -> str:
+    out = [ARTICLE_PREAMBLE, "\\begin{document}\n", f"\\section*{{{tex_text(robot.name)}}}\n",
+           f"{tex_text(_subtitle(robot))}.\n\nSource: {tex_prose(robot.source or 'not given')}\n",
+           f"Robot file: {tex_text(robot_file(robot))}\n"]
+    if robot.notes:  # ragged right: an imported robot's notes hold long names that justify badly
+        out.append(f"{{\\raggedright Notes: {tex_prose(robot.notes)}\\par}}\n")
     part = None
     for section in content:
         if section.part != part:
@@ -113,10 +107,10 @@ def _article(chain, content: list[Section], page: Page) -> str:
     return "\n".join(out)
 
 
-def _snippet(chain, content: list[Section], page: Page) -> str:
+def _snippet(robot: Robot, content: list[Section], page: Page) -> str:
     """Only the math; titles and text become comments."""
-    out = [f"% dhsym latex: {_comment(chain.name)} ({chain.convention} DH); needs \\usepackage{{amsmath}}",
-           f"% Source: {_comment(chain.source or 'not given')}", f"% Robot file: {_comment(robot_file(chain))}"]
+    out = [f"% dhsym latex: {_comment(robot.name)} ({robot.chain.convention} DH); needs \\usepackage{{amsmath}}",
+           f"% Source: {_comment(robot.source or 'not given')}", f"% Robot file: {_comment(robot_file(robot))}"]
     for section in content:
         out.append(f"\n% {_comment(section.title)}")
         out.extend(block.latex if block.is_display else f"% {_comment(block.latex)}" for block in flat(section.items))
@@ -147,7 +141,7 @@ ARTICLE_PREAMBLE = r"""% Made by dhsym latex. Compile with pdflatex.
 """
 
 
-# ---------------------------------------------------------------- text from chain files
+# ---------------------------------------------------------------- text from robot files
 
 def _comment(text: str) -> str:
     """Text for a LaTeX comment: one line (a newline would end the comment)."""

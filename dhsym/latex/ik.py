@@ -8,7 +8,7 @@ when wider than the page; nothing is shrunk.
 
 >>> import sympy
 >>> from dhsym.inverse.solution import Branch, Solution
->>> from dhsym.io.library import load
+>>> from dhsym import load
 >>> arm = load("planar2r")
 >>> t1, t2 = arm.joint_variables
 >>> px, py = sympy.symbols("px py", real=True)

@@ -5,7 +5,7 @@ follows as ``where`` and rows of ``align*``. Needs ``amsmath``.
 
 >>> from dhsym.io.library import load
 >>> arm = load("planar2r")
->>> print(results_latex(arm, [(0, 1, arm.link(1))]))  # doctest: +ELLIPSIS
+>>> print(results_latex(arm, [(0, 1, arm.chain.link(1))]))  # doctest: +ELLIPSIS
 \[
 {}^{0}T_{1} =
 \begin{bmatrix}
@@ -18,7 +18,7 @@ c_{1} &= \cos{\theta_{1}} & s_{1} &= \sin{\theta_{1}}
 """
 from __future__ import annotations
 
-from ..core.robot import as_robot
+from ..core.robot import Robot
 from ..printing.printers import LatexPrinter, chain_settings
 from ..printing.render import latex_printer, latex_table_cells, transform_title
 from .layout import PAGES, Page, flat, matrix_items
@@ -28,20 +28,21 @@ from .tables import table_items
 ARTICLE_TEXT_WIDTH_PT = PAGES["snippet"].width_pt  # a standard `article` at 10 pt
 
 
-def results_latex(chain, results, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) -> str:
-    """(i, j, matrix) results of a chain as displays that fit `text_width_pt` at 10 pt."""
+def results_latex(robot: Robot, results, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) -> str:
+    """(i, j, matrix) results of a robot, i and j the chain's frames, as displays that fit
+    `text_width_pt` at 10 pt, titled with the printed frame numbers."""
     page = Page(text_width_pt, PAGES["snippet"].font_pt)
-    printer = LatexPrinter(chain_settings(chain))  # decimals and offsets as the file wrote them
+    printer = LatexPrinter(chain_settings(robot))  # decimals and offsets as the file wrote them
     parts = []
     for i, j, matrix in results:
         cells = [[printer.doprint(matrix[r, c]) for c in range(4)] for r in range(4)]
-        title = transform_title(as_robot(chain).frame_number(i), as_robot(chain).frame_number(j), "latex")
+        title = transform_title(robot.numbering.frame(i), robot.numbering.frame(j), "latex")
         parts.append("\n".join(block.latex for block in flat(matrix_items(title, cells, page))))
     legend = flat(legend_items(printer, page))
     return "\n\n".join(parts + (["\n".join(block.latex for block in legend)] if legend else []))
 
 
-def table_latex(chain, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) -> str:
+def table_latex(robot: Robot, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) -> str:
     r"""The DH table (``dhsym table --format latex``) as displays that fit `text_width_pt`: one
     array, or arrays of columns, or each row's parameters by name (see `tables`).
 
@@ -50,5 +51,5 @@ def table_latex(chain, text_width_pt: float = ARTICLE_TEXT_WIDTH_PT) -> str:
     ['\\[', '\\begin{array}{c|cccc}', 'i & \\theta_i & d_i & a_i & \\alpha_i \\\\']
     """
     page = Page(text_width_pt, PAGES["snippet"].font_pt)
-    header, rows = latex_table_cells(chain, latex_printer(chain, marked=chain.joint_variables))
+    header, rows = latex_table_cells(robot, latex_printer(robot, marked=robot.chain.joint_variables))
     return "\n".join(block.latex for block in flat(table_items(header, rows, page, len(rows))))

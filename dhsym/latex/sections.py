@@ -10,8 +10,8 @@ last one is the result.
 
 >>> from dhsym.io.library import load
 >>> from dhsym.latex.layout import PAGES
->>> chain = load("planar3r")
->>> parts = sections(chain, 0, 3, True, PAGES["article"], LatexPrinter(chain.joint_variables))
+>>> arm = load("planar3r")
+>>> parts = sections(arm, 0, 3, True, PAGES["article"], LatexPrinter(arm.chain.joint_variables))
 >>> [section.title for section in parts]
 ['DH table', 'Notation', 'Link matrices', 'Step 1: ${}^{0}T_{2}$', 'Result: ${}^{0}T_{3}$']
 """
@@ -20,7 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from itertools import pairwise
 
-from ..core.robot import as_robot
+from ..core.chain import Frame
+from ..core.robot import Robot
 from ..printing.printers import LatexPrinter, chain_settings
 from ..printing.render import latex_table_cells, transform_title
 from .layout import (
@@ -51,25 +52,25 @@ class Section:
     items: list = field(default_factory=list)  # Blocks and Rows
 
 
-def sections(chain, start, end, steps: bool, page: Page, printer: LatexPrinter) -> list[Section]:
+def sections(robot: Robot, start: Frame, end: Frame, steps: bool, page: Page, printer: LatexPrinter) -> list[Section]:
     """Everything but the title, in order: table, notation, links, steps, result; `start`, `end`
     are the chain's own frames (0..n), titled with the robot's numbers."""
-    robot = as_robot(chain)
-    path = _frame_path(robot.chain.frames, start, end)
+    chain, numbering = robot.chain, robot.numbering
+    path = _frame_path(chain.frames, start, end)
 
     def cells(i, j):
-        matrix = robot.chain.transform(i, j)
+        matrix = chain.transform(i, j)
         return [[printer.doprint(matrix[r, c]) for c in range(4)] for r in range(4)]
 
     def title(i, j):
-        return transform_title(robot.frame_number(i), robot.frame_number(j), "latex")
+        return transform_title(numbering.frame(i), numbering.frame(j), "latex")
 
     links = []
     for i, j in pairwise(path):
         link = cells(i, j)
         width = math_width(title(i, j) + " =") + bmatrix_width(link, page)
         links.append((matrix_items(title(i, j), link, page), title(i, j), width))
-    out = [_table_section(chain, page), Section("Link matrices", "Link matrices", _side_by_side(links, page))]
+    out = [_table_section(robot, page), Section("Link matrices", "Link matrices", _side_by_side(links, page))]
     last = len(path) - 1
     for k in range(2, last + 1) if steps else ():
         first, before, here = path[0], path[k - 1], path[k]
@@ -82,7 +83,7 @@ def sections(chain, start, end, steps: bool, page: Page, printer: LatexPrinter) 
         lhs = title(start, end) + (f" = {product}" if len(path) > 2 else "")
         out.append(Section("Result", f"Result: ${title(start, end)}$",
                            matrix_items(lhs, cells(start, end), page, short_lhs=title(start, end))))
-    out.insert(1, _notation_section(chain, printer, page))  # now that every abbreviation is known
+    out.insert(1, _notation_section(chain.convention, printer, page))  # now that every abbreviation is known
     return out
 
 
@@ -91,15 +92,16 @@ def _frame_path(frames, start, end) -> list:
     return frames[first:last + 1] if first < last else frames[last:first + 1][::-1]
 
 
-def _table_section(chain, page: Page) -> Section:
+def _table_section(robot: Robot, page: Page) -> Section:
     """The DH table in the convention's column order, base and tool steps."""
-    printer = _InlineFractions(chain_settings(chain), marked=chain.joint_variables)
-    header, rows = latex_table_cells(chain, printer)
+    chain = robot.chain
+    printer = _InlineFractions(chain_settings(robot), marked=chain.joint_variables)
+    header, rows = latex_table_cells(robot, printer)
     notes = [paragraph("${}^{*}$ marks the joint variable of each row.", page)]
     for which, steps, i, j in (("base", chain.base, "base", 0), ("tool", chain.tool, chain.n, "tool")):
         if steps:
             factors = [f"{s.kind[0]}_{{{s.kind[1]}}}({printer.doprint(s.value)})" for s in steps]
-            shown = transform_title(as_robot(chain).frame_number(i), as_robot(chain).frame_number(j), "latex")
+            shown = transform_title(robot.numbering.frame(i), robot.numbering.frame(j), "latex")
             product = "\\,".join(factors)
             lead = f"Fixed {which} transform: "
             if len(lead) * TEXT_CHARACTER + math_width(f"{shown} = {product}.") <= page.width:
@@ -131,9 +133,9 @@ CONVENTION_LATEX = {
 }
 
 
-def _notation_section(chain, printer: LatexPrinter, page: Page) -> Section:
+def _notation_section(convention: str, printer: LatexPrinter, page: Page) -> Section:
     """The convention and the legend of every abbreviation the document uses."""
-    items = [paragraph(CONVENTION_LATEX[chain.convention], page)]
+    items = [paragraph(CONVENTION_LATEX[convention], page)]
     items += legend_items(printer, page, heading="Abbreviations")
     return Section("Notation", "Notation", items)
 

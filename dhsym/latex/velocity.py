@@ -7,17 +7,24 @@ an element wider than the line broken before a + or −. Nothing is shrunk.
 
 >>> import dhsym
 >>> from dhsym.latex.layout import PAGES
->>> chain = dhsym.load("planar2r")
->>> [s.title for s in velocity_sections(chain, PAGES["article"])]
+>>> arm = dhsym.load("planar2r")
+>>> [s.title for s in velocity_sections(arm, PAGES["article"])]
 ['Jacobian ${}^{0}J$', 'Determinant and singularities']
 """
 from __future__ import annotations
 
-from ..core.robot import as_robot
-from ..printing.jacobian import RateLatexPrinter, element_name, jacobian_title, joint_label, point_words
+from ..core.chain import Frame
+from ..core.robot import Robot
+from ..printing.jacobian import (
+    RateLatexPrinter,
+    element_name,
+    jacobian_title,
+    joint_label,
+    point_words,
+    velocity_of,
+)
 from ..printing.printers import LatexPrinter, chain_settings
-from ..velocity import determinant, jacobian, propagate, rate_symbols, singularities
-from ..velocity.jacobian import resolve_frames
+from ..velocity import propagate, rate_symbols
 from .layout import (
     PAGES,
     Block,
@@ -41,19 +48,20 @@ PART = "Velocity kinematics"
 DOT_EXTRA = 2.5  # pt: a row with a dotted rate is taller than the layout's measured row
 
 
-def velocity_sections(chain, page: Page, frame=None, point=None, steps: bool = False) -> list[Section]:
-    """The Jacobian in `frame` (default: the first), the propagation if `steps`, the
+def velocity_sections(robot: Robot, page: Page, frame: Frame | None = None, point: Frame | None = None,
+                      steps: bool = False) -> list[Section]:
+    """The Jacobian in `frame` (the chain's; default: the first), the propagation if `steps`, the
     determinant and the singularities, with a legend of the abbreviations they use."""
-    robot = as_robot(chain)
-    frame, point = (robot.frame_number(f) for f in resolve_frames(robot, frame, point))  # checked, as printed
-    printer = RateLatexPrinter(chain.joint_variables, rate_symbols(chain), chain_settings(chain))
-    matrix = jacobian(chain, frame, point)
-    result = determinant(chain, frame, point)
-    found = singularities(chain, result, point)
+    chain, numbering = robot.chain, robot.numbering
+    velocity = velocity_of(robot, chain.frames[0] if frame is None else frame,
+                           chain.frames[-1] if point is None else point)
+    matrix, result, found = velocity.matrix, velocity.determinant, velocity.singularities
+    frame, point = numbering.frame(velocity.frame), numbering.frame(velocity.point)  # as printed, from here on
+    printer = RateLatexPrinter(chain.joint_variables, rate_symbols(chain), chain_settings(robot))
     title = jacobian_title(frame, point, "latex")
     out = []
     if steps:
-        out.append(Section(PART, "Velocity propagation (Craig)", _propagation_items(chain, printer, page)))
+        out.append(Section(PART, "Velocity propagation (Craig)", _propagation_items(robot, printer, page)))
     intro = paragraph(f"Geometric Jacobian of the {tex_text(point_words(point))}, expressed in frame "
                       f"{tex_text(str(frame))}; rows $v_x, v_y, v_z, \\omega_x, \\omega_y, \\omega_z$.", page)
     cells = [[printer.doprint(matrix[r, c]) for c in range(matrix.cols)] for r in range(6)]
@@ -92,10 +100,11 @@ def _determinant_items(result, found, printer: LatexPrinter, page: Page) -> list
     return items
 
 
-def _propagation_items(chain, printer: LatexPrinter, page: Page) -> list:
+def _propagation_items(robot: Robot, printer: LatexPrinter, page: Page) -> list:
     columns = []
-    for step in propagate(chain):
-        frame = f"\\mathrm{{{step.frame}}}" if isinstance(step.frame, str) else str(step.frame)
+    for step in propagate(robot.chain):
+        shown = robot.numbering.frame(step.frame)
+        frame = f"\\mathrm{{{shown}}}" if isinstance(shown, str) else str(shown)
         column = []
         for symbol, vector in (("\\omega", step.omega), ("v", step.velocity)):
             for axis, x in zip("xyz", vector):
@@ -107,10 +116,10 @@ def _propagation_items(chain, printer: LatexPrinter, page: Page) -> list:
     return [note, Rows(columns)]
 
 
-def snippet(chain, frame, point, steps: bool = False) -> str:
+def snippet(robot: Robot, frame: Frame, point: Frame, steps: bool = False) -> str:
     """The math of `velocity_sections` for a document with amsmath (`dhsym jacobian --format latex`)."""
     out = []
-    for section in velocity_sections(chain, PAGES["snippet"], frame, point, steps):
+    for section in velocity_sections(robot, PAGES["snippet"], frame, point, steps):
         out.append(f"% {section.title}")
         for item in section.items:
             block = item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")

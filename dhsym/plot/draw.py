@@ -19,7 +19,8 @@ from pathlib import Path
 import numpy as np
 import sympy
 
-from ..core.robot import as_robot
+from ..core.numbering import Numbering
+from ..core.robot import Robot
 from ..core.vectors import cross
 from ..errors import UserError
 from ..io.output import write_atomic
@@ -38,14 +39,14 @@ FORMATS = ("png", "pdf", "svg")
 
 # ---------------------------------------------------------------- pictures
 
-def draw(chain, values=None, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
+def draw(robot: Robot, values=None, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
          frame_offset=None):
     """Draw one arm: links, joints (○ revolute, □ prismatic) and every frame's x/y/z triad.
 
     `ax` is an Axes to draw into (a 2D Axes gives the view from above), a Figure to add one
     to, or None for a new pyplot figure. `planar` None decides from the numbers; False forces
     3D. `frame_offset` renumbers the frames in the picture: a wrist that a lecture numbers
-    3..6 is drawn with frame_offset=3 (default: the chain's own, from its robot file's
+    3..6 is drawn with frame_offset=3 (default: the robot's own numbering, from its file's
     `first_frame`). Returns the Axes.
 
     >>> from dhsym.io.library import load
@@ -53,18 +54,17 @@ def draw(chain, values=None, ax=None, planar=None, show_frames=True, triad_scale
     >>> draw(load("planar3r"), {"theta_2": "30deg"}, ax=Figure()).name
     'rectilinear'
     """
-    name = as_robot(chain).name
-    if title is None and name:
-        title = name + "\n" + _joint_line(chain, values)
-    return draw_closed([(chain, values, LINK_COLOUR, None)], ax=ax, planar=planar, show_frames=show_frames,
+    if title is None and robot.name:
+        title = robot.name + "\n" + _joint_line(robot, values)
+    return draw_closed([(robot, values, LINK_COLOUR, None)], ax=ax, planar=planar, show_frames=show_frames,
                        triad_scale=triad_scale, title=title, frame_offset=frame_offset)
 
 
 def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, triad_scale=None, title=None,
                 frame_offset=None):
-    """Draw several chains in one world frame, e.g. the two halves of a parallel mechanism.
+    """Draw several robots' chains in one world frame, e.g. the two halves of a parallel mechanism.
 
-    Each item is (chain, values, colour, label); colour and label may be left off or None.
+    Each item is (robot, values, colour, label); colour and label may be left off or None.
     Every chain starts in the same world frame; its base steps place it. Where the last frames
     of two chains meet (the cut joint) a joint is drawn. With several chains, frame labels
     carry the first letter of the chain's label (x_L1, x_R1).
@@ -72,7 +72,7 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
     items = [_item(item, k) for k, item in enumerate(chains_with_values)]
     if not items:
         raise UserError("nothing to draw")
-    skeletons = [skeleton(chain, values) for chain, values, _, _ in items]
+    skeletons = [skeleton(robot.chain, resolve_values(robot, values)) for robot, values, _, _ in items]
     points = np.array([p for s in skeletons for p in s.ground + s.links])
     size = extent(points) or 1.0
     ax = _axes(ax, planar if planar is not None else planar_skeletons(skeletons))
@@ -86,11 +86,11 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
     arrows = []
     if show_frames:
         triads = _Triads(triad_scale or TRIAD_FRACTION * size, size)
-        for picture, prefix, (chain, *_) in zip(skeletons, _prefixes([label for *_, label in items]), items,
+        for picture, prefix, (robot, *_) in zip(skeletons, _prefixes([label for *_, label in items]), items,
                                                 strict=True):
-            offset = as_robot(chain).frame_offset if frame_offset is None else frame_offset
+            numbering = robot.numbering if frame_offset is None else Numbering(frame_offset)
             for frame, pose in picture.poses:
-                triads.add(prefix + _frame_name(frame, offset), pose)
+                triads.add(prefix + _frame_name(numbering.frame(frame)), pose)
         arrows = triads.draw(ax, flat)
     _set_limits(ax, np.vstack([points] + [[a.origin, a.tip] for a in arrows]), flat, size, skeletons)
     if title:
@@ -136,10 +136,10 @@ def _prefixes(labels: list) -> list[str]:
     return [chr(ord("a") + k) for k in range(len(labels))]
 
 
-def _joint_line(chain, values) -> str:
-    numbers = resolve_values(chain, values)
+def _joint_line(robot: Robot, values) -> str:
+    numbers = resolve_values(robot, values)
     parts = []
-    for row in chain.rows:
+    for row in robot.chain.rows:
         value = numbers[row.variable]
         shown = f"{np.degrees(value):.4g}°" if row.joint == "R" else f"{value:.4g}"
         parts.append(f"${sympy.latex(row.variable)}$ = {shown.replace('-', '−')}")
@@ -209,8 +209,9 @@ def _draw_joints(ax, joints: list, colour: str, flat: bool, extent: float) -> No
                 mfc="white", mec=colour, mew=2, ls="none", zorder=3 - 0.1 * inside, gid=f"{kind} joint")
 
 
-def _frame_name(frame, offset: int = 0) -> str:
-    return {"base": "B", "tool": "T"}.get(frame, str(frame + offset) if isinstance(frame, int) else str(frame))
+def _frame_name(printed) -> str:
+    """A frame's label in a picture: its printed number, B for the base, T for the tool."""
+    return {"base": "B", "tool": "T"}.get(printed, str(printed))
 
 
 @dataclass

@@ -11,12 +11,14 @@ from __future__ import annotations
 import numpy as np
 import sympy
 
+from ..core.robot import Robot
 from ..errors import UserError
 from .poses import as_number, frame_poses, resolve_values
 
 
-def close_loop(first, second, known: dict, unknowns, guess=None, tolerance=1e-10) -> tuple[dict, dict]:
-    """Values of `unknowns` that bring the last frame origins of two chains together.
+def close_loop(first: Robot, second: Robot, known: dict, unknowns, guess=None,
+               tolerance=1e-10) -> tuple[dict, dict]:
+    """Values of `unknowns` that bring the last frame origins of two robots' chains together.
 
     A closed mechanism cut at a revolute joint gives two chains from one fixed frame (their base
     steps place them); closing the loop means both cut ends meet. Solved by Gauss-Newton from
@@ -26,7 +28,7 @@ def close_loop(first, second, known: dict, unknowns, guess=None, tolerance=1e-10
     names = [_name(u) for u in unknowns]
     guess = {_name(k): as_number(v, str(k)) for k, v in (guess or {}).items()}
     known = {_name(k): v for k, v in known.items()}
-    own = [{s.name for s in chain.symbols} for chain in (first, second)]
+    own = [{s.name for s in robot.chain.symbols} for robot in (first, second)]
     strangers = [n for n in list(known) + names if not any(n in symbols for symbols in own)]
     if strangers:
         raise UserError(f"{', '.join(strangers)} belong to neither chain")

@@ -14,15 +14,15 @@ from dataclasses import dataclass
 import numpy as np
 import sympy
 
-from ..core.chain import Chain
+from ..core.chain import Chain, plain
 from ..core.numeric import NumericChain, origin
-from ..core.robot import as_chain, as_robot
+from ..core.robot import Robot
 from ..errors import UserError
 from ..io.expr import parse_expression
 
 
-def frame_poses(chain, values=None) -> list[tuple]:
-    """The numeric 4×4 pose of every frame (base, 0..n, tool as present) in the first frame.
+def frame_poses(robot: Robot, values=None) -> list[tuple]:
+    """The numeric 4×4 pose of every frame of the chain (base, 0..n, tool as present) in the first frame.
 
     `values` maps symbols or their names to numbers (or to expression text such as "30deg").
     Missing constants come from the robot file's `sample`, missing joint variables are 0.
@@ -31,18 +31,21 @@ def frame_poses(chain, values=None) -> list[tuple]:
     >>> [f for f, _ in frame_poses(load("fourbar_right"), {"phi_1": 0})]
     ['base', 0, 1, 'tool']
     """
-    return skeleton(chain, values).poses
+    return skeleton(robot.chain, resolve_values(robot, values)).poses
 
 
-def resolve_values(chain, values=None) -> dict:
-    """Every symbol of the chain mapped to a float: given, else sample (constants) or 0 (joints).
+def resolve_values(robot: Robot, values=None) -> dict:
+    """Every symbol of the robot's chain mapped to a float: given, else its file's sample (constants)
+    or 0 (joints).
 
     >>> from dhsym.io.library import load
     >>> sorted((s.name, v) for s, v in resolve_values(load("planar2r"), {"theta_1": "90deg"}).items())
     [('a_1', 0.5), ('a_2', 0.4), ('theta_1', 1.5707963267948966), ('theta_2', 0.0)]
     """
-    sample = {str(symbol): value for symbol, value in as_robot(chain).sample.items()}
-    chain = _checked(chain)
+    if not isinstance(robot, Robot):
+        raise TypeError(f"a robot is drawn, not a {type(robot).__name__}; a plain chain is Robot(chain)")
+    sample = {str(symbol): value for symbol, value in robot.sample.items()}
+    chain = robot.chain
     symbols = {s.name: s for s in chain.symbols}
     given = {}
     for key, value in (values or {}).items():
@@ -65,14 +68,6 @@ def resolve_values(chain, values=None) -> dict:
         raise UserError(f"no value for {', '.join(sorted(missing))}; give a number for each "
                         "(the robot file's sample does not have one)")
     return resolved
-
-
-def _checked(chain) -> Chain:
-    """The plain chain of a Robot, or a Chain as it is."""
-    chain = as_chain(chain)
-    if not isinstance(chain, Chain):
-        raise TypeError(f"expected a Chain, not {type(chain).__name__}")
-    return chain
 
 
 def as_number(value, name: str) -> float:
@@ -102,11 +97,11 @@ class Skeleton:
     joints: list  # (kind "R" or "P", point)
 
 
-def skeleton(chain, values) -> Skeleton:
-    """The numeric picture of `chain` at `values` (see resolve_values), from core.numeric."""
-    numbers = resolve_values(chain, values)
-    q = [numbers[v] for v in chain.joint_variables]
-    numeric = NumericChain(as_chain(chain), numbers)
+def skeleton(chain: Chain, numbers: dict) -> Skeleton:
+    """The numeric picture of `chain` at `numbers` (a float for every symbol: `resolve_values`),
+    from core.numeric."""
+    q = [numbers[v] for v in plain(chain).joint_variables]
+    numeric = NumericChain(chain, numbers)
     walk = numeric.walk(q)  # (frame, the poses after each step that leads to it)
     poses = [(frame, np.array(after[-1])) for frame, after in walk]
     points = [np.array(origin(after[-1])) for _, after in walk]  # each frame's origin
@@ -130,7 +125,7 @@ def _without_repeats(points: list) -> list:
     return kept
 
 
-def is_planar(chain, values=None) -> bool:
+def is_planar(robot: Robot, values=None) -> bool:
     """True when every z axis is parallel to the first frame's z, all points lie in one plane
     normal to it, and no joint is prismatic (a prismatic joint would leave the plane).
 
@@ -138,7 +133,7 @@ def is_planar(chain, values=None) -> bool:
     >>> is_planar(load("planar3r")), is_planar(load("scara")), is_planar(load("puma560"))
     (True, False, False)
     """
-    return planar_skeletons([skeleton(chain, values)])
+    return planar_skeletons([skeleton(robot.chain, resolve_values(robot, values))])
 
 
 def planar_skeletons(skeletons) -> bool:

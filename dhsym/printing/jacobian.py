@@ -8,7 +8,7 @@ wider than the line breaks before a + or − (`render.text_grid`).
 >>> import dhsym
 >>> from dhsym.printing.render import text_printer
 >>> arm = dhsym.load("planar2r")
->>> print(text_grid(arm.jacobian(frame=2), text_printer(arm)))
+>>> print(text_grid(velocity_of(arm, 2, 2).matrix, text_printer(arm)))
 ⎡ a1 s2        0  ⎤
 ⎢ a2 + a1 c2   a2 ⎥
 ⎢ 0            0  ⎥
@@ -19,13 +19,42 @@ wider than the line breaks before a + or − (`render.text_grid`).
 from __future__ import annotations
 
 import textwrap
+from dataclasses import dataclass
 
 import sympy
 from sympy.printing.conventions import split_super_sub
 
+from ..core.chain import Frame
+from ..core.numbering import PLAIN, Numbering
+from ..core.robot import Robot
+from ..velocity import Determinant, Singularity, determinant, jacobian, singularities
 from . import render
 from .names import display_name, subscript, superscript
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
+
+
+@dataclass(frozen=True)
+class Velocity:
+    """A robot's Jacobian of the origin of `point` in `frame` (the chain's frames), its determinant
+    and the singular configurations, worked out with what its file says (decimals, sample values,
+    numbering)."""
+
+    frame: Frame
+    point: Frame
+    matrix: sympy.Matrix
+    determinant: Determinant
+    singularities: list[Singularity]
+
+
+def velocity_of(robot: Robot, frame: Frame, point: Frame) -> Velocity:
+    """ᵏJ of `robot` for the chain's frames `frame` and `point`, with its determinant and singularities;
+    a transform refused as too large is named by the printed frames."""
+    chain, numbering = robot.chain, robot.numbering
+    with numbering.printed():
+        matrix = jacobian(chain, frame, point)
+        result = determinant(chain, frame, point, numbers=robot.numbers, sample=robot.sample, numbering=numbering)
+    found = singularities(chain, result, point, sample=robot.sample, numbering=numbering)
+    return Velocity(frame, point, matrix, result, found)
 
 
 class _Rates:
@@ -147,13 +176,13 @@ def joint_label(printer):
     return lambda row: str(labels[row - 1])
 
 
-def text_steps(steps, printer: TextPrinter, width: int = 100) -> str:
-    """Craig's outward iteration: ¹ω₁ = (…), ¹v₁ = (…) for each frame, in that frame."""
+def text_steps(steps, printer: TextPrinter, width: int = 100, numbering: Numbering = PLAIN) -> str:
+    """Craig's outward iteration: ¹ω₁ = (…), ¹v₁ = (…) for each frame, in that frame, numbered as printed."""
     lines = []
     for step in steps:
         for symbol, vector in (("ω", step.omega), ("v", step.velocity)):
             entries = ", ".join(printer.doprint(x) for x in vector)
-            label = f"{vector_name(symbol, step.frame, printer.style)} = "
+            label = f"{vector_name(symbol, numbering.frame(step.frame), printer.style)} = "
             lines.extend(render.break_element(label, f"({entries})", width).splitlines())
     return "\n".join(lines)
 
@@ -168,16 +197,17 @@ def vector_name(symbol: str, frame, style: str) -> str:
     return f"{superscript(str(frame))}{symbol}{subscript(str(frame))}"
 
 
-def json_jacobian(chain, frame, point, matrix: sympy.Matrix, result) -> dict:
+def json_jacobian(robot: Robot, velocity: Velocity) -> dict:
     """Full cos/sin strings with the robot file's symbol names, decimals and offsets as written;
-    sympy.sympify reads them."""
-    sstr = ExactPrinter(chain_settings(chain)).doprint
+    sympy.sympify reads them. Frames as printed."""
+    sstr = ExactPrinter(chain_settings(robot)).doprint
+    matrix, result = velocity.matrix, velocity.determinant
     return {
-        "robot": chain.name,
-        "convention": chain.convention,
-        "frame": frame,
-        "point": point,
-        "joint_variables": [s.name for s in chain.joint_variables],
+        "robot": robot.name,
+        "convention": robot.chain.convention,
+        "frame": robot.numbering.frame(velocity.frame),
+        "point": robot.numbering.frame(velocity.point),
+        "joint_variables": [s.name for s in robot.chain.joint_variables],
         "matrix": [[sstr(matrix[r, c]) for c in range(matrix.cols)] for r in range(matrix.rows)],
         "determinant": None if result.value is None else sstr(result.value),
         "singularities": [sstr(f) for f in result.factors],

@@ -18,8 +18,9 @@ or as one dict, `TextPrinter(joint_variables=[t1, t2], ascii=True)` or
   angles are α, β, γ and whose frames start at 3 gets c4, c5, c6);
 - `ascii` (text only): plain ASCII.
 
-`chain_settings(chain)` gives those but `marked` and `ascii` for a chain; `render.text_printer(chain)` and
-`render.latex_printer(chain)` build printers with them.
+`printer_settings(chain, numbers, numbering)` gives those but `marked` and `ascii` for a chain,
+`chain_settings(robot)` for a robot (its file's numbers and numbering); `render.text_printer(robot)` and
+`render.latex_printer(robot)` build printers with them.
 
 Numbers: integers, fractions and multiples of π print as fractions (`π/4`, `1/3`); a rational
 that the chain's file wrote as a decimal, or that arithmetic made from such decimals, prints as
@@ -51,8 +52,10 @@ from sympy.printing.latex import LatexPrinter as _SympyLatex
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
+from ..core.chain import Chain
+from ..core.numbering import PLAIN, Numbering
 from ..core.numbers import WrittenNumbers
-from ..core.robot import as_robot
+from ..core.robot import Robot
 from .names import display_name, superscript
 from .notation import Notation, written_offsets
 
@@ -61,12 +64,16 @@ _BRACKETS = {"text": [("(", ")"), ("[", "]"), ("{", "}")],
 TEXTBOOK_SETTINGS = {"joint_variables": (), "marked": (), "offsets": None, "numbers": None, "first_joint": 1}
 
 
-def chain_settings(chain) -> dict:
-    """The printer settings a robot (or a plain chain) implies: its joint variables, offsets,
-    written numbers and the number of its first joint."""
-    robot = as_robot(chain)
-    return {"joint_variables": robot.joint_variables, "offsets": written_offsets(robot.rows),
-            "numbers": robot.numbers, "first_joint": robot.frame_offset + 1}
+def printer_settings(chain: Chain, numbers: WrittenNumbers | None = None, numbering: Numbering = PLAIN) -> dict:
+    """The printer settings a chain implies: its joint variables and offsets, the numbers as its
+    file wrote them, the printed number of its first joint."""
+    return {"joint_variables": chain.joint_variables, "offsets": written_offsets(chain.rows),
+            "numbers": numbers or WrittenNumbers(), "first_joint": numbering.first_joint}
+
+
+def chain_settings(robot: Robot) -> dict:
+    """The printer settings a robot implies: `printer_settings` with its file's numbers and numbering."""
+    return printer_settings(robot.chain, robot.numbers, robot.numbering)
 
 
 def _settings(joint_variables, settings, keywords) -> dict:

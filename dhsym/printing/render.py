@@ -22,7 +22,8 @@ import unicodedata
 
 import sympy
 
-from ..core.robot import as_robot
+from ..core.chain import Frame
+from ..core.robot import Robot
 from .names import subscript, superscript
 from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
@@ -123,19 +124,19 @@ def _breaks(text: str) -> list[tuple[int, int, int]]:
     return found
 
 
-def text_printer(chain, ascii: bool = False, marked=()) -> TextPrinter:
-    """A text printer for `chain`: its joint variables, offsets and numbers as its file wrote them."""
-    return TextPrinter(chain_settings(chain), marked=marked, ascii=ascii)
+def text_printer(robot: Robot, ascii: bool = False, marked=()) -> TextPrinter:
+    """A text printer for `robot`: its joint variables, offsets and numbers as its file wrote them."""
+    return TextPrinter(chain_settings(robot), marked=marked, ascii=ascii)
 
 
-def latex_printer(chain, marked=(), printer=LatexPrinter) -> LatexPrinter:
-    """A LaTeX printer (or a subclass: `printer`) for `chain`, set up like `text_printer`."""
-    return printer(chain_settings(chain), marked=marked)
+def latex_printer(robot: Robot, marked=(), printer=LatexPrinter) -> LatexPrinter:
+    """A LaTeX printer (or a subclass: `printer`) for `robot`, set up like `text_printer`."""
+    return printer(chain_settings(robot), marked=marked)
 
 
-def exact_printer(chain) -> ExactPrinter:
-    """SymPy's own text form for `chain`, as JSON carries it: sympify reads it back."""
-    return ExactPrinter(chain_settings(chain))
+def exact_printer(robot: Robot) -> ExactPrinter:
+    """SymPy's own text form for `robot`, as JSON carries it: sympify reads it back."""
+    return ExactPrinter(chain_settings(robot))
 
 
 def transform_title(i, j, style: str = "unicode") -> str:
@@ -259,14 +260,15 @@ def table_columns(convention: str) -> list[tuple[str, str, str]]:
     return [("theta", "θᵢ", "\\theta_i"), ("d", "dᵢ", "d_i"), ("a", "aᵢ", "a_i"), ("alpha", "αᵢ", "\\alpha_i")]
 
 
-def text_table(chain, ascii: bool = False) -> str:
+def text_table(robot: Robot, ascii: bool = False) -> str:
     """The DH table in the convention's column order, rows numbered as the robot's joints (4..6
     for a wrist whose frames are 3..6); * marks each joint variable."""
-    printer = text_printer(chain, ascii=ascii, marked=chain.joint_variables)
+    chain = robot.chain
+    printer = text_printer(robot, ascii=ascii, marked=chain.joint_variables)
     columns = table_columns(chain.convention)
     headers = ["i"] + [_ascii_header(header) if ascii else header for field, header, _ in columns]
     body = [[str(n)] + [printer.doprint(getattr(row, field)) for field, _, _ in columns]
-            for n, row in zip(as_robot(chain).joints, chain.rows)]
+            for n, row in zip(robot.numbering.joints(chain), chain.rows)]
     widths = [max(len(r[k]) for r in [headers] + body) for k in range(len(headers))]
     separator = " | " if ascii else " │ "
     lines = [separator.join(cell.ljust(w) for cell, w in zip(line, widths)).rstrip() for line in [headers] + body]
@@ -287,18 +289,19 @@ def bmatrix(cells) -> str:
     return "\\begin{bmatrix}\n" + " \\\\\n".join(" & ".join(row) for row in cells) + "\n\\end{bmatrix}"
 
 
-def latex_table(chain) -> str:
-    """The DH table of a chain as a LaTeX array; joint variables carry a star."""
-    return latex_array(*latex_table_cells(chain, latex_printer(chain, marked=chain.joint_variables)))
+def latex_table(robot: Robot) -> str:
+    """The DH table of a robot as a LaTeX array; joint variables carry a star."""
+    return latex_array(*latex_table_cells(robot, latex_printer(robot, marked=robot.chain.joint_variables)))
 
 
-def latex_table_cells(chain, printer: LatexPrinter) -> tuple[list[str], list[list[str]]]:
+def latex_table_cells(robot: Robot, printer: LatexPrinter) -> tuple[list[str], list[list[str]]]:
     """The header and the rows of the DH table as LaTeX cells, written by `printer`; rows numbered
     as the robot's joints."""
+    chain = robot.chain
     columns = table_columns(chain.convention)
     header = ["i"] + [latex for _, _, latex in columns]
     rows = [[str(n)] + [printer.doprint(getattr(row, f)) for f, _, _ in columns]
-            for n, row in zip(as_robot(chain).joints, chain.rows)]
+            for n, row in zip(robot.numbering.joints(chain), chain.rows)]
     return header, rows
 
 
@@ -308,19 +311,18 @@ def latex_array(header: list[str], rows: list[list[str]]) -> str:
     return "\\begin{array}{c|" + "c" * (len(header) - 1) + "}\n" + body + "\n\\end{array}"
 
 
-def json_result(chain, i, j, matrix: sympy.Matrix) -> dict:
+def json_result(robot: Robot, i: Frame, j: Frame, matrix: sympy.Matrix) -> dict:
     """A result any SymPy user can read back: full cos/sin, the robot file's symbol names; `i`,
     `j` are the chain's frames, written with the robot's numbers."""
-    printer, exact = text_printer(chain, ascii=True), exact_printer(chain)
+    printer, exact = text_printer(robot, ascii=True), exact_printer(robot)
     for element in matrix:
         printer.doprint(element)  # collects the abbreviations the text form uses
-    robot = as_robot(chain)
     return {
         "robot": robot.name,
-        "convention": chain.convention,
-        "from": robot.frame_number(i),
-        "to": robot.frame_number(j),
-        "joint_variables": [s.name for s in chain.joint_variables],
+        "convention": robot.chain.convention,
+        "from": robot.numbering.frame(i),
+        "to": robot.numbering.frame(j),
+        "joint_variables": [s.name for s in robot.chain.joint_variables],
         "matrix": [[exact.doprint(matrix[r, c]) for c in range(4)] for r in range(4)],
         "abbreviations": dict(legend_entries(printer, "sympy")),
     }

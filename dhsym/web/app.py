@@ -24,6 +24,7 @@ import json
 import traceback
 from collections import OrderedDict
 
+from ..core.robot import Robot
 from ..errors import UserError
 from ..io.robotfile import load_robot_text
 from ..io.yamlsafe import MAX_FILE_BYTES
@@ -71,7 +72,7 @@ def _answer(data: dict) -> dict:
         result = outputs.output(robot, data.get("show", "fk"), data.get("width", outputs.MAX_WIDTH_PT),
                                 start=data.get("from"), end=data.get("to"), frame=data.get("frame"),
                                 point=data.get("point"), free=tuple(data.get("free") or ()))
-        return {**result.json(), "frames": robot.frames, "warnings": warnings}
+        return {**result.json(), "frames": robot.numbering.frames(robot.chain), "warnings": warnings}
     if kind == "draw":
         return {"svg": drawing.arm_svg(robot, data.get("values") or {}, data.get("view", "auto")),
                 "sliders": drawing.sliders(robot), "warnings": warnings}
@@ -82,7 +83,7 @@ def _answer(data: dict) -> dict:
     raise UserError(f"unknown request {kind!r}")
 
 
-def robot_of(text: str, filename: str):
+def robot_of(text: str, filename: str) -> Robot:
     """The robot of a robot file's text, read once while it stays among the last few."""
     key = (filename, text)
     if key in _robots:

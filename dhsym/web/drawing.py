@@ -19,6 +19,7 @@ import math
 from html import escape
 
 from ..core.numeric import NumericChain, origin
+from ..core.robot import Robot
 from ..errors import UserError
 from ..printing.notation import display_name
 
@@ -28,12 +29,12 @@ ELEVATION, AZIMUTH = 25.0, -60.0  # degrees: the 3D view of dhsym plot
 TRIAD_FRACTION, STAGGER = 0.14, 0.45  # triad length as a part of the arm's size; frames at one origin differ
 
 
-def sliders(robot) -> list[dict]:
+def sliders(robot: Robot) -> list[dict]:
     """One slider per joint variable: degrees for a revolute joint, the arm's size either way
     for a prismatic one; each starts at the robot file's sample value, else 0."""
     size = _size_of_constants(robot)
     out = []
-    for row, variable in zip(robot.chain.rows, robot.joint_variables):
+    for row, variable in zip(robot.chain.rows, robot.chain.joint_variables):
         start = float(robot.sample.get(variable, 0))
         if row.joint == "R":
             out.append({"name": variable.name, "label": display_name(variable.name, "unicode"), "unit": "°",
@@ -44,7 +45,7 @@ def sliders(robot) -> list[dict]:
     return out
 
 
-def arm_svg(robot, values: dict, view: str = "auto") -> str:
+def arm_svg(robot: Robot, values: dict, view: str = "auto") -> str:
     """The picture at `values` (joint variable name → radians or length; missing ones are 0)."""
     chain = robot.chain
     numeric = NumericChain(chain, _constants(robot))
@@ -57,15 +58,15 @@ def arm_svg(robot, values: dict, view: str = "auto") -> str:
         links += [origin(after[1] if len(after) > 1 else after[-1]), origin(after[-1])]
     if chain.tool:
         links.append(points[-1])
-    poses = [(robot.frame_number(frame), after[-1]) for frame, after in walk]
+    poses = [(robot.numbering.frame(frame), after[-1]) for frame, after in walk]
     joints = [(row.joint, point) for row, (point, _) in zip(chain.rows, numeric.axes(q))]
-    right, up = _view(view, robot, poses, links, joints)
+    right, up = _view(view, poses, links, joints)
     return _Picture(right, up, _extent(points + links)).svg(points[:zero + 1], links, joints, poses,
                                                           robot.name)
 
 
-def _constants(robot) -> dict:
-    constants = set(robot.symbols) - set(robot.joint_variables)
+def _constants(robot: Robot) -> dict:
+    constants = set(robot.chain.symbols) - set(robot.chain.joint_variables)
     missing = sorted(s.name for s in constants if s not in robot.sample)
     if missing:
         raise UserError(f"to draw the arm, give a number for {', '.join(missing)} in the robot file's sample, "
@@ -73,12 +74,12 @@ def _constants(robot) -> dict:
     return {s: robot.sample[s] for s in constants}
 
 
-def _size_of_constants(robot) -> float:
+def _size_of_constants(robot: Robot) -> float:
     lengths = [abs(float(value)) for value in robot.sample.values()]
     return round(sum(lengths), 3) or 1.0
 
 
-def _view(view: str, robot, poses, links, joints) -> tuple:
+def _view(view: str, poses, links, joints) -> tuple:
     if view == "auto":
         flat = all(abs(abs(pose[2][2]) - 1) < 1e-9 for _, pose in poses) and \
             all(abs(p[2]) < 1e-9 * max(1.0, _extent(links)) for p in links) and all(k == "R" for k, _ in joints)

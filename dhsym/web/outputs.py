@@ -20,7 +20,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..api.robot import notebook_robot
 from ..cli.limits import LATEX_MAX_NODES, refuse_if_too_large, refuse_jacobian_if_too_large, refuse_long_entries
+from ..core.robot import Robot
 from ..errors import UserError
 from ..latex.layout import Block, Page
 from ..latex.prose import tex_text
@@ -46,7 +48,8 @@ class Output:
         return {"title": heading(self.title)["segments"], "parts": self.parts, "latex": self.latex}
 
 
-def output(robot, show: str, width_pt: float, start=None, end=None, frame=None, point=None, free=()) -> Output:
+def output(robot: Robot, show: str, width_pt: float, start=None, end=None, frame=None, point=None,
+           free=()) -> Output:
     """The result of one tab; frames are numbered as the robot prints them (None: first and last)."""
     if show not in SHOWS:
         raise UserError(f"unknown output {show!r}; the page shows {', '.join(SHOWS)}")
@@ -64,61 +67,58 @@ def output(robot, show: str, width_pt: float, start=None, end=None, frame=None, 
     return _inverse(robot, free, page)
 
 
-def slides(robot, start=None, end=None, jacobian: bool = False, ik: bool = False, free=()) -> str:
-    """The beamer deck of `dhsym latex ROBOT [--jacobian] [--ik]`, with that command's limits."""
-    from ..latex.document import document  # the documents (and the solver they import) only for a deck
+def slides(robot: Robot, start=None, end=None, jacobian: bool = False, ik: bool = False, free=()) -> str:
+    """The beamer deck of `dhsym latex ROBOT [--jacobian] [--ik]`, with that command's limits; frames
+    as printed."""
+    from ..latex.document import document  # the documents only for a deck
 
     chain = robot.chain
-    first = chain.first_frame if start is None else robot.chain_frame(start)
-    last = chain.last_frame if end is None else robot.chain_frame(end)
+    first, last = robot.numbering.chain_frames(chain, start, end)
     refuse_if_too_large(robot, first, last, limit=LATEX_MAX_NODES, others=False)
     if jacobian:
         refuse_long_entries(robot)
         refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame, LATEX_MAX_NODES, option="")
-    return document(robot, "slides", start=start, end=end, jacobian=jacobian, ik=ik, free=free)
+    solved = (lambda: notebook_robot(robot).ik(free).solution) if ik else None
+    return document(robot, "slides", start=first, end=last, jacobian=jacobian, ik=solved)
 
 
-def _title(robot, what: str) -> str:
-    return f"{tex_text(' '.join(robot.name.split()))}: {what}  ({robot.convention} DH)"
+def _title(robot: Robot, what: str) -> str:
+    return f"{tex_text(' '.join(robot.name.split()))}: {what}  ({robot.chain.convention} DH)"
 
 
-def _table(robot, page: Page) -> Output:
+def _table(robot: Robot, page: Page) -> Output:
     latex = table_latex(robot, page.width_pt)
-    note = paragraph_part(Block(CONVENTION_LATEX[robot.convention] + " ${}^{*}$ marks the joint variables.", 0.0,
-                                is_display=False))
+    note = paragraph_part(Block(CONVENTION_LATEX[robot.chain.convention] + " ${}^{*}$ marks the joint variables.",
+                                0.0, is_display=False))
     return Output(_title(robot, "DH table"), [note, *snippet_parts(latex)], latex)
 
 
-def _transform(robot, start, end, page: Page) -> Output:
-    chain = robot.chain
-    first = chain.frames[0] if start is None else robot.chain_frame(start)
-    last = chain.frames[-1] if end is None else robot.chain_frame(end)
+def _transform(robot: Robot, start, end, page: Page) -> Output:
+    chain, numbering = robot.chain, robot.numbering
+    first, last = numbering.chain_frames(chain, start, end)
     if first == last:
-        raise UserError(f"from and to name the same frame ({robot.frame_number(first)}); choose two different frames")
+        raise UserError(f"from and to name the same frame ({numbering.frame(first)}); choose two different frames")
     refuse_if_too_large(robot, first, last, limit=LATEX_MAX_NODES)
-    with robot.numbered():
+    with numbering.printed():
         matrix = chain.transform(first, last)
     latex = results_latex(robot, [(first, last, matrix)], page.width_pt)
-    title = transform_title(robot.frame_number(first), robot.frame_number(last), "latex")
+    title = transform_title(numbering.frame(first), numbering.frame(last), "latex")
     return Output(_title(robot, f"${title}$"), snippet_parts(latex), latex)
 
 
-def _jacobian(robot, frame, point, page: Page) -> Output:
+def _jacobian(robot: Robot, frame, point, page: Page) -> Output:
     from ..latex.velocity import velocity_sections  # the velocity layer only when the Jacobian is asked for
-    from ..velocity.jacobian import resolve_frames
 
-    own_frame, own_point = resolve_frames(robot, frame, point)
+    own_frame, own_point = robot.numbering.chain_frames(robot.chain, frame, point)
     refuse_long_entries(robot)
     refuse_jacobian_if_too_large(robot, own_frame, own_point, LATEX_MAX_NODES)
-    parts = section_parts(velocity_sections(robot, page, frame, point))
+    parts = section_parts(velocity_sections(robot, page, own_frame, own_point))
     return Output(_title(robot, "Jacobian, determinant and singularities"), parts, latex_of(parts))
 
 
-def _inverse(robot, free, page: Page) -> Output:
-    from ..inverse.api import inverse_kinematics  # the solver only when the inverse kinematics is asked for
+def _inverse(robot: Robot, free, page: Page) -> Output:
     from ..latex.ik import ik_sections
 
-    solution = inverse_kinematics(robot, free).solution
+    solution = notebook_robot(robot).ik(free).solution  # solved once per robot read and choice of free
     parts = section_parts(ik_sections(solution, page, headings=False))
     return Output(_title(robot, "inverse kinematics"), parts, latex_of(parts))
-
