@@ -4,8 +4,8 @@ describes them: the surfaces are tested on these whatever the solver finds.
 The planar 2R is Spong's elbow manipulator: D = cos θ2 by the law of cosines, two branches."""
 import sympy
 
+from dhsym import load
 from dhsym.inverse.solution import Branch, Solution, Step
-from dhsym.io.library import load
 
 
 def planar2r() -> Solution:

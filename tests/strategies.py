@@ -12,10 +12,10 @@ from __future__ import annotations
 import sympy
 from hypothesis import strategies as st
 
+from dhsym import Robot
 from dhsym.core.chain import Chain, DHRow
 from dhsym.core.inertia import LinkInertia, MassModel
 from dhsym.core.numbers import WrittenNumbers
-from dhsym.core.robot import Robot
 from dhsym.core.transforms import Step
 
 DECIMALS = [sympy.Rational(text) for text in ("0.1", "0.25", "0.425", "0.39225", "0.0892", "1.5")]

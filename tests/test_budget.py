@@ -95,7 +95,7 @@ def test_without_an_interval_timer_commands_still_work(monkeypatch):
 
 
 def _general_robot(n):
-    from dhsym.io.robotfile import load_robot_text
+    from readers import load_robot_text
 
     rows = "".join(f"  - {{joint: R, alpha: alpha_{i}, a: a_{i}, d: d_{i}, theta: theta_{i}}}\n"
                    for i in range(1, n + 1))

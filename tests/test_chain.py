@@ -2,9 +2,8 @@
 import pytest
 import sympy
 
-from dhsym import Chain, DHRow, Step, UserError
+from dhsym import Chain, DHRow, Step, UserError, load
 from dhsym.checking.verify import check
-from dhsym.io.library import load
 
 th, d, a, al = sympy.symbols("theta_1 d_1 a_1 alpha_1", real=True)
 c, s, ca, sa = sympy.cos(th), sympy.sin(th), sympy.cos(al), sympy.sin(al)

@@ -19,8 +19,8 @@ import sympy
 from cli_runner import COMMAND, run_dhsym_process
 from cli_runner import run_dhsym as run
 
+from dhsym import load
 from dhsym.checking.verify import numeric_error
-from dhsym.io.library import load
 
 UR5_PUBLISHED = """\
 name: UR5 (published numbers)
@@ -205,7 +205,7 @@ def test_an_offset_keeps_its_angle_as_written(robot_file):
 
 
 def load_file(path):
-    from dhsym.io.robotfile import load_robot_file
+    from readers import load_robot_file
     return load_robot_file(path)
 
 

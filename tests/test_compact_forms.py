@@ -3,8 +3,8 @@ import pytest
 import sympy
 import textbook
 
+from dhsym import load
 from dhsym.checking.verify import check
-from dhsym.io.library import load
 from dhsym.printing.printers import TextPrinter
 
 TEXTBOOK_FORMS = {
@@ -116,7 +116,8 @@ def visp_viper():
 @pytest.mark.parametrize("name", ["fMw", "fMe"])
 def test_visp_viper_text_and_json_are_no_longer_than_visp(name):
     """The JSON, read back by SymPy, has the text form's brackets: −c23(a + b), never c23(−a − b)."""
-    from dhsym.io.robotfile import load_robot_text
+    from readers import load_robot_text
+
     from dhsym.printing import render
     chain = load_robot_text(VIPER)
     ours = chain.transform(0, 6) if name == "fMw" else chain.fk()

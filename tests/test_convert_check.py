@@ -1,14 +1,15 @@
 """`dhsym convert` and `dhsym check`: every built-in robot converts and back, and check agrees;
 check explains a wrong twist, a shifted zero, a moved axis, a different tool or base."""
 import pytest
+from readers import load_robot_file, load_robot_text
 
+from dhsym import load
 from dhsym.cli import app as cli
 from dhsym.geometry.compare import compare
 from dhsym.geometry.convert import to_convention
-from dhsym.io.library import builtin_names, load
-from dhsym.io.robotfile import load_robot_file, load_robot_text
+from dhsym.io.library import ROBOTS_DIR, builtin_names
 
-INLINE6 = (load.__globals__["ROBOTS_DIR"] / "inline6.yaml").read_text(encoding="utf-8")
+INLINE6 = (ROBOTS_DIR / "inline6.yaml").read_text(encoding="utf-8")
 ROW_4 = "{joint: R, alpha: pi/2,  a: 0,   d: d_4, theta: theta_4}"
 
 
@@ -32,7 +33,7 @@ def test_every_builtin_robot_converts_and_back_with_the_same_kinematics(name, tm
 
 
 def test_conversion_keeps_symbols_and_variables():
-    converted = to_convention(load("puma560"), "standard")
+    converted = to_convention(load("puma560").chain, "standard")
     assert [row.variable.name for row in converted.rows] == [f"theta_{i}" for i in range(1, 7)]
     assert {s.name for s in converted.symbols} == {s.name for s in load("puma560").symbols}
 

@@ -9,8 +9,10 @@ import numpy
 import pytest
 import sympy
 from hypothesis import given, settings
+from readers import load_robot_file, load_robot_text
 from strategies import robots_with_masses
 
+from dhsym import load
 from dhsym.core.inertia import LinkInertia, MassModel, tensor
 from dhsym.dynamics import lagrange
 from dhsym.dynamics.codegen import keyword_names, module_text, tape_function
@@ -19,9 +21,8 @@ from dhsym.dynamics.polynomial import multiplied_out
 from dhsym.dynamics.program import dynamics_program
 from dhsym.dynamics.tape import differentiate
 from dhsym.errors import UserError
-from dhsym.geometry.convert import to_convention
-from dhsym.io.library import builtin_names, load
-from dhsym.io.robotfile import load_robot_file, load_robot_text
+from dhsym.geometry.convert import convert_robot
+from dhsym.io.library import builtin_names
 from dhsym.io.robotwriter import robot_yaml
 
 SPONG = Path(__file__).parent / "data" / "spong_elbow.yaml"
@@ -217,11 +218,11 @@ def test_masses_are_written_back_and_survive_a_change_of_convention(robot):
     again = load_robot_text(robot_yaml(robot), "arm.yaml")
     assert again.masses == robot.masses
     other = "modified" if robot.convention == "standard" else "standard"
-    back = to_convention(to_convention(robot, other), robot.convention)
+    back = convert_robot(convert_robot(robot, other), robot.convention)
     if (back.chain.rows, back.base, back.tool) == (robot.chain.rows, robot.base, robot.tool):
         assert back.masses == robot.masses  # the same frames: the same numbers (a tool's Tx may move into a row)
     robot = robot.replace(masses=robot.filled_masses())  # every value given: the same body in either frame
-    converted = to_convention(robot, other)  # the same robot: the same torques
+    converted = convert_robot(robot, other)  # the same robot: the same torques
     first = dynamics_program(robot.chain, robot.filled_masses())
     second = dynamics_program(converted.chain, converted.filled_masses())
     values = values_for(sorted(set(first.constants()) | set(second.constants()), key=str), 3)

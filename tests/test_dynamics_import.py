@@ -3,9 +3,9 @@ a moving link merged by the parallel-axis theorem, a branch off the path held at
 no body has left symbolic with a warning; the robot file it writes reads back the same."""
 import sympy
 from cli_runner import run_dhsym
+from readers import load_robot_text
 
 from dhsym.core.inertia import tensor
-from dhsym.io.robotfile import load_robot_text
 from dhsym.io.urdfimport import import_urdf
 
 R = sympy.Rational
@@ -59,7 +59,7 @@ def test_inertias_are_carried_into_the_dh_frames_exactly(tmp_path):
     urdf.write_text(ARM, encoding="utf-8")
     for convention in ("standard", "modified"):
         robot = import_urdf(urdf, tip="tip", convention=convention).robot
-        zero = {v: 0 for v in robot.joint_variables}
+        zero = {v: 0 for v in robot.chain.joint_variables}
         for k, (link, (mass, centre, inertia)) in enumerate(zip(robot.masses.links, merged_in_base_frame()), 1):
             pose = robot.chain.transform(robot.chain.frames[0], k).xreplace(zero)  # frame k at q = 0
             turn, origin = pose[:3, :3], pose[:3, 3]

@@ -6,13 +6,13 @@ import sympy
 from hypothesis import given, settings
 from strategies import robots
 
+from dhsym import load
 from dhsym.dynamics.base import base_parameters
 from dhsym.dynamics.codegen import tape_function
 from dhsym.dynamics.model import about_origin
 from dhsym.dynamics.program import dynamics_program
 from dhsym.dynamics.regressor import parameter_symbols, regressor
 from dhsym.errors import UserError
-from dhsym.io.library import load
 
 
 def standard_values(robot, values: dict) -> dict:
@@ -90,7 +90,7 @@ def test_base_parameters_give_the_same_torques(name):
 
 
 def test_a_twist_off_the_quarter_turns_is_refused_for_base_parameters():
-    from dhsym.io.robotfile import load_robot_text
+    from readers import load_robot_text
 
     robot = load_robot_text("convention: modified\njoints:\n  - {joint: R, alpha: 0, a: 0, d: 0, theta: q_1}\n"
                             "  - {joint: R, alpha: 0.3, a: 1, d: 0, theta: q_2}\n", "arm.yaml")

@@ -15,14 +15,14 @@ import yaml
 from cli_runner import run_dhsym
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from readers import load_robot_text
 
-from dhsym import Chain, DHRow
+from dhsym import Chain, DHRow, Robot
 from dhsym.checking.verify import numeric_error
 from dhsym.core.budget import time_budget
-from dhsym.core.robot import Robot
 from dhsym.errors import UserError
 from dhsym.io.expr import Reading, parse_expression
-from dhsym.io.robotfile import ROW_KEYS, TOP_KEYS, load_robot_text
+from dhsym.io.robotfile import ROW_KEYS, TOP_KEYS
 from dhsym.printing.notation import written_offsets
 from dhsym.printing.printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 

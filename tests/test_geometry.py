@@ -8,12 +8,14 @@ import sympy
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from dhsym import load
+from dhsym.api.robot import notebook_robot
 from dhsym.core.chain import Chain, DHRow
 from dhsym.geometry.exact import vector
 from dhsym.geometry.frames import assign_frames
 from dhsym.geometry.lines import JointAxis
 from dhsym.geometry.screws import chain_axes, product_of_exponentials, screw_axes
-from dhsym.io.library import builtin_names, load
+from dhsym.io.library import builtin_names
 from dhsym.io.urdf import read_urdf, read_urdf_text
 from tests.urdf_builder import serial_urdf, urdf_fk
 
@@ -42,7 +44,7 @@ def assert_same_fk_as_urdf(text, base="link0", tip=None, trials=5):
     tip = tip or urdf.tip
     rng = random.Random(1)
     for convention in ("standard", "modified"):
-        chain = assign_frames(urdf.axes, urdf.tool, convention).robot()
+        chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, convention).robot())
         for _ in range(trials):
             q = [rng.uniform(-2.5, 2.5) for _ in range(chain.n)]
             assert np.allclose(numeric_fk(chain, q), urdf_fk(precise(text), q, base, tip), atol=1e-9), convention
@@ -79,13 +81,13 @@ def test_edge_case_urdfs_give_the_urdf_kinematics(case):
 
 def test_anti_parallel_axes_get_a_twist_of_pi():
     urdf = read_urdf_text(serial_urdf(EDGE_CASES["anti_parallel"]).encode(), "edge.urdf")
-    chain = assign_frames(urdf.axes, urdf.tool, "standard").robot()
+    chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, "standard").robot())
     assert chain.rows[0].alpha == sympy.pi and chain.rows[0].a == sympy.Rational(2, 5)
 
 
 def test_rounded_angles_become_exact_with_a_warning():
     urdf = read_urdf_text(serial_urdf(EDGE_CASES["rounded_angles"]).encode(), "edge.urdf")
-    chain = assign_frames(urdf.axes, urdf.tool, "modified").robot()
+    chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, "modified").robot())
     assert all((row.alpha / (sympy.pi / 12)).is_integer for row in chain.rows)
     assert not any(value.has(sympy.Float) for row in chain.rows for value in (row.theta, row.d, row.a, row.alpha))
     assert urdf.warnings[0].startswith("edge.urdf:9:102: angles snapped to the multiples of π/12 they were rounded")
@@ -99,7 +101,7 @@ def test_lengths_are_the_decimals_written_and_noise_is_zero():
     text = serial_urdf([("revolute", "0 1.2e-17 0.089159", "0 0 0", "0 0 1"),
                         ("revolute", "0.425 0 0", "0 0 0", "1 0 0")])
     urdf = read_urdf_text(text.encode(), "noise.urdf")
-    chain = assign_frames(urdf.axes, urdf.tool, "standard").robot()
+    chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, "standard").robot())
     assert [(row.d, row.a) for row in chain.rows] == [(sympy.Rational("0.089159"), 0), (sympy.Rational("0.425"), 0)]
     assert any("1.2e-17 taken as 0" in w for w in urdf.warnings)
 
@@ -113,7 +115,7 @@ def test_real_arms_give_the_urdf_kinematics(path, tip):
 
 def test_the_panda_gives_franka_s_published_modified_table():
     urdf = read_urdf(f"{DATA}/panda.urdf")
-    chain = assign_frames(urdf.axes, urdf.tool, "modified").robot()
+    chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, "modified").robot())
     published = [(0, 0, "0.333"), (-1, 0, 0), (1, 0, "0.316"), (1, "0.0825", 0), (-1, "-0.0825", "0.384"),
                  (1, 0, 0), (1, "0.088", "0.107")]  # α/(π/2), a, d; the flange's d = 0.107 sits in row 7
     assert [(row.alpha / (sympy.pi / 2), row.a, row.d) for row in chain.rows] == \
@@ -152,7 +154,7 @@ def test_random_axes_to_table_keep_the_kinematics(specs, tool_point, tool_direct
     x = (x - x.dot(z) * z) / sympy.sqrt((x - x.dot(z) * z).dot(x - x.dot(z) * z))
     tool = sympy.eye(4)
     tool[:3, 0], tool[:3, 1], tool[:3, 2], tool[:3, 3] = x, z.cross(x), z, tool_point
-    chain = assign_frames(axes, tool, convention).robot()
+    chain = notebook_robot(assign_frames(axes, tool, convention).robot())
     rng = random.Random(len(specs))
     for _ in range(3):
         q = [rng.uniform(-2, 2) for _ in axes]
@@ -174,7 +176,7 @@ def test_random_tables_through_their_axes_reproduce_the_kinematics(specs, conven
             for v, (kind, offset, d, a, alpha) in zip(q, specs)]
     chain = Chain(rows, convention)
     axes, tool = chain_axes(chain)
-    derived = assign_frames(axes, tool, target, q).robot()
+    derived = notebook_robot(assign_frames(axes, tool, target, q).robot())
     rng = random.Random(3)
     for _ in range(3):
         values = [rng.uniform(-2, 2) for _ in q]
@@ -190,7 +192,7 @@ def test_screws_of_every_builtin_robot_give_its_kinematics(name):
     rng = random.Random(name)
     q = [rng.uniform(-2, 2) for _ in chain.joint_variables]
     expected = chain.fk(raw=True).xreplace({**constants, **dict(zip(chain.joint_variables, q))})
-    poe = product_of_exponentials(screw_axes(chain), q).xreplace(constants)
+    poe = product_of_exponentials(screw_axes(chain.chain), q).xreplace(constants)
     assert np.allclose(np.array(expected.evalf(), dtype=float), np.array(poe.evalf(), dtype=float), atol=1e-9)
 
 
@@ -221,7 +223,7 @@ def test_every_step_is_recorded_for_a_notebook():
 
 def test_angles_off_the_grid_give_short_numbers_and_a_warning():
     urdf = read_urdf_text(serial_urdf(EDGE_CASES["tilted_tool"]).encode(), "tilted.urdf")
-    chain = assign_frames(urdf.axes, urdf.tool, "standard").robot()
+    chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, "standard").robot())
     values = [v for row in chain.rows for v in (row.theta - row.variable, row.d, row.a, row.alpha)]
     values += [step.value for step in chain.base + chain.tool]
     assert all(max(abs(r.p), r.q) < 10 ** 20 for v in values for r in sympy.sympify(v).atoms(sympy.Rational))
@@ -232,7 +234,7 @@ def test_angles_off_the_grid_give_short_numbers_and_a_warning():
 @pytest.mark.parametrize("convention", ["standard", "modified"])
 def test_a_table_made_from_decimals_shows_decimals_and_multiples_of_pi(case, convention):
     urdf = read_urdf_text(serial_urdf(EDGE_CASES[case]).encode(), "edge.urdf")
-    chain = assign_frames(urdf.axes, urdf.tool, convention).robot()
+    chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, convention).robot())
     values = [v for row in chain.rows for v in (row.theta - row.variable, row.d, row.a, row.alpha)]
     values += [step.value for step in chain.base + chain.tool]
     for value in values:
@@ -246,6 +248,6 @@ def test_the_note_names_each_rounded_value_and_its_exact_form():
     text = serial_urdf([("revolute", "0 0 0.1", "0 0 0", "0 0 1"), ("revolute", "0.2 0 0.1", "0 0 0", "0 0.6 0.8")])
     urdf = read_urdf_text(text.encode(), "tilted.urdf")
     for convention, row in (("standard", 0), ("modified", 1)):
-        chain = assign_frames(urdf.axes, urdf.tool, convention).robot()
+        chain = notebook_robot(assign_frames(urdf.axes, urdf.tool, convention).robot())
         assert chain.rows[row].alpha == sympy.Rational("-0.643501108793284")
         assert "alpha_1 -0.643501108793284 (exactly -atan(3/4))" in chain.notes

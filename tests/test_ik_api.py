@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 import sympy
 
+from dhsym import load
 from dhsym.errors import UserError
 from dhsym.inverse.equations import Equation
 from dhsym.inverse.scan import scan
-from dhsym.io.library import load
 
 
 @pytest.mark.slow  # eight derivations, the threads switching often

@@ -8,8 +8,9 @@ from pathlib import Path
 import pytest
 
 import dhsym.inverse.redundant
+from dhsym import load
 from dhsym.errors import UserError
-from dhsym.io.library import ROBOTS_DIR, load
+from dhsym.io.library import ROBOTS_DIR
 
 CORPUS = Path(__file__).parent / "bad_inputs"
 IMPORTED = Path(__file__).parent / "data" / "imported"

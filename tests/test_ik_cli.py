@@ -12,7 +12,7 @@ import pytest
 from cli_runner import run_dhsym
 
 import dhsym.inverse.api
-from dhsym.io.library import load
+from dhsym import load
 from dhsym.printing.render import display_width
 
 OVERFULL_TOLERANCE_PT = 1.0

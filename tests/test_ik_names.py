@@ -11,7 +11,7 @@ import sympy
 from ik_checks import random_joints, sample_constants
 from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
 
-from dhsym.io.library import load
+from dhsym import load
 
 IRB140 = RTB_XACRO / "abb_irb140_description/urdf/irb140.xacro"
 UR10 = EXAMPLE_ROBOT_DATA / "ur_description/urdf/ur10_robot.urdf"
@@ -206,7 +206,7 @@ def test_each_word_printed_is_defined_once_where_the_method_is_said(name):
 @pytest.mark.skipif(not UR10.exists(), reason="example-robot-data is not installed")
 @pytest.mark.parametrize("convention", ["standard", "modified"])
 def test_an_imported_ur10_says_the_same_words_as_the_ur5(convention):
-    from dhsym.io.urdfimport import import_urdf
+    from dhsym import import_urdf
 
     chain = import_urdf(UR10, None, "tool0", convention).robot
     _check("ur5", chain, chain.ik(), np.random.default_rng(10))
@@ -216,7 +216,7 @@ def test_an_imported_ur10_says_the_same_words_as_the_ur5(convention):
                     reason="rtb-data or xacro is not installed")
 @pytest.mark.parametrize("convention", ["standard", "modified"])
 def test_an_imported_irb140_with_its_shoulder_offset_has_every_word(convention):
-    from dhsym.io.urdfimport import import_urdf
+    from dhsym import import_urdf
 
     chain = import_urdf(IRB140, None, "tool0", convention).robot
     _check("irb140", chain, chain.ik(), np.random.default_rng(140))

@@ -12,9 +12,9 @@ import sympy
 from cli_runner import run_dhsym
 from ik_checks import check_branches_reach, check_json, import_module, random_joints, sample_constants, used_target
 
+from dhsym import Robot, load
 from dhsym.core.chain import Chain, DHRow
-from dhsym.core.robot import Robot
-from dhsym.io.library import ROBOTS_DIR, load
+from dhsym.io.library import ROBOTS_DIR
 
 PLANAR = """name: {name}
 convention: standard

@@ -15,7 +15,7 @@ from ik_checks import (
 )
 from test_ik_cli import HOST, _pdflatex
 
-from dhsym.io.library import load
+from dhsym import load
 from dhsym.printing.render import display_width
 
 ROBOTS = ["planar2r", "planar3r", "scara", "stanford", "puma560", "cylindrical_rpp", "spherical_wrist"]

@@ -9,7 +9,8 @@ import sympy
 from cli_runner import run_dhsym
 from test_ik_cli import HOST, _pdflatex
 
-from dhsym.io.library import builtin_names, load
+from dhsym import load
+from dhsym.io.library import builtin_names
 from dhsym.latex.ik import snippet
 from dhsym.printing.ik import text_printer
 from dhsym.printing.render import display_width

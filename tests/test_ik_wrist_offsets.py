@@ -10,7 +10,8 @@ import pytest
 from cli_runner import run_dhsym
 from ik_checks import check_branches_reach, check_json, random_joints, sample_constants
 
-from dhsym.io.library import ROBOTS_DIR, load
+from dhsym import load
+from dhsym.io.library import ROBOTS_DIR
 
 DATA = Path(__file__).parent / "data"
 OFFSETS = ["1", "0.3", "pi/7"]

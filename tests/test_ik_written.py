@@ -9,11 +9,11 @@ import pytest
 import sympy
 from ik_checks import check_branches_reach, check_json, import_module, numeric_fk, random_joints
 
+from dhsym import load
 from dhsym.core.numbers import decimal_text
 from dhsym.inverse.api import inverse_kinematics
 from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.written import Written, exact
-from dhsym.io.library import load
 
 UR5_IN_NUMBERS = """name: UR5 with its numbers in the table
 convention: standard

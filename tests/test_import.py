@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 import sympy
 from cli_runner import run_dhsym
+from readers import load_robot_file
 
+from dhsym import load
 from dhsym.errors import UserError
-from dhsym.io.library import load
-from dhsym.io.robotfile import load_robot_file
 from dhsym.io.urdf import MAX_URDF_BYTES
 from tests.urdf_builder import serial_urdf, urdf_fk
 
@@ -163,7 +163,7 @@ def test_a_default_namespace_is_read_as_none_as_ros_reads_it(tmp_path):
 
 
 def test_the_python_api_does_what_the_command_does(tmp_path):
-    from dhsym.io.urdfimport import import_urdf
+    from dhsym import import_urdf
 
     imported = import_urdf(DATA / "ur5.urdf", tip="tool0", convention="modified", variables="urdf")
     assert imported.joint_names[0] == "shoulder_pan_joint" and imported.robot.convention == "modified"
@@ -237,7 +237,7 @@ def test_a_mimic_joint_on_the_path_is_refused_and_says_why():
 
 def test_an_expanded_xacro_arm_has_the_kinematics_of_its_urdf():
     pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
-    from dhsym.io.urdfimport import import_urdf
+    from dhsym import import_urdf
     from dhsym.io.xacro import expand_xacro
 
     path = Path(__file__).parent / "bad_inputs" / "xacro_good_arm.xacro"

@@ -19,11 +19,10 @@ from hypothesis import strategies as st
 from strategies import length_drawer
 from test_inverse_robots import check_round_trip
 
-from dhsym import Chain, DHRow, Step
+from dhsym import Chain, DHRow, Robot, Step
 from dhsym.core.chain import DHRow as Row
 from dhsym.core.numbers import decimal_text
-from dhsym.core.robot import Robot
-from dhsym.geometry.convert import to_convention
+from dhsym.geometry.convert import convert_robot
 from dhsym.inverse.codegen import module_text
 from dhsym.inverse.quartic import Complex, ferrari, root, written_out
 from dhsym.inverse.solution import Branch, Solution
@@ -149,7 +148,7 @@ def general_arms(draw):
                                  [Step("Rx", sympy.pi), Step("Tz", sympy.Rational(1, 10))]]))
     plain = Chain(rows, "standard", base=base, tool=tool)
     used = {symbol: value for symbol, value in sample.items() if symbol in plain.symbols}
-    return to_convention(Robot(plain, name="random general arm", sample=used),
+    return convert_robot(Robot(plain, name="random general arm", sample=used),
                          draw(st.sampled_from(["standard", "modified"])))
 
 
@@ -238,7 +237,7 @@ def _coefficients(solution, poses):
 
 
 def _loaded(path):
-    from dhsym.io.library import load
+    from dhsym import load
 
     return load(str(path))
 
@@ -253,7 +252,7 @@ def test_a_general_arm_after_a_wrist_at_the_start_is_solved_from_the_end(convent
             Row.revolute(q[3], d=2 * tenth, a=lengths[1], alpha=sympy.pi / 4),
             Row.revolute(q[4], a=lengths[2], alpha=half), Row.revolute(q[5], d=lengths[3])]
     sample = {symbol: sympy.Rational(k + 3, 10) for k, symbol in enumerate(lengths)}
-    chain = to_convention(Robot(Chain(rows, "standard"), name="wrist first", sample=sample), convention)
+    chain = convert_robot(Robot(Chain(rows, "standard"), name="wrist first", sample=sample), convention)
     solution = solve(chain)
     assert "seen from the last frame gives q_4, q_5, q_6 as Pieper solved them: a quartic in tan(θ4/2)" \
         in solution.method

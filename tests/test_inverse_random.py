@@ -9,9 +9,8 @@ from hypothesis import strategies as st
 from strategies import length_drawer
 from test_inverse_robots import check_round_trip
 
-from dhsym import Chain, DHRow, Step
-from dhsym.core.robot import Robot
-from dhsym.geometry.convert import to_convention
+from dhsym import Chain, DHRow, Robot, Step
+from dhsym.geometry.convert import convert_robot
 from dhsym.inverse.solve import solve
 
 HALF = sympy.pi / 2
@@ -49,7 +48,7 @@ def pieper_arms(draw):
     plain = Chain(arm + wrist, "standard", base=base, tool=tool)
     used = {symbol: value for symbol, value in sample.items() if symbol in plain.symbols}  # drawn, maybe not chosen
     chain = Robot(plain, name=f"random {family} arm", sample=used)
-    return to_convention(chain, draw(st.sampled_from(["standard", "modified"])))
+    return convert_robot(chain, draw(st.sampled_from(["standard", "modified"])))
 
 
 @settings(max_examples=6)
@@ -69,7 +68,7 @@ def test_a_wrist_at_the_start_is_decoupled_too(convention, seed):
             DHRow.revolute(q[2], d=lengths[1], a=lengths[2], alpha=HALF), DHRow.revolute(q[3], a=lengths[3]),
             DHRow.revolute(q[4], a=lengths[4], alpha=HALF), DHRow.revolute(q[5], d=lengths[5])]
     sample = {symbol: sympy.Rational(k + 3, 10) for k, symbol in enumerate(lengths)}
-    chain = to_convention(Robot(Chain(rows, "standard"), name="wrist first", sample=sample), convention)
+    chain = convert_robot(Robot(Chain(rows, "standard"), name="wrist first", sample=sample), convention)
     solution = solve(chain)
     assert "joints 1, 2 and 3 meet at a point fixed in the base" in solution.method
     check_round_trip(chain, solution, random.Random(seed), trials=2)

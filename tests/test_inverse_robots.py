@@ -14,7 +14,7 @@ import sympy
 from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
 
 import dhsym
-from dhsym.core.robot import Robot
+from dhsym import Robot
 from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.solution import TARGET_NAMES
 from dhsym.inverse.solve import solve

@@ -22,10 +22,11 @@ from pathlib import Path
 
 import pytest
 from cli_runner import run_dhsym
+from readers import load_robot_text
 from robots import GREEK_PRISMATIC, TEN_JOINTS, TEST_ROBOTS
 
-from dhsym.io.library import builtin_names, load
-from dhsym.io.robotfile import load_robot_text
+from dhsym import load
+from dhsym.io.library import builtin_names
 from dhsym.latex import display
 from dhsym.latex import document as latexdoc
 from dhsym.latex import layout as texlayout

@@ -11,16 +11,16 @@ from pathlib import Path
 import pytest
 
 PACKAGE = Path(__file__).parent.parent / "dhsym"
-# Each layer may import the layers before it (and itself), never one after it.
-# `geometry` (frames from joint axes) is math on core that the robot-file reader uses for `axes:`.
+# Each layer may import the layers before it (and itself), never one after it, at module level or
+# inside a function. `geometry` (frames from joint axes) is math on core that the robot-file reader
+# uses for `axes:`; `api` is the notebook surface (dhsym.load, the notebook Robot, dhsym.show) above
+# every layer it calls, below the command line and the web page that use it. The package itself
+# (dhsym/__init__.py, names imported on first use) stands above them all.
 LAYERS = ["errors", "core", "geometry", "io", "velocity", "inverse", "dynamics", "printing", "latex", "plot",
-          "checking", "cli", "web"]
-# Conveniences reach up, lazily inside a method: Jupyter shows a chain or a robot as its DH
-# table, `.jacobian()` and `.ik()` hand over to the layers built on core, and the object
-# `.ik()` returns shows itself as text and LaTeX.
-ALLOWED_UPWARD = {("core.chain", "printing.render"), ("core.chain", "velocity.jacobian"),
-                  ("core.chain", "inverse.api"), ("core.robot", "printing.render"), ("core.robot", "velocity.jacobian"),
-                  ("core.robot", "inverse.api"), ("inverse.api", "latex.ik"), ("inverse.api", "printing.ik")}
+          "checking", "api", "cli", "web"]
+# Upward imports still allowed, as (importer, imported) without the `dhsym.` prefix: inverse/api.py's
+# printing, until the inverse side's rebuild (issue 25) moves it up to api/ik.py; then none.
+ALLOWED_UPWARD = {("inverse.api", "latex.ik"), ("inverse.api", "printing.ik")}
 
 
 def _modules():
@@ -30,41 +30,47 @@ def _modules():
 
 
 def _imports(name: str, path: Path):
-    """(imported module relative to dhsym, imported names, at module level?) for each relative import."""
+    """(imported module relative to dhsym, imported names) for each relative import, anywhere in the file."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
-    top_level = {id(node) for node in tree.body}
     parts = [part for part in name.split(".") if part]
     package = parts if path.name == "__init__.py" else parts[:-1]
     for node in ast.walk(tree):
         if isinstance(node, ast.ImportFrom) and node.level:
             base = package[:len(package) - (node.level - 1)] if node.level > 1 else package
-            target = ".".join(base + ([node.module] if node.module else []))
-            yield target, [alias.name for alias in node.names], id(node) in top_level
+            yield ".".join(base + ([node.module] if node.module else [])), [alias.name for alias in node.names]
 
 
 def _layer(module: str) -> int:
-    """The position of the most specific layer that holds `module`."""
-    if not module:
+    """The position of the layer that holds `module` (a full name, `dhsym.latex.velocity`); the
+    package `dhsym` itself is above every layer."""
+    parts = module.split(".")[1:]
+    if not parts:
         return len(LAYERS)
-    parts = module.split(".")
-    return next(LAYERS.index(".".join(parts[:k])) for k in range(len(parts), 0, -1) if ".".join(parts[:k]) in LAYERS)
+    return LAYERS.index(parts[0])
+
+
+def test_every_subpackage_is_a_layer():
+    assert sorted(p.name for p in PACKAGE.iterdir() if (p / "__init__.py").exists()) == \
+        sorted(layer for layer in LAYERS if (PACKAGE / layer).is_dir())
+    assert sorted(p.stem for p in PACKAGE.glob("*.py") if p.stem != "__init__") == \
+        sorted(layer for layer in LAYERS if not (PACKAGE / layer).is_dir())
+
+
+def upward_imports() -> list[str]:
+    """Every import (module level or inside a function, relative or absolute) of a layer above."""
+    return sorted(f"{low} imports {high}" for low, targets in _import_graph().items() for high in targets
+                  if _layer(high) > _layer(low)
+                  and (low.removeprefix("dhsym."), high.removeprefix("dhsym.")) not in ALLOWED_UPWARD)
 
 
 def test_layers_import_one_way():
-    upward = []
-    for name, path in _modules():
-        for target, names, _ in _imports(name, path):
-            for imported in ([f"{target}.{n}" for n in names] if _layer(target) == len(LAYERS) else [target]):
-                if name and _layer(imported) > _layer(name) and (name, imported) not in ALLOWED_UPWARD:
-                    upward.append(f"{name} imports {imported}")
-    assert upward == []
+    assert upward_imports() == []
 
 
 def test_no_module_imports_a_private_name_of_another():
-    private = [f"{name} imports {target}.{n}" for name, path in _modules() for target, names, _ in _imports(name, path)
+    private = [f"{name} imports {target}.{n}" for name, path in _modules() for target, names in _imports(name, path)
                for n in names if n.startswith("_")]
     assert private == []
-
 
 
 def _module_names() -> dict[str, Path]:
@@ -147,12 +153,10 @@ def test_cycles_are_found():
 
 
 def test_no_import_cycle():
+    """Not even through an import inside a function, nor through an upward one still allowed."""
     graph = _import_graph()
-    assert graph["dhsym.latex.velocity"] >= {"dhsym.latex.layout", "dhsym.velocity.jacobian"}  # the graph is read
-    # A convenience method reaching up (ALLOWED_UPWARD) runs only on an object of a module that has
-    # finished importing, so the order of first calls cannot break it; every other edge counts.
-    for low, high in ALLOWED_UPWARD:
-        graph[f"dhsym.{low}"].discard(f"dhsym.{high}")
+    assert graph["dhsym.latex.velocity"] >= {"dhsym.latex.layout", "dhsym.velocity"}  # the graph is read
+    assert graph["dhsym.api.robot"] >= {"dhsym.velocity.jacobian"}  # imports inside functions count
     assert [" -> ".join(cycle) for cycle in _cycles(graph)] == []
 
 
@@ -175,6 +179,19 @@ def test_every_module_imports_on_its_own():
 def test_modules_stay_small():
     sizes = {name: len(path.read_text(encoding="utf-8").splitlines()) for name, path in _modules()}
     assert {name: size for name, size in sizes.items() if size > 400} == {}
+
+
+# Functions still over 50 lines, in the solver the inverse side's rebuild (issue 25) splits: none after it.
+LONG_FUNCTIONS = {"inverse.pieper.pieper", "inverse.scan._best", "inverse.scan._apply",
+                  "inverse.equations.transform_equations", "inverse.solve._derive", "inverse.codegen.module_text"}
+
+
+def test_functions_stay_short():
+    """No function (docstring and doctest included) over 50 lines, outside the few still listed."""
+    lengths = {f"{name}.{node.name}": node.end_lineno - node.lineno + 1 for name, path in _modules()
+               for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
+               if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))}
+    assert {name: size for name, size in lengths.items() if size > 50 and name not in LONG_FUNCTIONS} == {}
 
 
 @pytest.mark.parametrize("command", [["fk", "puma560"], ["table", "ur5"], ["links", "planar3r"],

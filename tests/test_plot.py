@@ -8,10 +8,10 @@ import sympy
 from matplotlib.colors import to_rgb
 from matplotlib.figure import Figure
 
-from dhsym import Chain, DHRow, plot
+from dhsym import Chain, DHRow, Robot, load, plot
 from dhsym.cli import main
 from dhsym.errors import UserError
-from dhsym.io.library import ROBOTS_DIR, load
+from dhsym.io.library import ROBOTS_DIR
 
 matplotlib.use("Agg")
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -42,7 +42,7 @@ def test_every_pose_equals_the_symbolic_transform(name):
 
 def test_missing_and_unknown_symbols_are_user_errors():
     a_1, l_1, theta_1 = sympy.symbols("a_1 l_1 theta_1", real=True)
-    arm = Chain([DHRow.revolute(theta_1, a=a_1)], "standard")  # a chain has no sample values
+    arm = Robot(Chain([DHRow.revolute(theta_1, a=a_1)], "standard"))  # a robot without a file has no sample values
     assert plot.frame_poses(arm, {"a_1": 2})[-1][1][0, 3] == pytest.approx(2)  # joint variable defaults to 0
     with pytest.raises(UserError, match="no value for a_1"):
         plot.frame_poses(arm, {theta_1: 1})
@@ -157,7 +157,7 @@ def test_cli_refuses_to_overwrite_the_robot_file(tmp_path, capsys):
 def test_frame_offset_renumbers_the_picture_only():
     from matplotlib.figure import Figure
 
-    from dhsym.io.library import load
+    from dhsym import load
     renumbered = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=3)
     plain = plot.draw(load("spherical_wrist"), ax=Figure(), frame_offset=0)
     by_the_robot_file = plot.draw(load("spherical_wrist"), ax=Figure())  # first_frame: 3

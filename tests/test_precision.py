@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 from cli_runner import run_dhsym
+from readers import load_robot_file
 
-from dhsym.io.robotfile import load_robot_file
 from dhsym.io.urdf import read_urdf_text
 from tests.urdf_builder import serial_urdf, urdf_fk
 

@@ -2,7 +2,7 @@
 import pytest
 import sympy
 
-from dhsym.io.library import load
+from dhsym import load
 from dhsym.printing.printers import LatexPrinter, TextPrinter
 from dhsym.printing.render import latex_matrix, latex_table, text_legend, text_matrix, text_table, transform_title
 
@@ -150,15 +150,15 @@ def test_an_offset_stays_in_the_angle_as_written():
 
 
 def test_a_multiple_of_half_pi_folds_into_the_notation():
-    from dhsym import Chain, DHRow
-    from dhsym.printing.printers import chain_settings
+    from dhsym import Chain, DHRow, Robot
+    from dhsym.printing.printers import printer_settings
     arm = Chain([DHRow.revolute(t[0]), DHRow.revolute(t[1] - sympy.pi / 2), DHRow.revolute(t[2] + sympy.pi / 6)],
                 "standard")
-    assert chain_settings(arm)["offsets"] == {t[2]: sympy.pi / 6}
-    printer = TextPrinter(chain_settings(arm))
+    assert printer_settings(arm)["offsets"] == {t[2]: sympy.pi / 6}
+    printer = TextPrinter(printer_settings(arm))
     assert printer.doprint(arm.fk()[0, 0]) == "s123"  # cos(θ1 + θ2 − π/2 + θ3 + π/6)
     assert text_legend(printer) == "where s123 = sin(θ1 + θ2 + θ3 + π/6)"
-    table = text_table(arm)
+    table = text_table(Robot(arm))
     assert "θ2* − π/2" in table and "θ3* + π/6" in table
 
 
@@ -215,7 +215,7 @@ def test_an_ik_printer_prints_the_same_whatever_it_printed_before():
     value = sympy.Rational(17, 40) * px
 
     def printed(read_back_first: bool) -> tuple:
-        printer = text_printer(load("planar2r").chain)
+        printer = text_printer(load("planar2r"))
         printer.numbers = WrittenNumbers(places=3, values=frozenset({sympy.Rational(17, 40)}), folded=True)
         with printer.numbers_read_back():
             read = printer.doprint(value) if read_back_first else None

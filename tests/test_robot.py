@@ -8,14 +8,16 @@ import pytest
 import sympy
 from cli_runner import run_dhsym
 from hypothesis import HealthCheck, given, settings
+from readers import load_robot_text
 from strategies import robots
 
 import dhsym
-from dhsym.core.robot import Robot
+from dhsym import Robot
+from dhsym.api.robot import notebook_robot
 from dhsym.errors import UserError
-from dhsym.geometry.convert import to_convention
-from dhsym.io.robotfile import load_robot_text
+from dhsym.geometry.convert import convert_robot
 from dhsym.io.robotwriter import robot_yaml
+from dhsym.velocity.jacobian import jacobian
 
 # A wrist numbered 3..6 with a base and a tool: both kinds of renumbering at once.
 MOUNTED_WRIST = """\
@@ -53,7 +55,7 @@ def test_a_wrist_takes_and_gives_its_printed_frame_numbers():
     assert wrist.transform(3, 6) == wrist.fk() == wrist.chain.transform(0, 3)
     assert wrist.transform("4", 6) == wrist.transform(4, 6) == wrist.chain.transform(1, 3)  # int and str agree
     assert wrist.link(5) == wrist.chain.link(2) and len(wrist.links()) == 3
-    assert wrist.jacobian(frame=3) == wrist.chain.jacobian(frame=0)
+    assert wrist.jacobian(frame=3) == jacobian(wrist.chain, frame=0)
     with pytest.raises(UserError, match="^no frame 0 in this robot; frames are 3, 4, 5, 6$"):
         wrist.transform(0, 3)
     with pytest.raises(UserError, match="^no joint 1 in this robot; joints are 4..6$"):
@@ -102,7 +104,7 @@ def test_fk_of_a_robot_is_its_chain_s_with_frames_renumbered(robot):
 def test_read_convert_write_read_keeps_every_field(robot):
     read = load_robot_text(robot_yaml(robot), "drawn.yaml")  # the robot as a file gives it
     other = "modified" if read.convention == "standard" else "standard"
-    converted = to_convention(read, other)
+    converted = notebook_robot(convert_robot(read, other))
     assert converted.file == read.file == "drawn.yaml" and converted.warnings == read.warnings
     again = load_robot_text(robot_yaml(converted), "again.yaml")
     for field in ("name", "source", "notes", "sample", "frame_offset", "numbers", "joint_variables"):
@@ -215,9 +217,24 @@ def test_a_transform_too_large_is_refused_with_the_printed_numbers():
         robot.transform(15, 3)
 
 
-def test_velocity_functions_take_and_give_printed_numbers():
+def test_velocity_methods_take_and_give_printed_numbers():
     wrist = dhsym.load("spherical_wrist")
-    result = dhsym.velocity.determinant(wrist, frame=4)
-    assert [s.meaning for s in dhsym.velocity.singularities(wrist, result)] == ["axes 4 and 6 line up"]
-    assert [step.frame for step in dhsym.velocity.propagate(wrist)] == [3, 4, 5, 6]
-    assert dhsym.velocity.jacobian(wrist, 4, 6) == wrist.chain.jacobian(1, 3)
+    result = wrist.determinant(frame=4)
+    assert [s.meaning for s in wrist.singularities(result)] == ["axes 4 and 6 line up"]
+    assert [step.frame for step in wrist.propagate()] == [3, 4, 5, 6]
+    assert wrist.jacobian(4, 6) == dhsym.velocity.jacobian(wrist.chain, 1, 3)
+
+
+def test_the_layers_below_take_a_plain_chain_and_refuse_a_robot():
+    """Inside dhsym one numbering counts: frames 0..n of a plain chain. A robot handed to a function
+    that expects one is a TypeError at once, never a silent renumbering."""
+    from dhsym.geometry.screws import screw_axes
+    from dhsym.velocity import determinant, jacobian, propagate, singularities
+
+    wrist = dhsym.load("spherical_wrist")
+    calls = [lambda: jacobian(wrist), lambda: determinant(wrist), lambda: propagate(wrist),
+             lambda: singularities(wrist, wrist.determinant()), lambda: screw_axes(wrist)]
+    for call in calls:
+        with pytest.raises(TypeError, match=r"^a plain Chain \(frames 0..n\) is needed here, not Robot"):
+            call()
+    assert [step.frame for step in propagate(wrist.chain)] == [0, 1, 2, 3]

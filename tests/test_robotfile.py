@@ -1,10 +1,10 @@
 """Robot files: every field of the documented form, expressions, and located errors."""
 import pytest
 import sympy
+from readers import load_robot_text
 
-from dhsym import UserError, parse_expression, real_symbol
-from dhsym.io.library import builtin_names, load
-from dhsym.io.robotfile import load_robot_text
+from dhsym import UserError, load, parse_expression, real_symbol
+from dhsym.io.library import builtin_names
 
 PUMA_TEXT = """\
 name: PUMA 560

@@ -10,8 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from cli_runner import run_dhsym
-
-from dhsym.io.robotfile import load_robot_file
+from readers import load_robot_file
 
 xacro = pytest.importorskip("xacro", reason="the xacro package expands .xacro files (requirements-dev.txt)")
 yourdfpy = pytest.importorskip("yourdfpy", reason="yourdfpy computes the URDF's own kinematics (requirements-dev.txt)")

@@ -7,13 +7,14 @@ import re
 
 import sympy
 from cli_runner import run_dhsym
+from readers import load_robot_text
 from robots import NUMBERED_WRIST as WRIST
 
+from dhsym import load
+from dhsym.api import show as display
 from dhsym.core.chain import Chain, DHRow
-from dhsym.io.library import load
-from dhsym.io.robotfile import load_robot_text
-from dhsym.latex import display, layout
 from dhsym.latex import document as latexdoc
+from dhsym.latex import layout
 from dhsym.latex.prose import tex_prose
 from dhsym.latex.results import ARTICLE_TEXT_WIDTH_PT
 from dhsym.latex.width import math_width

@@ -15,8 +15,8 @@ import pytest
 from cli_runner import run_dhsym
 from packages import EXAMPLE_ROBOT_DATA as ERD
 from packages import RTB_XACRO as RTB
+from readers import load_robot_file
 
-from dhsym.io.robotfile import load_robot_file
 from dhsym.io.urdfimport import import_urdf
 
 yourdfpy = pytest.importorskip("yourdfpy", reason="yourdfpy computes the URDF's own kinematics (requirements-dev.txt)")

@@ -10,9 +10,8 @@ import pytest
 import sympy
 from cli_runner import run_dhsym as run
 
-from dhsym import Chain, DHRow
+from dhsym import Chain, DHRow, load
 from dhsym.checking.verify import check, numeric_error
-from dhsym.io.library import load
 from dhsym.latex.document import document
 from dhsym.velocity import determinant, jacobian
 
