@@ -28,6 +28,8 @@ from dhsym.io.yamlsafe import MAX_FILE_BYTES, MAX_YAML_NODES
 
 CORPUS = Path(__file__).parent / "bad_inputs"
 CASES = sorted(path.stem for path in CORPUS.glob("*.expected"))
+# seconds each: a macro that doubles to its bound, 3,000 tool steps multiplied out
+SLOW_CASES = ["cli_fk_3000_tool_steps", "xacro_doubling_macro"]
 THROUGH_SUBPROCESS = ["yaml_python_object_apply", "expr_import", "warn_twist_90"]
 CANARY = "CANARY"
 
@@ -75,12 +77,14 @@ def test_the_corpus_is_big_and_complete():
     assert sum(CANARY in path.read_bytes().decode("utf-8", "replace") for path in inputs) >= 12
 
 
-@pytest.mark.parametrize("name", CASES)
+@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.slow) if name in SLOW_CASES else name
+                                  for name in CASES])
 def test_case_in_process(name, workdir):
     check_outcome(name, *run_dhsym(*command_line(name), cwd=workdir))
     assert not (workdir / CANARY).exists()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", THROUGH_SUBPROCESS)
 def test_case_through_subprocess(name, workdir):
     check_outcome(name, *run_dhsym_process(*command_line(name), cwd=workdir))
@@ -94,6 +98,7 @@ def test_a_file_over_the_size_limit_is_refused_without_reading_it_all(tmp_path, 
         2, "", "dhsym: error: huge.yaml:1:1: file is larger than 1 MiB, the limit for robot files\n")
 
 
+@pytest.mark.slow
 def test_too_many_yaml_values_are_refused(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     Path("wide.yaml").write_text("convention: standard\nnotes: [" + "1, " * MAX_YAML_NODES + "1]\n")
@@ -120,6 +125,7 @@ def test_a_closed_pipe_is_one_error_line():
     assert stderr.startswith("dhsym: error: standard output was closed by its reader") and stderr.count("\n") == 1
 
 
+@pytest.mark.slow
 def test_an_ascii_terminal_gets_advice_not_a_traceback():
     result = run_dhsym_process("fk", "planar2r", env={"PYTHONIOENCODING": "ascii"})
     assert result.status == 2 and result.stdout == ""
@@ -175,6 +181,7 @@ def test_a_missing_folder_is_a_user_error(tmp_path):
 needs_fifo = pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="named pipes need a POSIX system")
 
 
+@pytest.mark.slow
 @needs_fifo
 def test_a_named_pipe_nobody_writes_is_refused_at_once_not_waited_for(tmp_path):
     os.mkfifo(tmp_path / "robot.yaml")
@@ -184,6 +191,7 @@ def test_a_named_pipe_nobody_writes_is_refused_at_once_not_waited_for(tmp_path):
     assert result.stderr.count("\n") == 1 and "- to read standard input" in result.stderr
 
 
+@pytest.mark.slow
 @needs_fifo
 def test_a_named_pipe_nobody_reads_is_refused_as_output_and_no_file_appears(tmp_path):
     os.mkfifo(tmp_path / "T.tex")
@@ -206,6 +214,7 @@ def test_a_named_pipe_with_a_reader_gets_the_output(tmp_path):
     assert reader.communicate(timeout=120)[0] == "written through the pipe"
 
 
+@pytest.mark.slow
 def test_a_socket_is_neither_a_robot_file_nor_an_output(tmp_path, monkeypatch):
     socket = pytest.importorskip("socket")
     if not hasattr(socket, "AF_UNIX"):
@@ -222,6 +231,7 @@ def test_a_socket_is_neither_a_robot_file_nor_an_output(tmp_path, monkeypatch):
         server.close()
 
 
+@pytest.mark.slow
 def test_devices_and_standard_input_still_work(tmp_path):
     robot = (Path(__file__).parents[1] / "dhsym" / "robots" / "planar2r.yaml").read_text(encoding="utf-8")
     assert run_dhsym_process("latex", "planar2r", "-o", os.devnull, cwd=tmp_path).status == 0

@@ -54,6 +54,7 @@ def test_the_work_limit_is_a_size_not_a_time(monkeypatch):
         chain.fk()
 
 
+@pytest.mark.slow
 def test_whether_a_determinant_is_factored_is_decided_by_counting_terms(monkeypatch):
     """The UR5's determinant in frame 4, where J is shortest, has at most 336 terms written out
     (Leibniz's formula), in either convention."""

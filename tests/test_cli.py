@@ -52,6 +52,7 @@ def robot_file(tmp_path):
     return write
 
 
+@pytest.mark.slow
 def test_demo_output():
     result = run_dhsym_process("fk", "puma560")
     assert result.status == 0 and result.stderr == ""
@@ -123,6 +124,7 @@ def test_links_and_table():
     assert "d3*" in table and "π" in table
 
 
+@pytest.mark.slow
 def test_same_output_under_any_hash_seed():
     outputs = {run_dhsym_process("fk", "puma560", env={"PYTHONHASHSEED": seed}).stdout for seed in ("0", "1", "12345")}
     assert len(outputs) == 1
@@ -149,6 +151,7 @@ def test_decimals_print_as_decimals_everywhere(robot_file):
     assert json.loads(run("table", path, "--format", "json").stdout)["rows"][0]["d"] == "0.089159"
 
 
+@pytest.mark.slow
 def test_a_factored_determinant_keeps_the_decimals_as_written(robot_file):
     text = run("jacobian", robot_file(UR5_PUBLISHED)).stdout
     assert "det J = −0.16670625 s3 s5(0.425 c2 + 0.39225 c23 − 0.09465 s234)\n" in text
@@ -234,6 +237,7 @@ def test_a_long_element_breaks_before_a_top_level_sign_with_a_hanging_indent():
         "        − s1{c3(c5 s7 + s5 c6 c7) + s3[c4(c5 c6 c7 − s5 s7) + s4 s6 c7]}"]
 
 
+@pytest.mark.slow
 def test_the_textbook_forms_print_unchanged_at_the_default_width():
     text = run_dhsym_process("fk", "puma560", env={"COLUMNS": ""}).stdout  # no terminal, no COLUMNS: 100
     assert "r11 = c1[c23(c4 c5 c6 − s4 s6) − s23 s5 c6] + s1(c4 s6 + s4 c5 c6)\n" in text
@@ -255,6 +259,7 @@ def test_ascii_modified_tables_keep_i_minus_1():
 
 # --- standard input, limits and faults that are not bugs ----------------------------------------
 
+@pytest.mark.slow
 def test_every_robot_command_reads_the_robot_file_from_standard_input(robot_file, tmp_path):
     path = robot_file(OFFSET_ARM)
     for command in (["fk"], ["links"], ["table"], ["latex", "--document", "snippet"]):
@@ -268,6 +273,7 @@ def test_every_robot_command_reads_the_robot_file_from_standard_input(robot_file
                              "did you mean pi/2?\n")
 
 
+@pytest.mark.slow
 def test_the_ur5_determinant_does_not_depend_on_the_machine():
     """Factored or not is decided by counting terms, not by a time budget (it used to say "not
     computed" on a loaded machine)."""
@@ -287,6 +293,7 @@ def test_a_result_too_large_to_print_is_refused_within_seconds(robot_file):
     assert run("fk", path, "--from", "0", "--to", "3").status == 0
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not (os.path.exists("/dev/full") and stat.S_ISCHR(os.stat("/dev/full").st_mode)),
                     reason="needs /dev/full")
 def test_a_full_disk_is_an_error_not_a_bug():
@@ -301,6 +308,7 @@ def test_a_full_disk_is_an_error_not_a_bug():
     assert stat.S_ISCHR(os.stat("/dev/full").st_mode)  # written to, never replaced by a regular file
 
 
+@pytest.mark.slow
 def test_a_closed_standard_output_or_pipe_is_not_a_bug():
     closed = run_dhsym_process("fk", "puma560", stdout=subprocess.DEVNULL, close_fds=True,
                                preexec_fn=lambda: os.close(1))
@@ -319,6 +327,7 @@ PAUSED_WRITE = ("import os, sys, time; sync = os.fsync; os.fsync = lambda fd: (t
                 "from dhsym.cli.__main__ import run; run()")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("signal_name, old", [("SIGTERM", None), ("SIGHUP", "old contents\n"), ("SIGINT", None)])
 def test_a_signal_during_an_output_write_leaves_no_temporary_file(tmp_path, signal_name, old):
     """Stopped by SIGTERM or SIGHUP (kill, a closed terminal) as by Ctrl-C: the old file or none,

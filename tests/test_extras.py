@@ -11,6 +11,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow  # a fresh pip install per extra: seconds to minutes per test
+
 OPTIONAL = ("matplotlib", "numpy", "lxml", "xacro")
 DATA = Path(__file__).parent / "data"
 

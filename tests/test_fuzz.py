@@ -26,6 +26,8 @@ from dhsym.io.robotfile import ROW_KEYS, TOP_KEYS
 from dhsym.printing.notation import written_offsets
 from dhsym.printing.printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
 
+pytestmark = pytest.mark.slow  # fuzzing: seconds to minutes per test
+
 EXAMPLE_SECONDS = 5.0  # generous: a hang is what we look for, not a slow machine
 FUZZ = settings(deadline=None, database=None, suppress_health_check=list(HealthCheck))
 EXPRESSIONS, EXPRESSION_GARBAGE, ROBOTS, ROBOT_GARBAGE = 900, 700, 700, 300  # 2,600 inputs per run, and SLIPS

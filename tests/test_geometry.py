@@ -145,6 +145,7 @@ def poe_fk(axes, tool, values) -> np.ndarray:
     return np.array(product_of_exponentials(screws, values).evalf(), dtype=float)
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(axes_strategy, points, st.sampled_from(range(len(UNIT_DIRECTIONS))), st.sampled_from(["standard", "modified"]))
 def test_random_axes_to_table_keep_the_kinematics(specs, tool_point, tool_direction, convention):
@@ -168,6 +169,7 @@ lengths = st.sampled_from([0, 0, sympy.Rational(1, 2), sympy.Rational(-2, 5), 1]
 rows_strategy = st.lists(st.tuples(st.sampled_from("RP"), angles, lengths, lengths, angles), min_size=1, max_size=4)
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(rows_strategy, st.sampled_from(["standard", "modified"]), st.sampled_from(["standard", "modified"]))
 def test_random_tables_through_their_axes_reproduce_the_kinematics(specs, convention, target):

@@ -58,6 +58,7 @@ def test_puma_text_fits_every_width_and_names_its_eight_branches(by_hand, width)
     assert "s23 = sin(θ2 + θ3)" in words
 
 
+@pytest.mark.slow
 def test_puma_json_and_module_reach_random_poses_with_all_eight_branches(by_hand, tmp_path):
     chain = load("puma560")
     _, out, _ = run_dhsym("ik", "puma560", "--format", "json")
@@ -164,6 +165,7 @@ def _pdflatex(folder, job: str, text: str):
     return result.returncode, errors + overfull
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
 @pytest.mark.parametrize("kind", ["slides", "article", "snippet", "ik"])
 @pytest.mark.parametrize("robot", BY_HAND)

@@ -18,6 +18,8 @@ from test_ik_cli import HOST, _pdflatex
 from dhsym import load
 from dhsym.printing.render import display_width
 
+pytestmark = pytest.mark.slow  # real robots solved in closed form: seconds to minutes per test
+
 ROBOTS = ["planar2r", "planar3r", "scara", "stanford", "puma560", "cylindrical_rpp", "spherical_wrist"]
 _CHAINS: dict = {}
 

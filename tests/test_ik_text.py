@@ -15,6 +15,8 @@ from dhsym.latex.ik import snippet
 from dhsym.printing.ik import text_printer
 from dhsym.printing.render import display_width
 
+pytestmark = pytest.mark.slow  # real robots solved in closed form: seconds to minutes per test
+
 ROBOTS = builtin_names()
 FREE = {"iiwa7": ["theta_3"]}  # seven joints: one is a parameter
 _SOLVED: dict = {}

@@ -50,6 +50,7 @@ def solved(text: str, tmp_path_factory):
     return _SOLVED[text]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("text", [UR5_IN_NUMBERS, DECIMAL_ARM], ids=["ur5", "decimal arm"])
 def test_text_latex_and_python_write_the_decimals_of_the_file(text, tmp_path_factory):
     chain, result = solved(text, tmp_path_factory)
@@ -72,6 +73,7 @@ def test_the_ur5_in_numbers_reads_like_the_ur5_in_names(tmp_path_factory):
     assert "0.0146755714 r33" in printed  # 2 d1 d6 r33, the file's rule: a product of two decimals is a decimal
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("text", [UR5_IN_NUMBERS, DECIMAL_ARM], ids=["ur5", "decimal arm"])
 def test_json_reads_back_equal_to_the_exact_solution(text, tmp_path_factory):
     chain, result = solved(text, tmp_path_factory)
@@ -104,6 +106,7 @@ def test_every_branch_still_reaches_fk(text, tmp_path_factory, tmp_path):
     check_branches_reach(result.evaluate, chain, {}, joints)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("robot", ["puma560", "ur5", "planar2r"])
 def test_evaluate_is_the_generated_module_with_nan_where_a_branch_does_not_exist(robot, tmp_path):
     chain = load(robot)

@@ -3,6 +3,7 @@ cylindrical arm), in either convention, with prismatic joints, joint offsets, ba
 lengths as symbols or as decimals: every real branch reaches the pose and one branch is q."""
 import random
 
+import pytest
 import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -12,6 +13,8 @@ from test_inverse_robots import check_round_trip
 from dhsym import Chain, DHRow, Robot, Step
 from dhsym.geometry.convert import convert_robot
 from dhsym.inverse.solve import solve
+
+pytestmark = pytest.mark.slow  # random arms solved in closed form: seconds to minutes per test
 
 HALF = sympy.pi / 2
 

@@ -19,6 +19,8 @@ from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.solution import TARGET_NAMES
 from dhsym.inverse.solve import solve
 
+pytestmark = pytest.mark.slow  # real robots solved in closed form: seconds to minutes per test
+
 ROBOTS = ["planar2r", "planar3r", "pratihar_2r", "scara", "scara_spong", "cylindrical_rpp", "cylindrical_wrist",
           "spherical_wrist", "spherical_wrist_spong", "stanford", "puma560", "spatial3r", "inline6",
           "asokan_dh_example", "ur5"]

@@ -205,6 +205,7 @@ def _problems(log: str) -> list[str]:
     return errors + overfull
 
 
+@pytest.mark.slow
 @needs_tex
 @pytest.mark.parametrize("variant", VARIANTS)
 @pytest.mark.parametrize("name", ROBOTS)
@@ -214,6 +215,7 @@ def test_every_robot_compiles_and_fits(compiled, name, variant):
     assert _problems(log) == []
 
 
+@pytest.mark.slow
 @needs_tex
 def test_notebook_displays_compile_and_fit_the_notebook_line(compiled):
     status, log, _ = compiled["notebook-displays"]
@@ -221,6 +223,7 @@ def test_notebook_displays_compile_and_fit_the_notebook_line(compiled):
     assert _problems(log) == []
 
 
+@pytest.mark.slow
 @needs_tex
 def test_inverse_slides_compile(compiled):
     status, log, _ = compiled["puma560-inverse-slides"]
@@ -228,6 +231,7 @@ def test_inverse_slides_compile(compiled):
     assert _problems(log) == []
 
 
+@pytest.mark.slow
 @needs_tex
 def test_width_estimate_matches_tex(compiled):
     """The layout rules rely on it: never more than 2 % short of TeX's width, at most 15 % over."""
@@ -242,6 +246,7 @@ def test_width_estimate_matches_tex(compiled):
             assert 0.98 <= ratio <= 1.15, (element, ratio)
 
 
+@pytest.mark.slow
 @needs_tex
 @pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm (poppler-utils) is not installed")
 @pytest.mark.parametrize("job", RENDERED)

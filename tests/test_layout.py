@@ -194,6 +194,7 @@ def test_functions_stay_short():
     assert {name: size for name, size in lengths.items() if size > 50 and name not in LONG_FUNCTIONS} == {}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("command", [["fk", "puma560"], ["table", "ur5"], ["links", "planar3r"],
                                      ["latex", "planar2r", "--document", "snippet"], ["list"]])
 def test_commands_without_pictures_import_no_numpy(command):
@@ -204,6 +205,7 @@ def test_commands_without_pictures_import_no_numpy(command):
     assert result.stdout.split("\n")[0] == "0 []", result.stderr
 
 
+@pytest.mark.slow
 def test_a_plain_pip_install_works_from_another_folder(tmp_path):
     """The wheel must hold every subpackage and the robot files (a flat `packages = [...]` once dropped them).
 

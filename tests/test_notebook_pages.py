@@ -19,6 +19,8 @@ from pathlib import Path
 import pytest
 from notebook_runs import NOTEBOOKS, ROOT, executed, exporter
 
+pytestmark = pytest.mark.slow  # the notebook pages in a browser: seconds to minutes per test
+
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync"]

@@ -6,6 +6,8 @@ import json
 import pytest
 from notebook_runs import NOTEBOOKS
 
+pytestmark = pytest.mark.slow  # every notebook run: seconds to minutes per test
+
 
 def test_there_are_notebooks():
     assert len(NOTEBOOKS) >= 6

@@ -35,6 +35,7 @@ def _largest_difference(a, b) -> float:
     return max(abs(x - y) for row_a, row_b in zip(a, b) for x, y in zip(row_a, row_b))
 
 
+@pytest.mark.slow
 @given(chains(), st.data())
 def test_every_frame_is_the_exact_product_evaluated(chain, data):
     values = _values(chain, data)
@@ -46,6 +47,7 @@ def test_every_frame_is_the_exact_product_evaluated(chain, data):
         assert _largest_difference(pose, _floats(exact)) < 1e-9, frame
 
 
+@pytest.mark.slow
 @given(chains(), st.data())
 def test_the_end_pose_is_the_forward_kinematics(chain, data):
     values = _values(chain, data)

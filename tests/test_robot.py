@@ -168,6 +168,7 @@ def test_a_robot_with_base_and_tool_numbers_the_frames_between(capsys, mounted):
     assert [line.split()[0] for line in out.splitlines()[-3:]] == ["4", "5", "6"]
 
 
+@pytest.mark.slow
 def test_check_and_too_large_advice_use_the_printed_numbers(capsys, tmp_path):
     rows = "\n".join(f"  - {{joint: R, alpha: alpha_{k}, a: a_{k}, d: d_{k}, theta: theta_{k}}}" for k in range(4, 14))
     path = tmp_path / "long.yaml"

@@ -1,10 +1,13 @@
 """The simplified result always equals the raw product: random chains, algebra and numbers."""
+import pytest
 import sympy
 from hypothesis import given
 from hypothesis import strategies as st
 
 from dhsym import Chain, DHRow, Step
 from dhsym.checking.verify import algebraically_equal, numeric_error
+
+pytestmark = pytest.mark.slow  # property tests drawing many random chains: seconds to minutes per test
 
 PI = sympy.pi
 TWISTS = [0, PI / 2, -PI / 2, PI, PI / 3, -PI / 4, "symbol"]
@@ -55,6 +58,7 @@ def test_simplified_equals_raw_algebraically(chain, data):
     assert all(algebraically_equal(x, y) for x, y in zip(simplified, raw))
 
 
+@pytest.mark.slow
 @given(chains(max_links=3), st.data())
 def test_transform_times_its_inverse_is_identity(chain, data):
     i, j = _frames(chain, data.draw)

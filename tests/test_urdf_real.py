@@ -19,6 +19,8 @@ from readers import load_robot_file
 
 from dhsym.io.urdfimport import import_urdf
 
+pytestmark = pytest.mark.slow  # real robots' URDFs, closed-form solutions: seconds to minutes per test
+
 yourdfpy = pytest.importorskip("yourdfpy", reason="yourdfpy computes the URDF's own kinematics (requirements-dev.txt)")
 
 

@@ -42,6 +42,7 @@ def reference_jacobian(chain, frame, point):
 SMALL = [name for name in builtin_names() if load(name).n <= 4]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", builtin_names())
 def test_every_frame_matches_the_raw_product_numerically(name):
     chain = load(name)
@@ -148,6 +149,7 @@ def test_velocity_propagation_ends_in_the_same_jacobian(name):
     assert verdict.numeric and (verdict.algebraic or chain.n > 4)
 
 
+@pytest.mark.slow
 def test_the_ur5_determinant_factors_without_a_wrist_centre():
     """UR5: joints 2, 3, 4 parallel and no wrist centre; the textbook's a2 a3 s3 s5 (a2 c2 + a3 c23 + d5 s234)."""
     ur5 = dhsym.load("ur5")

@@ -58,6 +58,7 @@ def test_a_singular_factor_longer_than_the_line_keeps_its_meaning_in_whole_words
     assert all(len(line) <= width for line in singular) and singular[-1].startswith("    ")
 
 
+@pytest.mark.slow
 def test_json_reads_back_and_has_the_documented_keys():
     data = json.loads(run("jacobian", "stanford", "--format", "json").stdout)
     assert set(data) == {"robot", "convention", "frame", "point", "joint_variables", "matrix", "determinant",
@@ -128,6 +129,7 @@ def _problems(log):
     return errors + overfull
 
 
+@pytest.mark.slow
 @needs_tex
 @pytest.mark.parametrize("kind", ["slides", "article"])
 @pytest.mark.parametrize("name", ROBOTS)
@@ -191,6 +193,7 @@ joints:
 """
 
 
+@pytest.mark.slow
 def test_an_offset_wrist_arm_has_the_same_determinant_in_both_conventions(tmp_path):
     """det J does not depend on the convention: the modified table of the same arm (whose own
     frames would write it out to 114,593 terms the Berkowitz way) prints the same factors."""
@@ -217,6 +220,7 @@ def det_error(value, matrix, trials: int = 4) -> float:
     return worst
 
 
+@pytest.mark.slow
 def test_the_determinant_of_a_general_three_link_arm_is_its_linear_block(tmp_path):
     """Every DH parameter a symbol: the 3×3 determinant of the point's velocity, multiplied out
     where it has fewest terms (frame 2: 26, where frame 0 has 212)."""

@@ -1,6 +1,7 @@
 """Property tests: on random chains (both conventions, prismatic joints, offsets, symbolic
 twists, base and tool steps) the Jacobian equals the definition on the raw product, in any
 frame and for any point, and the velocity propagation ends in the same Jacobian."""
+import pytest
 import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -9,6 +10,8 @@ from test_velocity import reference_jacobian
 
 from dhsym.checking.verify import algebraically_equal, numeric_error
 from dhsym.velocity import determinant, jacobian, propagated_jacobian
+
+pytestmark = pytest.mark.slow  # property tests drawing many random chains: seconds to minutes per test
 
 SETTINGS = settings(max_examples=40, deadline=None)
 

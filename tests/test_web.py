@@ -174,6 +174,7 @@ def test_the_picker_lists_every_built_in_robot_with_its_file():
     assert all(r["yaml"] == builtin(r["name"]) and r["title"] for r in robots)
 
 
+@pytest.mark.slow
 def test_the_page_imports_nothing_the_browser_lacks():
     """numpy, matplotlib, lxml and xacro are not in the page (the build ships SymPy, mpmath, PyYAML, dhsym)."""
     probe = ("import json, sys\nfrom dhsym.web.app import handle\n"

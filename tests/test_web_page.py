@@ -21,6 +21,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow  # the web page in a browser: seconds to minutes per test
+
 ROOT = Path(__file__).resolve().parent.parent
 BUILT = ROOT / "build" / "web-test"
 CHROMIUM = "/usr/bin/chromium"

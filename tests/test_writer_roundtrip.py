@@ -297,6 +297,7 @@ def poe_fk(axes, tool, values):
 # 12 geometries a run (each takes seconds: exact frame assignment, then FK evaluated both ways): CI
 # draws the same 12 every time (derandomized), each local run 12 new ones; the cases fixed by hand
 # above cover every kind of value.
+@pytest.mark.slow
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(geometries())
 def test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics(geometry):
@@ -321,6 +322,7 @@ def test_any_geometry_writes_a_robot_file_that_reads_back_with_its_kinematics(ge
         assert np.allclose(np.array(fk.evalf(), dtype=float), np.array(expected.evalf(), dtype=float), atol=1e-9)
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(st.lists(st.sampled_from(sorted(EXACT_KINDS) + sorted(ROUNDED_KINDS)), min_size=1, max_size=6),
        st.sampled_from(["standard", "modified"]))
