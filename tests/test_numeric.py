@@ -92,7 +92,7 @@ def test_the_joint_axis_rule_of_each_convention():
 
 def test_the_jacobian_takes_its_axes_from_the_same_rule():
     for name in ("puma560", "planar3r", "stanford"):
-        chain = dhsym.load(name)
+        chain = dhsym.load(name).chain
         constants = sorted(chain.symbols - set(chain.joint_variables), key=str)
         lengths = {s: sympy.Rational(k + 2, 3) for k, s in enumerate(constants)}
         numeric = NumericChain(chain, lengths)
