@@ -124,7 +124,7 @@ def test_the_cross_product_is_sympys(u, v):
 
 
 def test_a_numeric_chain_needs_every_constant_and_one_value_per_joint():
-    chain = dhsym.load("planar2r")
+    chain = dhsym.load("planar2r").chain
     with pytest.raises(ValueError, match="no number for a_2"):
         NumericChain(chain, {"a_1": 1})
     with pytest.raises(ValueError, match="1 joint values for 2 joints"):
