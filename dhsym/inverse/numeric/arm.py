@@ -65,7 +65,7 @@ def numeric_arm(robot, given=None) -> NumericArm:
         value = step.value.xreplace(numbers)
         moving = [v for v in variables if v in value.free_symbols]
         if not moving:
-            current = current @ _step_matrix(step.is_rotation, step.axis, _float(value))
+            current = current @ _step_matrix(step.is_rotation, step.axis, value)
             continue
         slope, intercept = _affine(value, moving, step)
         if moving[0] in used or step.axis != 2:
@@ -106,7 +106,7 @@ def _affine(value, moving, step) -> tuple[float, float]:
         intercept, term = value.as_independent(moving[0], as_Add=True)
         slope, rest = term.as_coeff_Mul()
         if rest == moving[0] and not intercept.free_symbols and slope != 0:
-            return _float(slope), _float(intercept)
+            return _float(slope), intercept
     raise UserError(f"the numeric inverse kinematics needs each step to move with one joint variable, by a fixed "
                     f"amount per unit, not {step.kind}({step.value})")
 
@@ -118,12 +118,14 @@ def _float(value) -> float:
     return number.real
 
 
-def _step_matrix(turns: bool, axis: int, amount: float) -> numpy.ndarray:
+def _step_matrix(turns: bool, axis: int, amount) -> numpy.ndarray:
+    """A step's matrix in floats; cos and sin of an exact angle worked out exactly first (cos π/2 is 0, not 6e-17)."""
     matrix = numpy.eye(4)
+    amount = sympy.sympify(amount)
     if turns:
         i, j = _TURN_PLANE[axis]
-        cosine, sine = math.cos(amount), math.sin(amount)
+        cosine, sine = _float(sympy.cos(amount)), _float(sympy.sin(amount))
         matrix[i, i], matrix[i, j], matrix[j, i], matrix[j, j] = cosine, -sine, sine, cosine
     else:
-        matrix[axis, 3] = amount
+        matrix[axis, 3] = _float(amount)
     return matrix

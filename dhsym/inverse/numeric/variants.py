@@ -100,8 +100,9 @@ def runtime_arm(arm, free, variants, size) -> dict:
 
 
 def tolerance(arm) -> float:
-    """How near a solution's pose is to the target: 1e-9 of the arm's size (at least 1e-9)."""
-    return 1e-9 * max(1.0, arm.scale)
+    """How near a solution's pose is to the target: within 1e-9 (of an arm ten units or more in size,
+    1e-10 of its size: an arm in millimetres)."""
+    return 1e-9 * max(1.0, arm.scale / 10)
 
 
 def _apart(a, b, kinds, scale):

@@ -110,7 +110,7 @@ def polish(frames, kinds, amounts, target, steps=20, enough=1e-14):
     return amounts, missed
 
 
-def nearest(frames, kinds, target, seed, limits=None, steps=200, tolerance=1e-12):
+def nearest_amounts(frames, kinds, target, seed, limits=None, steps=200, tolerance=1e-12):
     """The joint amounts nearest `seed` that reach `target`, by damped least squares
     (Levenberg–Marquardt: the damping shrinks while the pose error does, grows when it does not);
     `limits` (n, 2), lower and upper amounts, keeps each joint within them. Returns (amounts, miss)."""
