@@ -70,7 +70,9 @@ def refused(robot, args, refusal: UserError) -> str:
         try:
             text = run(robot, args, refusal.message)
         except UserError as error:
-            raise UserError(f"{refusal.message}; and numerically: {error.message}") from None
+            said = error.message.removeprefix("the numeric inverse kinematics needs numbers: ")
+            raise UserError(f"{refusal.message}; a numeric module{' needs numbers' if said != error.message else ''}: "
+                            f"{said}") from None
         warn([f"{refusal.message}: the module finds every solution numerically"])
         return text
     raise UserError(f"{refusal.message}; `{command(args, numeric=True)}` gives every solution in numbers"
