@@ -10,7 +10,7 @@ often put an arm in a singular pose, whose solutions are not isolated.
 >>> from dhsym.inverse.numeric.solver import numeric_inverse
 >>> found = answer(numeric_inverse(dhsym.load("puma560")))
 >>> len(found.solutions), found.among
-(8, 0)
+(8, 4)
 """
 from __future__ import annotations
 
