@@ -43,7 +43,7 @@ def method_sentence(inverse) -> str:
     return (f"every real solution{given}, numerically: Raghavan and Roth's elimination turns the loop equation "
             f"into one polynomial in {_name(inverse.hidden_variable)} of degree at most 16, whose roots are the "
             "eigenvalues of a 24 × 24 matrix; Newton's method on the pose polishes each root, and a solution is "
-            f"kept once, when it reaches the target within {inverse.runtime()['tolerance']:.0e}.")
+            f"kept once, when it reaches the target within {_power(inverse.runtime()['tolerance'])}.")
 
 
 def numeric_json(found, refusal: str = "") -> dict:
@@ -117,6 +117,12 @@ def _solutions_block(found, ascii, width) -> str:
 
 def _name(name: str) -> str:
     return display_name(name, "unicode")
+
+
+def _power(value: float) -> str:
+    """1e-9, not 1e-09."""
+    mantissa, exponent = f"{value:.0e}".split("e")
+    return f"{mantissa}e{int(exponent)}"
 
 
 def _short(value) -> str:
