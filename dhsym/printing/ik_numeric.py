@@ -35,7 +35,7 @@ def numeric_text(found, width: int = 100, ascii: bool = False, robot=None, refus
     blocks.append(_target_block(found, robot, ascii, width))
     blocks.append(_solutions_block(found, ascii, width))
     text = "\n\n".join(blocks)
-    return ascii_text(text) if ascii else text
+    return ascii_text(text.replace("←", "<-")) if ascii else text
 
 
 def method_sentence(inverse) -> str:

@@ -12,6 +12,12 @@ numpy only: this file's text goes into the module `dhsym ik --format python` wri
 solved numerically. Which joint is "3" (the loop turned and read either way) is chosen once per
 arm (dhsym.inverse.numeric.variants): a choice whose matrix is singular for every x3 (arms with
 parallel or meeting axes) is not used.
+
+Each side is of degree one in every joint, so three samples give its coefficients exactly:
+
+>>> at, to_coefficients = sampling("R")
+>>> (to_coefficients @ (2 + 3 * numpy.cos(at) - numpy.sin(at))).round(12).tolist()  # 2 + 3 cos θ − sin θ
+[2.0, 3.0, -1.0]
 """
 import numpy
 
@@ -19,6 +25,8 @@ from .chain import joint_motion, rigid_inverse
 
 SHIFT = 0.7548776662466927  # x3 = SHIFT + 1/y: the eigenvalue y is finite at x3 = ∞ (θ3 = π)
 REAL = 1e-3  # an eigenvalue whose angle has an imaginary part below this is a candidate; Newton decides
+TWINS = 4  # the most solutions that share the polynomial's joint (a wrist's twins of an elbow's twins)
+CLUSTER = 1e-4  # roots of one pose closer than this (radians, or units of the arm's size) are one repeated root
 HALF_ANGLE = {"R": numpy.array([[1.0, 0.0, 1.0], [1.0, 0.0, -1.0], [0.0, 2.0, 0.0]]),  # 1, c, s → 1, x, x²
               "P": numpy.eye(3)}
 SHIFT_4 = ([j * 3 + k for j in range(3) for k in range(3)], [(j + 1) * 3 + k for j in range(3) for k in range(3)])
@@ -160,6 +168,7 @@ def candidates(reduced, target, kinds, variant, scale):
     vector = vectors[rows, slots]
     phase = vector[numpy.arange(len(rows)), numpy.abs(vector).argmax(axis=1)]
     vector = (vector * (numpy.conj(phase) / (numpy.abs(phase) + 1e-300))[:, None]).real
+    vector = repeated(rows, third[rows, slots], values[rows, slots].real, vector, sigma, order_kinds[2])
     amounts = numpy.zeros((len(rows), 6))
     amounts[:, 2] = third[rows, slots]
     amounts[:, 3] = ratio_amount(order_kinds[3], vector, SHIFT_4, scale)
@@ -175,6 +184,33 @@ def candidates(reduced, target, kinds, variant, scale):
     order, backwards = variant
     out[:, list(order)] = -amounts if backwards else amounts
     return rows, out
+
+
+def repeated(rows, third, y, vector, sigma, kind):
+    """The eigenvectors where m roots of one pose coincide (twins that share the polynomial's joint):
+    there the eigenvectors mix, but the m smallest singular vectors of the matrix span the m
+    solutions' products, and the shift from x4ⁱ to x4ⁱ⁺¹ (and x5ʲ to x5ʲ⁺¹) within that span, an
+    m × m eigenproblem, gives each one's. Clusters of one size are worked out together."""
+    order = numpy.lexsort((third, rows))
+    gap = numpy.diff(third[order])
+    gap = numpy.remainder(gap + numpy.pi, 2 * numpy.pi) - numpy.pi if kind == "R" else gap
+    joined = (numpy.diff(rows[order]) == 0) & (numpy.abs(gap) < CLUSTER)
+    starts = numpy.flatnonzero(numpy.concatenate([[True], ~joined]))
+    sizes = numpy.diff(numpy.append(starts, len(order)))
+    for size in range(2, TWINS + 1):  # more: a root of the matrix at every pose, no solution
+        members = order[starts[sizes == size][:, None] + numpy.arange(size)]  # (clusters, size)
+        if not len(members):
+            continue
+        at, row = y[members].mean(axis=1)[:, None, None], rows[members[:, 0]]
+        square = sigma[row, 0] + SHIFT * sigma[row, 1] + SHIFT ** 2 * sigma[row, 2]
+        matrix = square * at ** 2 + (sigma[row, 1] + 2 * SHIFT * sigma[row, 2]) * at + sigma[row, 2]
+        span = numpy.swapaxes(numpy.linalg.svd(matrix)[2][:, -size:], 1, 2)  # (clusters, 12, size)
+        shifts = [numpy.linalg.pinv(span[:, low]) @ span[:, high] for low, high in (SHIFT_4, SHIFT_5)]
+        found = span @ numpy.linalg.eig(shifts[0] + 0.5773 * shifts[1])[1]
+        phase = numpy.take_along_axis(found, numpy.abs(found).argmax(axis=1)[:, None], axis=1)
+        found = (found * numpy.conj(phase) / (numpy.abs(phase) + 1e-300)).real
+        vector[members] = numpy.swapaxes(found, 1, 2)
+    return vector
 
 
 def _closing_angle(links, kinds, amounts):

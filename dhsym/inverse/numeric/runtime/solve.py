@@ -8,6 +8,12 @@ it reaches the pose, and each solution kept once.
 ways of reading the loop; `scale`, the arm's size; `size`, the most solutions a pose has;
 `tolerance`, how near a solution's pose must be to the target. numpy only: this file's text goes
 into the module `dhsym ik --format python` writes for an arm solved numerically.
+
+Two copies of a solution are one (the nearer kept, here the first), each pose's in joint order:
+
+>>> rows, values = numpy.array([0, 0, 0]), numpy.array([[0.5, 1.0], [-3.0, 2.0], [0.5 + 1e-9, 1.0]])
+>>> distinct(rows, values, "RR", 1, 3, 1.0)[0].tolist()
+[[-3.0, 2.0], [0.5, 1.0], [nan, nan]]
 """
 import numpy
 
