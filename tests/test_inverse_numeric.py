@@ -306,3 +306,16 @@ def test_a_general_arm_with_symbols_is_solved_once_set_gives_numbers():
                for kind in ("a", "d", "alpha") for k in range(1, 7)]
     out = run_dhsym("ik", GENERAL, "--numeric", "--set", *numbers).ok()
     assert "← the joints that made the target" in out and "with a1 = " in out
+
+
+def test_an_arm_that_moves_in_five_directions_is_told_no_list_exists():
+    result = run_dhsym("ik", str(Path(__file__).parent / "data" / "imported" / "long_decimals.yaml"))
+    assert (result.status, result.stdout) == (2, "") and len(result.stderr.splitlines()) == 1
+    assert result.stderr.endswith("; nor a list in numbers: Imported arm with long decimals: its six joints move the "
+                                  "tool in only 5 independent directions at any pose, so a reachable pose has "
+                                  "infinitely many solutions and no list of them exists\n")
+
+
+def test_ascii_text_is_ascii():
+    out = run_dhsym("ik", COBOT, "--numeric", "--ascii").ok()
+    assert out.isascii() and out.count("<- the joints that made the target") == 1

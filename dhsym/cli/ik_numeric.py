@@ -75,8 +75,7 @@ def refused(robot, args, refusal: UserError) -> str:
                             f"{said}") from None
         warn([f"{refusal.message}: the module finds every solution numerically"])
         return text
-    raise UserError(f"{refusal.message}; `{command(args, numeric=True)}` gives every solution in numbers"
-                    + _needs_numbers(robot)) from None
+    raise UserError(refusal.message + _numeric_hint(robot, args)) from None
 
 
 def command(args, numeric: bool) -> str:
@@ -108,11 +107,27 @@ def pose_elements(text) -> dict:
     return values
 
 
-def _needs_numbers(robot) -> str:
-    """` once …` when the robot's constants lack numbers (a general arm with symbolic lengths)."""
+def _numeric_hint(robot, args) -> str:
+    """What the refusal adds: the numeric command, where it lists the solutions (six unknown joints
+    that move the tool in six directions), ` once …` when the constants lack numbers; else nothing,
+    or why no list exists."""
     chain = robot.chain
-    missing = sorted(s.name for s in chain.symbols - set(chain.joint_variables) if s not in robot.sample)
-    if not missing:
+    if chain.n - len(set(args.free)) != 6:
         return ""
-    return f" once its constants have numbers: add --set {' '.join(f'{name}=…' for name in missing[:3])}" + \
-        (" …" if len(missing) > 3 else "")
+    hint = f"; `{command(args, numeric=True)}` gives every solution in numbers"
+    missing = sorted(s.name for s in chain.symbols - set(chain.joint_variables) if s not in robot.sample)
+    if missing:
+        return hint + f" once its constants have numbers: add --set {' '.join(f'{n}=…' for n in missing[:3])}" + \
+            (" …" if len(missing) > 3 else "")
+    try:
+        from ..inverse.numeric.arm import numeric_arm
+        from ..inverse.numeric.solver import free_positions
+        from ..inverse.numeric.variants import check_rank
+    except ImportError:  # no numpy: the numeric command will say which extra it needs
+        return hint
+    try:
+        arm = numeric_arm(robot)
+        check_rank(arm, free_positions(arm, args.free))
+    except UserError as reason:
+        return f"; nor a list in numbers: {reason.message}"
+    return hint

@@ -69,7 +69,7 @@ def choose(arm, free=()) -> Choice:
     values, free_values, targets = trial_poses(arm, free)
     runtime = runtime_arm(arm, free, (), SIZE)
     frames, kinds = reduced(runtime, free_values * numpy.asarray(arm.slopes)[list(free)])
-    _check_rank(frames, kinds, values, free, arm)
+    check_rank(arm, free)
     truth = values[:, [k for k in range(len(arm.kinds)) if k not in free]]
     scores = []
     for variant in readings(kinds):
@@ -113,9 +113,11 @@ def _apart(a, b, kinds, scale):
     return numpy.abs(difference).max(axis=1)
 
 
-def _check_rank(frames, kinds, values, free, arm) -> None:
+def check_rank(arm, free=()) -> None:
     """Refuses an arm whose six joints move the tool in fewer than six directions at every trial pose
     (its solutions are not isolated points: no list of them exists)."""
+    values, free_values, _ = trial_poses(arm, free)
+    frames, kinds = reduced(runtime_arm(arm, free, (), SIZE), free_values * numpy.asarray(arm.slopes)[list(free)])
     unknown = [k for k in range(len(arm.kinds)) if k not in free]
     _, jacobian = pose_and_jacobian(frames, kinds, values[:, unknown] * numpy.asarray(arm.slopes)[unknown])
     sizes = numpy.linalg.svd(jacobian, compute_uv=False)
