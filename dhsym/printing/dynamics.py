@@ -247,7 +247,7 @@ def text_dynamics(robot, layout, printer: TextPrinter, width: int = 100, method:
 
 ASCII = (("ω̇", "wdot"), ("ω", "w"), ("v̇", "vdot"), ("q̈", "qddot"), ("q̇", "qdot"), ("ᶜI", "cI"), ("τ", "tau"),
          ("φ", "phi"), ("Σ", "sum "), ("ᵀ", "^T"), ("∂", "d"), ("×", "x"), ("−", "-"), ("–", "-"), ("½", "1/2"),
-         ("≥", ">="))
+         ("≥", ">="), ("πb", "pi_b"), ("π", "pi"))
 
 
 def to_ascii(text: str) -> str:
