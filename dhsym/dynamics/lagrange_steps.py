@@ -120,6 +120,8 @@ def lagrange_steps(chain: Chain, masses: MassModel, result: Dynamics) -> Lagrang
         quadratic = sympy.Add(*[compact(square[a, b], weights) * (1 if a == b else 2) * rates[a] * rates[b]
                                 for a in range(n) for b in range(a, n)])
         spin = (sympy.Matrix(omega).T * tensor(link.inertia) * sympy.Matrix(omega))[0]
+        spin = spin.xreplace({p: (-p.base) ** p.exp for p in spin.atoms(sympy.Pow)  # (θ̇1 + θ̇2)², not (−θ̇1 − θ̇2)²
+                              if p.base.is_Add and p.exp.is_even and p.base.could_extract_minus_sign()})
         links.append(LinkEnergyStep(energy.link, tuple(compact(x) for x in energy.com), linear, energy.angular,
                                     tuple(omega), link.mass * quadratic / 2, spin / 2,
                                     compact(energy.potential, weights)))

@@ -16,15 +16,35 @@ Laid out by the one rule of the documents: every element is a line of ``aligned`
 """
 from __future__ import annotations
 
+import re
+
 from ..dynamics.equations import CoriolisElement, textbook_layout
 from ..printing.dynamics import C_VALUES_UP_TO, MotionLatexPrinter
 from .display import Latex
-from .layout import PAGES, Block, Page, Rows, aligned_display, element_rows, lines_under, paragraph, stacked
+from .layout import (
+    ALIGNED_EXTRA,
+    PAGES,
+    TEXT_LINE,
+    Block,
+    Page,
+    Rows,
+    aligned_display,
+    break_lines,
+    display,
+    lines_under,
+    paragraph,
+    row_height,
+    stacked,
+)
 from .legend import legend_items
 from .sections import Section
+from .width import math_width
 
 PART = "Dynamics"
 DOT_EXTRA = 2.5  # pt: a row with a dotted rate is taller than the layout's measured row
+TEXT_SHARE = 0.9  # of the notebook's line that a line of text fills: text between many small pieces of math
+#                  measures up to 7 % wider than the width estimate (the regressor's list of parameters)
+SCRIPT_EXTRA = 2.0  # pt: and one with a squared subscripted name, c_{23}^{2} (measured: PUMA slides)
 TEXTS = {
     "M": "The inertia matrix is symmetric, $d_{ji} = d_{ij}$; its upper triangle:",
     "christoffel": "$c_{ijk} = \\tfrac{1}{2}\\left(\\frac{\\partial d_{kj}}{\\partial q_i} + \\frac{\\partial d_{ki}}"
@@ -49,7 +69,7 @@ def dynamics_sections(robot, result, page: Page, printer: MotionLatexPrinter | N
         by_k = [[s for s in layout.christoffel if s.k == k] for k in range(1, layout.n + 1)]
         out.append(Section(PART, "Christoffel symbols $c_{ijk}$", [
             paragraph(TEXTS["christoffel"], page),
-            Rows([[_element(printer, s, page) for s in group] for group in by_k if group])]))
+            aligned_rows([[printer.sides(s) for s in group] for group in by_k if group], page)]))
         out.append(Section(PART, "Coriolis and centrifugal matrix $C(q, \\dot{q})$", [
             paragraph(TEXTS["C"], page), _rows(printer, layout.coriolis, page, values=layout.n <= C_VALUES_UP_TO)]))
     else:
@@ -65,14 +85,35 @@ def dynamics_sections(robot, result, page: Page, printer: MotionLatexPrinter | N
 
 def _rows(printer, records, page: Page, values: bool = False) -> Rows:
     """One column of elements, each broken to the page."""
-    return Rows([[_element(printer, record, page, values) for record in records]])
+    return aligned_rows([[_sides(printer, record, values) for record in records]], page)
 
 
-def _element(printer, record, page: Page, values: bool = False) -> list:
+def _sides(printer, record, values: bool = False) -> tuple[str, str]:
     left, right = printer.sides(record)
     if values and isinstance(record, CoriolisElement):
         right += " = " + printer.doprint(record.value)
-    return [(tex, height + DOT_EXTRA * ("\\dot" in tex)) for tex, height in element_rows(left, right, page)]
+    return left, right
+
+
+def aligned_rows(columns, page: Page) -> Rows:
+    """Columns of (left, right) pairs as the rows of `aligned`, each right side broken before a + or
+    − to the room the widest left side leaves (one `aligned` aligns them all at =)."""
+    widest = max(math_width(left + " =") for column in columns for left, _ in column)
+    room = page.width - widest - ALIGNED_EXTRA
+    out = []
+    for column in columns:
+        elements = []
+        for left, right in column:
+            lines = break_lines(right, room, room - 1.0, display=True)
+            rows = [f"{left} &= {lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]
+            elements.append([(row, row_height([row], array=False) + taller(row)) for row in rows])
+        out.append(elements)
+    return Rows(out)
+
+
+def taller(tex: str) -> float:
+    """What a row of the dynamics needs beyond the layout's measured row: dots, stacked scripts."""
+    return DOT_EXTRA * ("\\dot" in tex) + SCRIPT_EXTRA * ("}^{" in tex)
 
 
 def snippet(robot, result, method: str = "lagrange", steps: bool = False, regressor: bool = False) -> str:
@@ -119,16 +160,27 @@ def notebook_display(robot, result, method: str = "lagrange", steps: bool = Fals
     page = PAGES["notebook"]
     items = []
     for section in all_sections(robot, result, page, method, steps, regressor):
-        items.append(paragraph(section.title, page))
-        items += section.items
-    return Latex(stacked([_as_text(item) for item in items], page))
+        items += _as_text(paragraph(section.title, page), "\\textbf")
+        items += [row for item in section.items for row in _as_text(item)]
+    return Latex(stacked(items, page))
 
 
-def _as_text(item):
-    """A paragraph whose math MathJax must set: its text in \\text{}, its math between (`stacked` wraps
-    paragraphs as \\text{} lines)."""
-    if not isinstance(item, Block) or item.is_display or "$" not in item.latex:
-        return item
-    pieces = item.latex.split("$")
-    body = "".join(f"\\text{{{piece}}}" if k % 2 == 0 else piece for k, piece in enumerate(pieces) if piece)
-    return Block(f"\\[{body}\\]", item.height, math=body)
+def _as_text(item, command: str = "\\text") -> list:
+    """A paragraph as displays of one line each, its text in \\text{…} and its math as math, the
+    lines filled to the notebook's width (MathJax breaks nothing inside a display)."""
+    if not isinstance(item, Block) or item.is_display:
+        return [item]
+    page, rows, line = PAGES["notebook"], [], ""
+    for word in re.findall(r"(?:\$[^$]*\$|[^\s$])+", item.latex):  # a word, with any math it holds kept whole
+        if line and math_width(_row_math(f"{line} {word}")) > TEXT_SHARE * page.width:
+            rows.append(line)
+            line = word
+        else:
+            line = f"{line} {word}" if line else word
+    return [display(_row_math(row, command), TEXT_LINE) for row in rows + [line]]
+
+
+def _row_math(text: str, command: str = "\\text") -> str:
+    r"""One line as math: '\text{find }\theta_{1}'."""
+    return "".join(piece if position % 2 else f"{command}{{{piece}}}" for position, piece in enumerate(text.split("$"))
+                   if piece)

@@ -16,11 +16,10 @@ The lines are the printers' (dhsym.printing.dynamics_steps), laid out by the doc
 from __future__ import annotations
 
 from ..printing.dynamics_steps import grouped_parameters
-from .layout import Page, Rows, element_rows, paragraph
+from .layout import Page, Rows, paragraph
 from .sections import Section
 
 PART = "Dynamics: the derivation"
-DOT_EXTRA = 2.5  # pt: a row with a dotted rate is taller than the layout's measured row
 LAGRANGE = {
     "links": "Each link's centre of mass $r_{ci}$ and its Jacobians in the first frame, its angular velocity in "
              "its own frame, its kinetic energy (the linear and the angular part; $I_{ci}$ is its inertia tensor "
@@ -43,8 +42,9 @@ NEWTON = {
 }
 REGRESSOR = {
     "standard": "$\\tau = Y(q, \\dot{q}, \\ddot{q})\\,\\pi$ is linear in $\\pi$, the standard inertial parameters "
-                "of each link $i$ about the origin of its frame $i$, along its axes: $XX_i$, $XY_i$, $XZ_i$, "
-                "$YY_i$, $YZ_i$, $ZZ_i$, $MX_i$, $MY_i$, $MZ_i$ and $m_i$. The base parameters, the combinations "
+                "of each link $i$ about the origin of its frame $i$, along its axes: its inertia "
+                "$XX_i, XY_i, XZ_i, YY_i, YZ_i, ZZ_i$, its mass times its centre of mass $MX_i, MY_i, MZ_i$, and "
+                "its mass $m_i$. The base parameters, the combinations "
                 "$\\tau$ identifies (Gautier and Khalil's grouping), so that $\\tau = Y_b\\,\\pi_b$:",
     "alone": "On their own (nothing grouped into them): ${names}$.",
     "moves none": "They move no joint: ${names}$.",
@@ -55,12 +55,9 @@ REGRESSOR = {
 
 def _rows(printer, records, page: Page) -> Rows:
     """Each record's lines, one element each, broken to the page."""
-    return Rows([[_tall(element_rows(left, right, page)) for record in records
-                  for left, right in printer.lines(record)]])
+    from .dynamics import aligned_rows  # dynamics imports this module lazily, for the steps
 
-
-def _tall(rows) -> list:
-    return [(tex, height + DOT_EXTRA * ("\\dot" in tex)) for tex, height in rows]
+    return aligned_rows([[pair for record in records for pair in printer.lines(record)]], page)
 
 
 def steps_sections(robot, result, page: Page, printer, method: str = "lagrange") -> list[Section]:

@@ -64,9 +64,9 @@ class MotionSteps:
         return "(" + (",\\; " if self.style == "latex" else ", ").join(self.doprint(x) for x in values) + ")"
 
     def columns(self, matrix) -> str:
-        """A 3 × n matrix by its columns: [(…), (…)]."""
+        """A 3 × n matrix by its columns, a column of zeros as 0: [(…), (…), 0]."""
         return "[" + (",\\;\\; " if self.style == "latex" else ", ").join(
-            self.vector(matrix[:, c]) for c in range(matrix.cols)) + "]"
+            self.vector(matrix[:, c]) if any(matrix[:, c]) else "0" for c in range(matrix.cols)) + "]"
 
     def partial(self, i: int, j: int, variable) -> str:
         """∂d12/∂θ2 (\\frac{\\partial d_{12}}{\\partial \\theta_{2}})."""
