@@ -182,10 +182,11 @@ def ik(robot, free=()):
     return inverse_kinematics(_robot_of(robot), free)
 
 
-def equations_of_motion(robot):
+def equations_of_motion(robot, to: int | None = None):
     """The dynamics τ = M(q) q̈ + C(q, q̇) q̇ + g(q) in textbook form, as `dhsym dynamics`: `.M`, `.C`,
     `.g`, `.christoffel`, `.tau(...)` (symbolic, or numbers for states), `.regressor()`, `.steps()`,
-    `.latex()`, `.text()`, `.code()`. (`dhsym.dynamics` is the package of the math.)
+    `.latex()`, `.text()`, `.code()`; of the links up to frame `to` only (`dhsym dynamics --to`).
+    (`dhsym.dynamics` is the package of the math, so this function has the name of what it gives.)
 
     >>> import dhsym
     >>> dhsym.equations_of_motion(dhsym.load("spong_elbow")).M[1, 1]
@@ -193,4 +194,4 @@ def equations_of_motion(robot):
     """
     from .latex.dynamics_api import robot_dynamics
 
-    return robot_dynamics(_robot_of(robot))
+    return robot_dynamics(_robot_of(robot), to)

@@ -104,9 +104,9 @@ def test_json_of_other_arms_is_the_derived_math_with_decimals_as_written(name):
 
 
 def _first_links(robot, k: int):
-    from dhsym.cli.dynamics import first_links
+    from dhsym.dynamics.equations import first_links
 
-    return first_links(robot, str(k))
+    return first_links(robot, k)
 
 
 @pytest.mark.parametrize("name", SMALL_ARMS)
@@ -238,3 +238,20 @@ def test_the_notebook_object():
     tau = equations.tau(numpy.zeros((4, 2)), numpy.zeros((4, 2)), numpy.zeros((4, 2)), g=0.0)
     assert tau.shape == (4, 2) and not tau.any()
     assert tensor(load("spong_elbow").filled_masses().links[0].inertia)[2, 2] == I1
+
+
+def test_the_notebook_object_takes_the_first_links_and_shows_elements_by_name():
+    import dhsym
+    from dhsym.errors import UserError
+
+    arm = dhsym.equations_of_motion(load("stanford"), to=3)
+    assert arm.robot.name == "Stanford manipulator (RRP + spherical wrist), to frame 3" and arm.M.shape == (3, 3)
+    assert arm.text() == run_dhsym("dynamics", "stanford", "--to", "3").stdout.rstrip("\n")
+    elbow = robot_dynamics(load("spong_elbow"))
+    shown = elbow.show("d22", "phi2").latex
+    assert "d_{22} &= I_{2} + l_{c2}^{2} m_{2}" in shown and "\\phi_{2} &= g l_{c2} m_{2} c_{12}" in shown
+    assert "\\dot{M} - 2C = " in elbow.matrix(sympy.zeros(2, 2), "\\dot{M} - 2C").latex
+    with pytest.raises(UserError, match="no element d33 in these equations; they have d11, d12, d22, c121"):
+        elbow.show("d33")
+    with pytest.raises(UserError, match="to=3: the last frame whose link moves is one of 1..2"):
+        dhsym.equations_of_motion(load("spong_elbow"), to=3)

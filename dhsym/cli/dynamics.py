@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 
 from ..dynamics.derive import MAX_TERMS, TooLargeToPrint, derive, printed_terms
+from ..dynamics.equations import first_links as links_up_to
 from ..errors import UserError
 from .options import format_options, robot_options
 
@@ -93,20 +94,12 @@ def first_links(robot, end):
     number of the chain's frame 0) only; all of it when None."""
     if end is None:
         return robot
-    from ..core.chain import Chain
-    from ..core.inertia import MassModel
-
-    chain, offset = robot.chain, robot.frame_offset
+    offset = robot.frame_offset
     last = _whole_number(end) - offset
-    if not 0 < last <= chain.n:
-        raise UserError(f"--to names the last frame whose link moves, one of {offset + 1}..{offset + chain.n}; "
+    if not 0 < last <= robot.chain.n:
+        raise UserError(f"--to names the last frame whose link moves, one of {offset + 1}..{offset + robot.chain.n}; "
                         f"not {end}")
-    masses = robot.masses
-    kept = MassModel(masses.links[:last], masses.gravity, masses.numbers)
-    part = Chain(chain.rows[:last], chain.convention, chain.base)
-    symbols = part.symbols | kept.symbols(last, offset + 1)
-    return robot.replace(chain=part, masses=kept, sample={s: v for s, v in robot.sample.items() if s in symbols},
-                         name=f"{robot.name}, links up to frame {last + offset}")
+    return links_up_to(robot, last)
 
 
 def _whole_number(text: str) -> int:

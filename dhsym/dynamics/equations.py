@@ -139,3 +139,23 @@ def grouped_sum(pairs) -> sympy.Expr:
     for value, factor in pairs:
         groups.setdefault(value, []).append(factor)
     return sympy.Add(*[value * sympy.Add(*factors) for value, factors in groups.items()])
+
+
+def first_links(robot, last: int):
+    """The robot with its first `last` links only (chain numbering, 1..n): the arm without what
+    comes after, with the masses, gravity and sample values of those links; its name says so.
+
+    >>> import dhsym
+    >>> arm = first_links(dhsym.load("puma560"), 3)
+    >>> arm.name, arm.chain.n, sorted(map(str, arm.sample))
+    ('PUMA 560, to frame 3', 3, ['a_2', 'd_3'])
+    """
+    from ..core.chain import Chain
+    from ..core.inertia import MassModel
+
+    chain, masses, offset = robot.chain, robot.masses, robot.frame_offset
+    kept = MassModel(masses.links[:last], masses.gravity, masses.numbers)
+    part = Chain(chain.rows[:last], chain.convention, chain.base)
+    symbols = part.symbols | kept.symbols(last, offset + 1)
+    return robot.replace(chain=part, masses=kept, sample={s: v for s, v in robot.sample.items() if s in symbols},
+                         name=f"{robot.name}, to frame {last + offset}")

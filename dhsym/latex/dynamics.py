@@ -18,7 +18,10 @@ from __future__ import annotations
 
 import re
 
+import sympy
+
 from ..dynamics.equations import CoriolisElement, textbook_layout
+from ..errors import UserError
 from ..printing.dynamics import C_VALUES_UP_TO, MotionLatexPrinter
 from .display import Latex
 from .layout import (
@@ -163,6 +166,44 @@ def notebook_display(robot, result, method: str = "lagrange", steps: bool = Fals
         items += _as_text(paragraph(section.title, page), "\\textbf")
         items += [row for item in section.items for row in _as_text(item)]
     return Latex(stacked(items, page))
+
+
+def notebook_elements(robot, result, names) -> Latex:
+    """Some of the results by name, as the notebook shows them: "d22", "c121", "C12", "phi2", "tau1"
+    (joints numbered as the robot prints them; ASCII names, as `dhsym dynamics --ascii` writes them).
+
+    >>> import dhsym
+    >>> from dhsym.dynamics.derive import derive
+    >>> arm = dhsym.load("spong_elbow")
+    >>> print(notebook_elements(arm, derive(arm.chain, arm.filled_masses()), ["phi2"]))
+    \\begin{array}{l}
+    \\begin{aligned}
+    \\phi_{2} &= g l_{c2} m_{2} c_{12}
+    \\end{aligned}
+    \\end{array}
+    """
+    from ..printing.dynamics import MotionTextPrinter
+
+    layout = textbook_layout(result)
+    records = [*layout.inertia, *layout.christoffel, *layout.coriolis, *layout.gravity, *layout.motion]
+    named = {MotionTextPrinter(robot, result, ascii=True).sides(record)[0].split(" = ")[0]: record
+             for record in records}
+    missing = [name for name in names if name not in named]
+    if missing:
+        raise UserError(f"no element {missing[0]} in these equations; they have {', '.join(named)}")
+    printer = MotionLatexPrinter(robot, result)
+    page = PAGES["notebook"]
+    return Latex(stacked([aligned_rows([[_sides(printer, named[name]) for name in names]], page)], page))
+
+
+def notebook_matrix(robot, result, value, name: str = "") -> Latex:
+    """Any matrix of the dynamics (Ṁ − 2C, a Jacobian) with its rates dotted, and its legend."""
+    from ..printing.render import latex_matrix
+
+    printer = MotionLatexPrinter(robot, result)
+    body = (f"{name} = " if name else "") + latex_matrix(sympy.Matrix(value), printer)
+    page = PAGES["notebook"]
+    return Latex(stacked([display(body, 20.0), *legend_items(printer, page)], page))
 
 
 def _as_text(item, command: str = "\\text") -> list:

@@ -9,6 +9,7 @@ in dhsym/api/ with it; it stands above every layer it calls).
     elbow.tau(q, qd, qdd)                   # numbers (numpy), one state or (N, n), the sample's constants
     elbow.regressor()                       # the base parameters and the columns of Y_b
     elbow.latex(steps=True)                 # the derivation, rendered by Jupyter
+    elbow.show("d11", "phi1")               # some elements, by their names
     print(elbow.text()); print(elbow.code())
 
 >>> import dhsym
@@ -25,14 +26,22 @@ import json
 import sympy
 
 from ..dynamics.derive import derive
-from ..dynamics.equations import textbook_layout
+from ..dynamics.equations import first_links, textbook_layout
+from ..errors import UserError
 from ..printing.dynamics import MotionTextPrinter, json_dynamics, text_dynamics
 from .display import Latex
 
 
-def robot_dynamics(robot) -> "RobotDynamics":
+def robot_dynamics(robot, to: int | None = None) -> "RobotDynamics":
     """The equations of motion of `robot` (a robot file's robot: its masses, or the generic symbols
-    where it gives none), in textbook form; a robot too large to print is refused at once."""
+    where it gives none), in textbook form, of its links up to frame `to` (numbered as the robot
+    prints its frames; all of them by default); a robot too large to print is refused at once."""
+    if to is not None:
+        last = to - robot.frame_offset
+        if not 0 < last <= robot.chain.n:
+            raise UserError(f"to={to}: the last frame whose link moves is one of {robot.frame_offset + 1}.."
+                            f"{robot.frame_offset + robot.chain.n}")
+        robot = first_links(robot, last)
     return RobotDynamics(robot, derive(robot.chain, robot.filled_masses()))
 
 
@@ -121,6 +130,18 @@ class RobotDynamics:
         from .dynamics import notebook_display
 
         return notebook_display(self.robot, self.result, method, steps, regressor)
+
+    def show(self, *names: str) -> Latex:
+        """Some elements by name, laid out for the notebook: show("d22", "c121", "phi2", "tau1")."""
+        from .dynamics import notebook_elements
+
+        return notebook_elements(self.robot, self.result, names)
+
+    def matrix(self, value, name: str = "") -> Latex:
+        """Any matrix of these equations (Ṁ − 2C, a Jacobian) as the notebook shows it, rates dotted."""
+        from .dynamics import notebook_matrix
+
+        return notebook_matrix(self.robot, self.result, value, name)
 
     def _repr_latex_(self) -> str:
         return self.latex()._repr_latex_()
