@@ -227,7 +227,7 @@ def text_dynamics(robot, layout, printer: TextPrinter, width: int = 100, method:
         return "\n".join(out)
 
     title = f"{robot.name}: equations of motion  ({robot.chain.convention} DH)"
-    blocks = [wrap(title, width), wrap(f"τ = M(q) q̈ + C(q, q̇) q̇ + g(q), {METHODS[method]}", width)]
+    blocks = [wrap(title, width) + "\n" + wrap(f"τ = M(q) q̈ + C(q, q̇) q̇ + g(q), {METHODS[method]}", width)]
     if steps is not None:
         blocks += text_steps(steps, printer, width, method)
     blocks.append(wrap(headings["M"], width) + "\n" + lines(layout.inertia))
