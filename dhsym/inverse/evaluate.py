@@ -43,11 +43,13 @@ class Program:
         self.keywords = keyword_names(solution)  # constant or --free joint name -> keyword of ik()
         sample = {str(symbol) for symbol in solution.chain.sample}
         self.required = [name for name in self.keywords if name not in sample]
+        self.unused = sample - set(self.keywords)  # the file's other values (g, masses): known, not needed here
         self.free = {symbol.name for symbol in solution.free}
         self.robot = solution.chain.name or "the robot"
 
     def __call__(self, T, constants=None):
         given = {getattr(k, "name", str(k)): v for k, v in (constants or {}).items()}
+        given = {name: value for name, value in given.items() if name not in self.unused}
         for name in given:
             if name not in self.keywords:
                 raise UserError(self._unknown(name))

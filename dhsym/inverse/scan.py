@@ -30,7 +30,7 @@ from itertools import combinations
 import sympy
 
 from ..core.size import length, tree_size
-from ..errors import UserError
+from ..errors import NoClosedForm
 from . import algebra
 from . import subproblems as sp
 from .fresh import fresh, fresh_symbol
@@ -84,7 +84,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
         best = _best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, memos, unique)
         if best is None:
             solved = [str(v) for v in unknowns if v not in remaining]
-            raise UserError("no closed form by the course's rules: "
+            raise NoClosedForm("no closed form by the course's rules: "
                             + (f"after {', '.join(solved)}, " if solved else "")
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         rule, candidates = best
