@@ -23,20 +23,18 @@ import sympy
 from ..dynamics.equations import CoriolisElement, textbook_layout
 from ..errors import UserError
 from ..printing.dynamics import C_VALUES_UP_TO, MotionLatexPrinter
+from .aligned_rows import aligned_rows
 from .display import Latex
 from .layout import (
-    ALIGNED_EXTRA,
     PAGES,
     TEXT_LINE,
     Block,
     Page,
     Rows,
     aligned_display,
-    break_lines,
     display,
     lines_under,
     paragraph,
-    row_height,
     stacked,
 )
 from .legend import legend_items
@@ -44,10 +42,8 @@ from .sections import Section
 from .width import math_width
 
 PART = "Dynamics"
-DOT_EXTRA = 2.5  # pt: a row with a dotted rate is taller than the layout's measured row
 TEXT_SHARE = 0.9  # of the notebook's line that a line of text fills: text between many small pieces of math
 #                  measures up to 7 % wider than the width estimate (the regressor's list of parameters)
-SCRIPT_EXTRA = 2.0  # pt: and one with a squared subscripted name, c_{23}^{2} (measured: PUMA slides)
 TEXTS = {
     "M": "The inertia matrix is symmetric, $d_{ji} = d_{ij}$; its upper triangle:",
     "christoffel": "$c_{ijk} = \\tfrac{1}{2}\\left(\\frac{\\partial d_{kj}}{\\partial q_i} + \\frac{\\partial d_{ki}}"
@@ -96,27 +92,6 @@ def _sides(printer, record, values: bool = False) -> tuple[str, str]:
     if values and isinstance(record, CoriolisElement):
         right += " = " + printer.doprint(record.value)
     return left, right
-
-
-def aligned_rows(columns, page: Page) -> Rows:
-    """Columns of (left, right) pairs as the rows of `aligned`, each right side broken before a + or
-    − to the room the widest left side leaves (one `aligned` aligns them all at =)."""
-    widest = max(math_width(left + " =") for column in columns for left, _ in column)
-    room = page.width - widest - ALIGNED_EXTRA
-    out = []
-    for column in columns:
-        elements = []
-        for left, right in column:
-            lines = break_lines(right, room, room - 1.0, display=True)
-            rows = [f"{left} &= {lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]
-            elements.append([(row, row_height([row], array=False) + taller(row)) for row in rows])
-        out.append(elements)
-    return Rows(out)
-
-
-def taller(tex: str) -> float:
-    """What a row of the dynamics needs beyond the layout's measured row: dots, stacked scripts."""
-    return DOT_EXTRA * ("\\dot" in tex) + SCRIPT_EXTRA * ("}^{" in tex)
 
 
 def snippet(robot, result, method: str = "lagrange", steps: bool = False, regressor: bool = False) -> str:

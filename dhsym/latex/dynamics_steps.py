@@ -16,6 +16,7 @@ The lines are the printers' (dhsym.printing.dynamics_steps), laid out by the doc
 from __future__ import annotations
 
 from ..printing.dynamics_steps import grouped_parameters
+from .aligned_rows import aligned_rows
 from .layout import Page, Rows, paragraph
 from .sections import Section
 
@@ -55,8 +56,6 @@ REGRESSOR = {
 
 def _rows(printer, records, page: Page) -> Rows:
     """Each record's lines, one element each, broken to the page."""
-    from .dynamics import aligned_rows  # dynamics imports this module lazily, for the steps
-
     return aligned_rows([[pair for record in records for pair in printer.lines(record)]], page)
 
 
