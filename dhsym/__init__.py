@@ -43,7 +43,7 @@ _LAZY = {
     "Location": ("dhsym.errors", "Location"),
     # the command line's commands, for Python
     **{name: ("dhsym.api.functions", name) for name in ("fk", "jacobian", "convert", "check", "screws",
-                                                          "import_urdf", "ik")},
+                                                          "import_urdf", "ik", "equations_of_motion")},
 }
 
 __all__ = sorted(_LAZY)

@@ -153,3 +153,16 @@ def ik(robot, free=(), numeric: bool = False, constants=None):
 
         return numeric_inverse(notebook_robot(robot), free, constants)
     return notebook_robot(robot).ik(free)
+
+
+def equations_of_motion(robot, to: int | None = None):
+    """The dynamics τ = M(q) q̈ + C(q, q̇) q̇ + g(q) in textbook form, as `dhsym dynamics`: `.M`, `.C`,
+    `.g`, `.christoffel`, `.tau(...)` (symbolic, or numbers for states), `.regressor()`, `.steps()`,
+    `.latex()`, `.text()`, `.code()`; of the links up to frame `to` (as printed) only (`dhsym dynamics --to`).
+    (`dhsym.dynamics` is the package of the math, so this function has the name of what it gives.)
+
+    >>> import dhsym
+    >>> dhsym.equations_of_motion(dhsym.load("spong_elbow")).M[1, 1]
+    I_2 + l_c2**2*m_2
+    """
+    return notebook_robot(robot).dynamics(to)

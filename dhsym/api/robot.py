@@ -184,6 +184,18 @@ class Robot(record.Robot):
             self._solved[key] = inverse_kinematics(self, free)
         return self._solved[key]
 
+    def dynamics(self, to: Frame | None = None):
+        """The equations of motion τ = M q̈ + C q̇ + g (dhsym.latex.dynamics_api): `.M`, `.C`, `.g`,
+        `.tau(...)`, `.latex()` …; of the links up to frame `to` (as printed) only.
+
+        >>> import dhsym
+        >>> dhsym.load("spong_elbow").dynamics().M[1, 1]
+        I_2 + l_c2**2*m_2
+        """
+        from ..latex.dynamics_api import robot_dynamics
+
+        return robot_dynamics(self, to)
+
 
 def notebook_robot(value) -> Robot:
     """The notebook robot of what a user hands a `dhsym` function: a robot, what `import_urdf` gives

@@ -35,9 +35,24 @@ def add_parsers(commands) -> None:
                           "sub-problem, every branch")
     sub.add_argument("--free", metavar="VAR", nargs="+", action="extend", default=[],
                      help="with --ik: joint variables kept as parameters (a redundant arm needs them)")
+    sub.add_argument("--dynamics", action="store_true",
+                     help="add the equations of motion: M(q), the Christoffel symbols, C, g(q) and one equation per "
+                          "joint (with --steps, their derivation by Lagrange's equations)")
     frame_options(sub)
     sub.add_argument("-o", "--output", metavar="FILE", help="write to FILE (atomically) instead of standard output")
     sub.set_defaults(run=run)
+
+
+def _document(robot: Robot, args, start, end, solved) -> str:
+    from ..dynamics.derive import TooLargeToPrint
+
+    try:
+        return document(robot, args.document, steps=args.steps, start=start, end=end, jacobian=args.jacobian,
+                        ik=solved, dynamics=args.dynamics)
+    except TooLargeToPrint as error:
+        from .dynamics import refusal  # says which --to of `dhsym dynamics` fits
+
+        raise refusal(robot, error, f"dhsym dynamics {args.robot}") from None
 
 
 def run(robot: Robot, args) -> str | None:
@@ -58,7 +73,7 @@ def run(robot: Robot, args) -> str | None:
     start = chosen_frame(robot, args.start, "--from", chain.first_frame)
     end = chosen_frame(robot, args.end, "--to", chain.last_frame)
     solved = (lambda: notebook_robot(robot).ik(args.free).solution) if args.ik else None
-    text = document(robot, args.document, steps=args.steps, start=start, end=end, jacobian=args.jacobian, ik=solved)
+    text = _document(robot, args, start, end, solved)
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[robot.path])

@@ -34,11 +34,13 @@ DOCUMENTS = ("slides", "article", "snippet")
 # ---------------------------------------------------------------- the three documents
 
 def document(robot: Robot, kind: str = "slides", steps: bool = False, start: Frame | None = None,
-             end: Frame | None = None, jacobian: bool = False, ik: Callable | None = None) -> str:
+             end: Frame | None = None, jacobian: bool = False, ik: Callable | None = None,
+             dynamics: bool = False) -> str:
     """The LaTeX text of a document of `kind` for `robot`, about the transform from the chain's frame
     `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics,
     `ik` the closed-form inverse kinematics: a function that gives the solution (dhsym.inverse), called
-    after the rest is laid out (a surface above this layer solves it, as `robot.ik()` does)."""
+    after the rest is laid out (a surface above this layer solves it, as `robot.ik()` does);
+    `dynamics` the equations of motion (a chain too large to print raises TooLargeToPrint)."""
     chain = robot.chain
     start = chain.frames[0] if start is None else start
     end = chain.frames[-1] if end is None else end
@@ -51,6 +53,10 @@ def document(robot: Robot, kind: str = "slides", steps: bool = False, start: Fra
         content += velocity_sections(robot, page, steps=steps)
     if ik is not None:
         content += ik_sections(ik(), page)
+    if dynamics:
+        from .dynamics import document_sections  # the dynamics layer only for documents that show it
+
+        content += document_sections(robot, page, steps)
     return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](robot, content, page)
 
 
