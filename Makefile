@@ -11,8 +11,10 @@ PIP := $(BIN)/python -m pip install -q --disable-pip-version-check
 JOBS ?= auto
 PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist loadfile
 
-# The fast lane for the edit-test loop (`make check`, under a minute on two cores): no notebooks, browser,
-# pdflatex, pip, fuzzing or closed-form solutions of real robots; the seconds-long tests are listed in tests/conftest.py.
+# The fast lane for the edit-test loop (`make check`): no notebooks, browser, pdflatex, pip, fuzzing or
+# closed-form solutions of real robots; each seconds-long test is marked @pytest.mark.slow where it is defined.
+# It takes about 270 s of CPU (1,459 tests, `/usr/bin/time -v make check`), so at best about 2¼ minutes
+# of wall time on two free cores, and several minutes on a loaded machine (7 minutes measured at load 4+).
 .PHONY: demo test check install tex browser node-packages bench lint notebooks web clean
 
 # The demo needs only what dhsym itself imports; the tests add pytest, jupyter, ruff and friends.
