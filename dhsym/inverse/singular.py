@@ -8,7 +8,8 @@ variables alone is one of det C's, the wrist axes' 3×3 determinant, worked out 
 milliseconds where det A takes most of the time (the same factors `dhsym jacobian` prints).
 
 >>> import dhsym
->>> wrist_factors(dhsym.load("puma560"))
+>>> puma = dhsym.load("puma560")
+>>> wrist_factors(puma.chain, puma.numbers)
 [sin(theta_5)]
 """
 from __future__ import annotations
@@ -17,14 +18,18 @@ import random
 
 import sympy
 
+from ..core.chain import Chain
+from ..core.robot import Robot
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
 from .subproblems import LINED_UP_UNSAID, angle_symbol, factor_bases, lined_up_angle
 
 
-def tie_to_jacobian(chain, derivation) -> None:
-    """Add to each degenerate case whose expression has a factor of det J the words that say so."""
+def tie_to_jacobian(chain: Chain, derivation, sample, numbers) -> None:
+    """Add to each degenerate case whose expression has a factor of det J the words that say so.
+    `chain` has frames 0..n; `sample` and `numbers` are its robot file's (the wrist centre is
+    found at its sample values, the factors are written with its numbers)."""
     joints = set(chain.joint_variables)
     found = []
     for expr, index in derivation.vanishing:
@@ -34,22 +39,23 @@ def tie_to_jacobian(chain, derivation) -> None:
     if not possible:
         return
     wrist = set(chain.joint_variables[3:])
-    if chain.n == 6 and all(b.free_symbols & joints <= wrist for b in possible) and wrist_centre(chain) is not None:
-        factors = wrist_factors(chain)
+    if chain.n == 6 and all(b.free_symbols & joints <= wrist for b in possible) and \
+            wrist_centre(chain, sample=sample) is not None:
+        factors = wrist_factors(chain, numbers, sample)
     else:
-        factors = determinant(chain).factors
+        factors = determinant(Robot(chain, sample=sample, numbers=numbers)).factors
     for index, bases in found:
         matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
         if matched:
             derivation.degenerate[index] += f"; a singularity of J: the factor {matched[0]} of det J"
 
 
-def wrist_factors(chain) -> list:
+def wrist_factors(chain: Chain, numbers, sample=None) -> list:
     """The factors of det C (the three wrist axes, in the axis frame of joint 5), in the form and
-    order that `determinant(chain).factors` gives them."""
-    centre, body = wrist_centre(chain), chain.last_frame
+    order that `determinant(chain).factors` gives them, written with `numbers`."""
+    centre, body = wrist_centre(chain, sample=sample or {}), chain.last_frame
     wrist = [angular_part(chain, j, axis_frame(chain, 5), centre, body) for j in (4, 5, 6)]
-    value = as_written(factored(factored(sympy.Matrix(wrist).T.det(method="berkowitz"))), chain.numbers)
+    value = as_written(factored(factored(sympy.Matrix(wrist).T.det(method="berkowitz"))), numbers)
     return joint_factors(value, chain)
 
 

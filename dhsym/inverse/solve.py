@@ -80,7 +80,7 @@ def solve(chain, free=()) -> Solution:
                           + (f" (in every pose of this arm {fixed})" if fixed else ""))
     say_lined_up(chain, derivation)
     if structure.wrist and len(unknowns) == 6 and chain.n == 6:
-        tie_to_jacobian(robot, derivation)
+        tie_to_jacobian(chain, derivation, robot.sample, robot.numbers)
     branches = _branches(assignments, derivation.signs, unknowns[0], wrist_joints)
     return Solution(robot, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
                     tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),
