@@ -103,6 +103,20 @@ def frame_named(text, frames: list, number=lambda frame: frame) -> Frame:
     raise UserError(f"no frame {shown} in this robot; frames are {', '.join(map(str, listed))}")
 
 
+def plain(chain: "Chain") -> "Chain":
+    """`chain` itself, when it is a plain Chain (frames 0..n); anything else, a Robot above all,
+    is a TypeError at once: code inside dhsym never renumbers frames silently.
+
+    >>> plain(object())
+    Traceback (most recent call last):
+    TypeError: a plain Chain (frames 0..n) is needed here, not object
+    """
+    if not isinstance(chain, Chain):
+        hint = "; a robot's is robot.chain, its printed numbers robot.numbering" if hasattr(chain, "chain") else ""
+        raise TypeError(f"a plain Chain (frames 0..n) is needed here, not {type(chain).__name__}{hint}")
+    return chain
+
+
 class Chain:
     """A serial chain: DH rows in one convention, with optional fixed base and tool steps. Plain
     math: what a robot file says about it (name, sample values, its frame numbering...) is kept

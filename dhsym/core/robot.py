@@ -36,9 +36,8 @@ import sympy
 from ..errors import UserError
 from .chain import Chain, Frame, TransformTooLarge, frame_named, too_large_message
 from .inertia import MassModel
+from .numbering import Numbering
 from .numbers import WrittenNumbers
-
-MAX_FIRST_FRAME = 999  # a robot file writes first_frame with at most 3 digits
 
 
 @dataclass(frozen=True)
@@ -73,9 +72,7 @@ class Robot:
     def __post_init__(self):
         if not isinstance(self.chain, Chain):
             raise TypeError(f"a Robot is made of a Chain, not {type(self.chain).__name__}")
-        offset = self.frame_offset
-        if isinstance(offset, bool) or not (isinstance(offset, int) and 0 <= offset <= MAX_FIRST_FRAME):
-            raise UserError(f"first_frame must be a whole number from 0 to {MAX_FIRST_FRAME}, not {offset!r}")
+        Numbering(self.frame_offset)  # checks it
         if self.masses.links and len(self.masses.links) != self.chain.n:
             raise ValueError(f"{len(self.masses.links)} links' masses for {self.chain.n} joints")
         unknown = [s for s in self.sample if s not in self.chain.symbols]
@@ -167,6 +164,12 @@ class Robot:
         return self.file or self.name or "<robot>"
 
     # ------------------------------------------------------------ frame numbers
+
+    @property
+    def numbering(self) -> Numbering:
+        """How its frames and joints are printed (dhsym.core.numbering): the one translation between
+        the chain's frames 0..n and the robot file's numbers."""
+        return Numbering(self.frame_offset)
 
     @property
     def frames(self) -> list[Frame]:
