@@ -177,6 +177,6 @@ def ik(robot, free=()):
     >>> [branch.name for branch in dhsym.ik(dhsym.load("planar2r")).branches]
     ['elbow down', 'elbow up']
     """
-    from .inverse.api import inverse_kinematics
+    from .api.ik import inverse_kinematics
 
     return inverse_kinematics(_robot_of(robot), free)

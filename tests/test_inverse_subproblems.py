@@ -144,7 +144,7 @@ def test_pythagoras_shortens_without_double_angles_as_a_book_does():
 def test_wrist_singularity_is_a_factor_of_the_whole_determinant():
     for name in ("puma560", "stanford", "inline6", "cylindrical_wrist"):
         chain = dhsym.load(name)
-        found = wrist_factors(chain)
+        found = wrist_factors(chain.chain, chain.numbers, chain.sample)
         assert found and all(f in determinant(chain).factors for f in found), name
 
 

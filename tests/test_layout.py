@@ -14,13 +14,13 @@ PACKAGE = Path(__file__).parent.parent / "dhsym"
 # Each layer may import the layers before it (and itself), never one after it.
 # `geometry` (frames from joint axes) is math on core that the robot-file reader uses for `axes:`.
 LAYERS = ["errors", "core", "geometry", "io", "velocity", "inverse", "dynamics", "printing", "latex", "plot",
-          "checking", "cli", "web"]
+          "checking", "api", "cli", "web"]
 # Conveniences reach up, lazily inside a method: Jupyter shows a chain or a robot as its DH
 # table, `.jacobian()` and `.ik()` hand over to the layers built on core, and the object
 # `.ik()` returns shows itself as text and LaTeX.
 ALLOWED_UPWARD = {("core.chain", "printing.render"), ("core.chain", "velocity.jacobian"),
-                  ("core.chain", "inverse.api"), ("core.robot", "printing.render"), ("core.robot", "velocity.jacobian"),
-                  ("core.robot", "inverse.api"), ("inverse.api", "latex.ik"), ("inverse.api", "printing.ik")}
+                  ("core.chain", "api.ik"), ("core.robot", "printing.render"), ("core.robot", "velocity.jacobian"),
+                  ("core.robot", "api.ik")}
 
 
 def _modules():

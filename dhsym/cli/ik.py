@@ -33,7 +33,7 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str:
-    from ..inverse.api import inverse_kinematics  # here: the other commands need no solver
+    from ..api.ik import inverse_kinematics  # here: the other commands need no solver
 
     result = inverse_kinematics(robot, args.free)
     if args.format == "json":
@@ -43,7 +43,7 @@ def run(robot, args) -> str:
     if args.format == "latex":
         from ..latex.ik import snippet  # the LaTeX layout lives with the documents
 
-        return snippet(result.solution)
+        return snippet(result.solution, result.robot)
     return result.text(args.width, args.ascii)
 
 

@@ -229,7 +229,7 @@ class Chain:
         """The closed-form inverse kinematics, with the joint variables `free` (symbols or names)
         kept as parameters: its branches, `.evaluate(T)`, `.latex()` and `.code()`; see
         dhsym.inverse. Solved once per choice of `free`."""
-        from ..inverse.api import inverse_kinematics  # the inverse layer is built on core
+        from ..api.ik import inverse_kinematics  # the facade stands above every layer
 
         key = ("ik", frozenset(getattr(v, "name", str(v)) for v in free))
         if key not in self._cache:

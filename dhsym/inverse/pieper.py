@@ -22,21 +22,23 @@ from __future__ import annotations
 
 import sympy
 
+from ..core.chain import Chain, plain
 from ..core.numbers import WrittenNumbers
 from ..core.transforms import joint_axis_frame
 from ..errors import UserError
 from .fresh import fresh, fresh_symbol
 from .quartic import SIGNS, Complex, ferrari
 from .scan import Derivation
-from .solution import Step
+from .sentences import CentreOnAxis, Joint, RealRoot, RootAtPi, Subproblem, Undetermined
+from .solution import DerivationStep
 from .written import Written, exact
 
 FRACTIONS = WrittenNumbers()  # a file without decimals: the quartic's numbers are fractions
 NAMES = ("A_4", "A_3", "A_2", "A_1", "A_0", "p", "q", "r", "m", "w", "z", "s")
 
 
-def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivation: Derivation | None = None,
-           taken=frozenset(), known_in=None) -> Derivation:
+def pieper(chain: Chain, numbers: WrittenNumbers, point: sympy.Matrix, local: sympy.Matrix, holder, arm,
+           derivation: Derivation | None = None, taken=frozenset(), known_in=None) -> Derivation:
     """Add to `derivation` θ1, θ2, θ3 (the variables `arm`, counted from the frame `known_in`) of
     the joints between that frame (the chain's first by default) and the wrist whose centre sits at
     `local` in frame `holder` and at `point` in `known_in`; `taken`: names already in use (the wrist
@@ -44,7 +46,7 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
     from the end, each joint turns the rest of the chain by −θ. Raises UserError when the arm is not
     of the general kind (then a sub-problem applies, or nothing does)."""
     derivation = Derivation() if derivation is None else derivation
-    chain = robot.chain
+    written, chain = numbers, plain(chain)
     numbers = [chain.joint_variables.index(v) + 1 for v in arm]
     if len(arm) != 3 or any(chain.rows[j - 1].joint != "R" for j in numbers):
         raise UserError("Pieper's method needs three revolute joints before the wrist")
@@ -57,7 +59,6 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
     q = (seen[:3, :3] * point + seen[:3, 3]).applyfunc(sympy.expand)
     first, second, last = at_zero(axes[0], axes[1]), at_zero(axes[1], axes[2]), at_zero(axes[2], holder)
     t1, t2, t3 = arm
-    n1, n2, n3 = (j + robot.frame_offset for j in numbers)  # as the robot numbers its joints
     c2, s2, c3, s3 = sympy.cos(t2), sympy.sin(turn * t2), sympy.cos(t3), sympy.sin(t3)
     centre = last[:3, :3] * local + last[:3, 3]
     h = (second[:3, :3] * _turned(centre, c3, turn * s3) + second[:3, 3]).applyfunc(sympy.expand)
@@ -81,9 +82,9 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
     # The quartic's coefficients are numbers for a robot of numbers: each one number (see _in_one_style)
     quadric = _reduced(exact((u2x ** 2 + u2y ** 2) * left[0] ** 2 - 2 * (u1x * u2x + u1y * u2y) * left[0] * left[1]
                              + (u1x ** 2 + u1y ** 2) * left[1] ** 2 - det ** 2 * planar), c3, s3)
-    coefficients = _half_angle(quadric, c3, s3, (r_c, exact(height)), robot.numbers)
+    coefficients = _half_angle(quadric, c3, s3, (r_c, exact(height)), written)
     if sympy.expand(exact(coefficients[0])) == 0:
-        raise UserError(f"Pieper's method: the quartic in tan(θ{n3}/2) loses its leading term (θ{n3} = π solves "
+        raise UserError(f"Pieper's method: the quartic in tan({t3}/2) loses its leading term ({t3} = π solves "
                         "every pose): not handled")
     definitions, root = ferrari(coefficients, names[8:], signs)
     scale = sympy.sign(det) if det.is_number else det  # det² > 0: the pair's atan2 keeps its quadrant
@@ -100,29 +101,30 @@ def pieper(robot, point: sympy.Matrix, local: sympy.Matrix, holder, arm, derivat
                                (t1, turn * sympy.atan2(_tidy(q[1] * g1 - q[0] * g2), _tidy(q[0] * g1 + q[1] * g2)))]
     derivation.signs.extend([(signs[0], t3, "quartic"), (signs[1], t3, "quartic")])
     a4, a3, a2, a1, a0 = (sympy.Symbol(n, real=True) for n in names[8:13])
+    j1, j2, j3 = (Joint(j) for j in numbers)
     derivation.steps += [
-        Step(r_c, _tidy(length + 2 * (u1.T * _turned(h, c2, s2))[0] + offset.dot(offset)),
-             f"Pieper: a distance that θ{n1} does not change", (), "the squared distance of the wrist centre from "
-             f"the origin of axis {n1}'s frame"),
-        Step(height, _tidy((u2.T * _turned(h, c2, s2))[0] + offset[2]),
-             f"Pieper: a height that θ{n1} does not change", (), f"the wrist centre's coordinate along axis {n1}"),
-        Step(a4 * u ** 4 + a3 * u ** 3 + a2 * u ** 2 + a1 * u + a0, sympy.Integer(0),
-             f"a quartic in u = tan(θ{n3}/2), by Ferrari's method", (t3,),
-             f"θ{n2} eliminated from the two equations by c{n2}² + s{n2}² = 1"),
-        Step(f1 * c2 - f2 * s2, k1 / norm, "atan2 of a pair", (t2,),
-             f"the two equations solved for the vector (f1, f2) turned by θ{n2} (equation 1 of 2)"),
-        Step(f1 * s2 + f2 * c2, k2 / norm, "atan2 of a pair", (t2,), "the same (equation 2 of 2)"),
-        Step(g1 * sympy.cos(t1) - g2 * sympy.sin(turn * t1), q[0], "atan2 of a pair", (t1,),
-             f"the x of the wrist centre in axis {n1}'s frame (equation 1 of 2)"),
-        Step(g1 * sympy.sin(turn * t1) + g2 * sympy.cos(t1), q[1], "atan2 of a pair", (t1,),
-             "its y (equation 2 of 2)"),
+        DerivationStep(r_c, _tidy(length + 2 * (u1.T * _turned(h, c2, s2))[0] + offset.dot(offset)),
+                       Subproblem("Pieper's distance", numbers[0]), (),
+                       ("the squared distance of the wrist centre from the origin of axis ", j1, "'s frame")),
+        DerivationStep(height, _tidy((u2.T * _turned(h, c2, s2))[0] + offset[2]),
+                       Subproblem("Pieper's height", numbers[0]), (),
+                       ("the wrist centre's coordinate along axis ", j1)),
+        DerivationStep(a4 * u ** 4 + a3 * u ** 3 + a2 * u ** 2 + a1 * u + a0, sympy.Integer(0),
+                       Subproblem("Ferrari's quartic", numbers[2]), (t3,),
+                       ("θ", j2, " eliminated from the two equations by c", j2, "² + s", j2, "² = 1")),
+        DerivationStep(f1 * c2 - f2 * s2, k1 / norm, Subproblem("atan2 of a pair"), (t2,),
+                       ("the two equations solved for the vector (f1, f2) turned by θ", j2, " (equation 1 of 2)")),
+        DerivationStep(f1 * s2 + f2 * c2, k2 / norm, Subproblem("atan2 of a pair"), (t2,),
+                       ("the same (equation 2 of 2)",)),
+        DerivationStep(g1 * sympy.cos(t1) - g2 * sympy.sin(turn * t1), q[0], Subproblem("atan2 of a pair"), (t1,),
+                       ("the x of the wrist centre in axis ", j1, "'s frame (equation 1 of 2)")),
+        DerivationStep(g1 * sympy.sin(turn * t1) + g2 * sympy.cos(t1), q[1], Subproblem("atan2 of a pair"), (t1,),
+                       ("its y (equation 2 of 2)",)),
     ]
-    derivation.conditions.append(f"quartic root k (for {t3}) exists where the root {u} of the quartic is real: 4, 2 "
-                                 "or none of the four roots are, and a root that is not real is a branch that does "
-                                 "not exist")
-    derivation.degenerate += [f"{f1 ** 2 + f2 ** 2} = 0: {t2} is not determined (the wrist centre on axis {n2})",
-                              f"{g1 ** 2 + g2 ** 2} = 0: {t1} is not determined (the wrist centre on axis {n1})",
-                              f"{a4} = 0: {t3} = pi is a root, which u = tan({t3}/2) does not reach"]
+    derivation.conditions.append(RealRoot(t3, u))
+    derivation.degenerate += [Undetermined((f1 ** 2 + f2 ** 2,), t2, CentreOnAxis(numbers[1])),
+                              Undetermined((g1 ** 2 + g2 ** 2,), t1, CentreOnAxis(numbers[0])),
+                              RootAtPi(a4, t3, u)]
     return derivation
 
 

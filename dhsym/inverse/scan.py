@@ -35,7 +35,8 @@ from . import algebra
 from . import subproblems as sp
 from .fresh import fresh, fresh_symbol
 from .lookups import Memos
-from .solution import Step
+from .sentences import ByEquations, Exists, Subproblem, Undetermined
+from .solution import DerivationStep
 from .witness import number_at
 
 WITNESS_ZERO = 1e-8
@@ -322,9 +323,10 @@ def _apply(rule, candidates, derivation, constants, memos, witness=None) -> symp
     if rule == "pair":
         for index, c in enumerate(candidates, start=1):
             a, b, k = c.form
-            derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), k,
-                                         "sum of parallel-axis angles" if angle != variable else "atan2 of a pair",
-                                         (variable,), f"{c.equation.where} (equation {index} of 2)"))
+            derivation.steps.append(DerivationStep(
+                a * sympy.cos(shown) + b * sympy.sin(shown), k,
+                Subproblem("sum of parallel-axis angles" if angle != variable else "atan2 of a pair"), (variable,),
+                (*c.equation.where, f" (equation {index} of 2)")))
         det = sp.determinant(candidates[0].form, candidates[1].form)
         if not det.is_number and algebra.has_square_pair(det) and length(det) < 60:
             reduced = algebra.pythagoras(det)  # cos² + sin² = 1, but no double angles: a book writes c1, not sin(2θ1)
@@ -339,18 +341,19 @@ def _apply(rule, candidates, derivation, constants, memos, witness=None) -> symp
     sigma = fresh_symbol(f"sigma_{len(derivation.signs) + 1}", derivation.reserved)
     if rule == "linear":
         a, b = first.form
-        derivation.steps.append(Step(a * variable, -b, "prismatic joint from a coordinate", (variable,),
-                                     first.equation.where))
+        derivation.steps.append(DerivationStep(a * variable, -b, Subproblem("prismatic joint from a coordinate"),
+                                               (variable,), first.equation.where))
         if not a.is_number:
-            derivation.degenerate.append(f"{a} = 0: {variable} is not determined by this equation")
+            derivation.degenerate.append(Undetermined((a,), variable, ByEquations(1)))
         return sp.prismatic(first.form, sigma)
     if rule == "quadratic":
         a, b, c = first.form
-        derivation.steps.append(Step(a * variable ** 2 + b * variable, -c, "prismatic joint from a distance",
-                                     (variable,), first.equation.where))
+        derivation.steps.append(DerivationStep(a * variable ** 2 + b * variable, -c,
+                                               Subproblem("prismatic joint from a distance"), (variable,),
+                                               first.equation.where))
         derivation.signs.append((sigma, variable, "prismatic"))
         root = b ** 2 - 4 * a * c if b != 0 else -c / a
-        derivation.conditions.append(f"{sympy.factor_terms(root)} >= 0")
+        derivation.conditions.append(Exists(sympy.factor_terms(root)))
         return sp.prismatic(first.form, sigma)
     slides = {name: value for name, value in derivation.assignments if value.is_polynomial(*value.free_symbols)}
     a, b, c = (algebra.shorter_with(x, slides) for x in first.form)  # the SCARA's d3 cancels from D
@@ -362,24 +365,23 @@ def _apply(rule, candidates, derivation, constants, memos, witness=None) -> symp
         a, b, c, shape = min(sp.book_variants(a, b, c, sigma),
                              key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
     c = _named(derivation, "D" if law else "K", c)
-    derivation.steps.append(Step(a * sympy.cos(shown) + b * sympy.sin(shown), c,
-                                 "law of cosines" if law else "a cos θ + b sin θ = c", (variable,),
-                                 first.equation.where))
+    derivation.steps.append(DerivationStep(a * sympy.cos(shown) + b * sympy.sin(shown), c,
+                                           Subproblem("law of cosines" if law else "a cos θ + b sin θ = c"),
+                                           (variable,), first.equation.where))
     derivation.signs.append((sigma, variable, "law" if law else "one"))
     root = sp.existence(a, b, c)
     if root is not None:
-        derivation.conditions.append(f"{root} >= 0 (else {said} has no real value: the target is out of reach; "
-                                     "where it is 0 the two roots meet)")
+        derivation.conditions.append(Exists(root, unknown=said))
     if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
-        derivation.degenerate.append(f"{sp.unsigned(a)} = 0 and {sp.unsigned(b)} = 0: {said} is not determined "
-                                     "by this equation")
+        derivation.degenerate.append(Undetermined((sp.unsigned(a), sp.unsigned(b)), said, ByEquations(1)))
     return sp.one_equation(a, b, c, sigma, shape)
 
 
 def _double_root(a, b, c, law, variable, where, derivation) -> sympy.Expr:
     """The one root where a² + b² = c² at every pose of the arm (see subproblems.double_root)."""
     c = _named(derivation, "D" if law else "K", c)
-    derivation.steps.append(Step(a * sympy.cos(variable) + b * sympy.sin(variable), c,
-                                 ("law of cosines" if law else "a cos θ + b sin θ = c") + ", one double root",
-                                 (variable,), f"{where}; a² + b² = c² at every pose of the arm"))
+    derivation.steps.append(DerivationStep(a * sympy.cos(variable) + b * sympy.sin(variable), c,
+                                           Subproblem("law of cosines" if law else "a cos θ + b sin θ = c",
+                                                      double_root=True),
+                                           (variable,), (*where, "; a² + b² = c² at every pose of the arm")))
     return sp.double_root(a, b, c)

@@ -48,7 +48,8 @@ def document(chain, kind: str = "slides", steps: bool = False, start=None, end=N
     if jacobian:
         content += velocity_sections(chain, page, steps=steps)
     if ik:
-        content += ik_sections(chain.ik(free).solution, page)
+        result = chain.ik(free)
+        content += ik_sections(result.solution, result.robot, page)
     return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
 
 

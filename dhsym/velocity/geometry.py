@@ -15,6 +15,7 @@ import random
 
 from ..core.numeric import NumericChain
 from ..core.robot import as_chain, as_robot
+from ..core.sampling import random_pose
 from ..core.vectors import cross, dot
 from .jacobian import axis_frame
 
@@ -26,18 +27,10 @@ TOLERANCE = 1e-9
 
 
 def sample_values(chain, rng: random.Random, sample=None) -> dict:
-    """Joint variables uniform in (−π, π); constants from `sample` (default: the robot's, when
-    `chain` is a Robot), else in (0.5, 1.5)."""
+    """A random pose by the package's one rule (dhsym.core.sampling); constants from `sample`
+    (default: the robot's, when `chain` is a Robot)."""
     sample = as_robot(chain).sample if sample is None else sample
-    values = {}
-    for symbol in sorted(chain.symbols, key=str):
-        if symbol in chain.joint_variables:
-            values[symbol] = rng.uniform(-math.pi, math.pi)
-        elif symbol in sample:
-            values[symbol] = float(sample[symbol])
-        else:
-            values[symbol] = rng.uniform(0.5, 1.5)
-    return values
+    return random_pose(as_chain(chain), rng, sample)
 
 
 _EVALUATORS: dict = {}  # (chain, its constants' values) -> NumericChain: many poses of one arm set it up once

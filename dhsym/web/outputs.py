@@ -115,10 +115,10 @@ def _jacobian(robot, frame, point, page: Page) -> Output:
 
 
 def _inverse(robot, free, page: Page) -> Output:
-    from ..inverse.api import inverse_kinematics  # the solver only when the inverse kinematics is asked for
+    from ..api.ik import inverse_kinematics  # the solver only when the inverse kinematics is asked for
     from ..latex.ik import ik_sections
 
-    solution = inverse_kinematics(robot, free).solution
-    parts = section_parts(ik_sections(solution, page, headings=False))
+    result = inverse_kinematics(robot, free)
+    parts = section_parts(ik_sections(result.solution, result.robot, page, headings=False))
     return Output(_title(robot, "inverse kinematics"), parts, latex_of(parts))
 
