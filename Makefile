@@ -57,6 +57,7 @@ bench: install web browser
 	$(BIN)/python benchmarks/ik_speed.py
 	$(BIN)/python benchmarks/ik_peers.py
 	$(BIN)/python benchmarks/dynamics_speed.py
+	$(BIN)/python benchmarks/ik_numeric_speed.py
 	$(BIN)/python benchmarks/startup.py
 	$(BIN)/python benchmarks/web_speed.py
 

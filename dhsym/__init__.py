@@ -168,15 +168,23 @@ def import_urdf(path, base: str | None = None, tip: str | None = None, conventio
     return imported(path, base, tip, convention, variables, xacro_args, package_paths)
 
 
-def ik(robot, free=()):
+def ik(robot, free=(), numeric: bool = False, constants=None):
     """The closed-form inverse kinematics, every branch named, as `dhsym ik`: `.branches`,
     `.evaluate(T)` (all branches at once, numpy), `.latex()`, `.text()`, `.code()`; the joint
-    variables `free` stay parameters (a redundant arm).
+    variables `free` stay parameters (a redundant arm). With `numeric`, as `dhsym ik --numeric`:
+    every real solution in numbers, for any arm (dhsym.inverse.numeric), its constants from
+    `constants` or the robot file's sample values.
 
     >>> import dhsym
     >>> [branch.name for branch in dhsym.ik(dhsym.load("planar2r")).branches]
     ['elbow down', 'elbow up']
+    >>> dhsym.ik(dhsym.load("ur5"), numeric=True)
+    NumericInverse('Universal Robots UR5', 6 joints)
     """
+    if numeric:
+        from .api.ik import numeric_inverse_kinematics
+
+        return numeric_inverse_kinematics(_robot_of(robot), free, constants)
     from .api.ik import inverse_kinematics
 
     return inverse_kinematics(_robot_of(robot), free)

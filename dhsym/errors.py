@@ -54,3 +54,8 @@ class UserError(Exception):
 
     def __str__(self) -> str:
         return f"{self.where}: {self.message}" if self.where else self.message
+
+
+class NoClosedForm(UserError):
+    """A closed-form inverse kinematics refused because the arm has none by the course's rules (the
+    command line then names the numeric command that answers instead)."""

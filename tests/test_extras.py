@@ -35,6 +35,7 @@ def test_the_core_commands_run_without_the_extras(tmp_path):
 @pytest.mark.parametrize("command, extra, missing", [
     (["plot", "planar2r", "-o", "arm.png"], "plot", "matplotlib"),
     (["import", str(DATA / "ur5.urdf")], "urdf", "lxml"),
+    (["ik", str(DATA / "numeric" / "offset_wrist_cobot.yaml"), "--numeric"], "plot", "numpy"),
 ])
 def test_a_command_that_needs_a_missing_extra_names_it(command, extra, missing, tmp_path):
     result = without_extras(*command, cwd=tmp_path)
@@ -48,3 +49,10 @@ def _what(missing: str) -> str:
     from dhsym.cli.messages import EXTRAS
 
     return EXTRAS[missing][0]
+
+
+def test_the_refusal_of_a_closed_form_names_the_numeric_command_without_numpy(tmp_path):
+    robot = str(DATA / "numeric" / "offset_wrist_cobot.yaml")
+    result = without_extras("ik", robot, cwd=tmp_path)
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr.endswith(f"`dhsym ik {robot} --numeric` gives every solution in numbers\n")

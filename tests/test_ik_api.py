@@ -98,3 +98,14 @@ def test_a_misspelt_constant_is_an_error_naming_the_constants():
                                         "joint variables theta_2$"):
         free.evaluate(np.eye(4), theta_1=0.1, theta_2=0.2)
     assert ik.evaluate(np.eye(4), a_2=0.5).shape == (2, 4)
+
+
+def test_the_files_values_for_other_chapters_are_accepted_and_not_needed():
+    """An imported arm's sample holds g and the links' masses for its dynamics: evaluate() takes the whole
+    sample back without complaint, while a name the file does not have stays an error."""
+    robot = load("planar2r").replace(sample={**load("planar2r").sample, sympy.Symbol("g", real=True): 9.81})
+    ik = robot.ik()
+    values = {str(k): v for k, v in robot.sample.items()}
+    assert ik.evaluate(np.eye(4), **values).shape == (2, 2)
+    with pytest.raises(UserError, match="has no constant gg"):
+        ik.evaluate(np.eye(4), gg=1.0)

@@ -29,7 +29,7 @@ def no_search(monkeypatch):
 @pytest.mark.parametrize("name, message", [
     ("cli_ik_entry_multiplies_out", "joint row 3 a multiplies out to 969 terms, and the inverse kinematics' "
                                     "equations square it"),
-    ("cli_ik_24_joints_18_free", "would hold more than the 30,000 expression nodes that dhsym searches"),
+    ("cli_ik_24_joints_18_free", "would hold more than the 60,000 expression nodes that dhsym searches"),
 ])
 def test_too_much_work_is_refused_before_the_derivation_starts(name, message, no_search):
     robot = load(str(CORPUS / f"{name}.yaml"))

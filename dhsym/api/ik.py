@@ -38,6 +38,16 @@ def inverse_kinematics(robot, free=()) -> "InverseKinematics":
     return InverseKinematics(robot, solution)
 
 
+def numeric_inverse_kinematics(robot, free=(), constants=None):
+    """The numeric inverse kinematics (dhsym.inverse.numeric, numpy) of `robot` (a Robot, or a plain
+    Chain) with the joint variables `free` given; `constants` (symbols or names to numbers) take
+    precedence over the robot file's sample values."""
+    from ..inverse.numeric.solver import numeric_inverse  # numpy, only when numbers are asked for
+
+    robot = Robot(robot) if isinstance(robot, Chain) else robot
+    return numeric_inverse(robot.chain, free, constants, sample=robot.sample, name=robot.name)
+
+
 class InverseKinematics:
     """A closed-form solution (`solution`, see dhsym.inverse.solution) of a `robot` and what a user
     does with it. It pickles and deep-copies (the solution's expressions as they are); the
@@ -55,7 +65,7 @@ class InverseKinematics:
 
     def _compiled(self) -> Program:
         if self._program is None:
-            self._program = Program(self.solution, self.robot.name)
+            self._program = Program(self.solution, self.robot.name, getattr(self.robot, "sample", {}))
         return self._program
 
     def __repr__(self) -> str:

@@ -11,7 +11,7 @@ import sys
 
 # The optional packages, by the module a command imports: what needs it, and the extra that installs it.
 EXTRAS = {"matplotlib": ("dhsym plot draws with it", "plot"),
-          "numpy": ("dhsym plot and ik(...).evaluate compute with it", "plot"),
+          "numpy": ("dhsym plot, ik --numeric and ik(...).evaluate compute with it", "plot"),
           "lxml": ("dhsym import reads URDF files with it", "urdf"),
           "xacro": ("dhsym import expands .xacro files with it", "xacro")}
 

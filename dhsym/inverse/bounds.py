@@ -29,7 +29,7 @@ from ..errors import UserError
 from ..velocity.geometry import axis_line, cross, minus, norm, poses
 
 ENTRY_EXTRA_TERMS = 40  # (l1 + l2 + l3 + l4)^4, 35 terms, takes the PUMA's derivation from 1 s to 3 s; ^6 (84) to 20 s
-POOL_MAX_NODES = 30_000  # the iiwa's 6,733 take a second; a planar 16R with 13 joints --free, 18,944, half a minute
+POOL_MAX_NODES = 60_000  # general 6R arms with a wrist reach 36,000 (3–4 s); a planar 24R, 18 --free: 69,456 (84 s)
 POSE_DOF = 6  # a pose fixes six numbers
 RANK_TRIALS = 3  # generic poses: the rank is the largest found (one pose may be singular)
 RANK_TOLERANCE = 1e-8  # of unit columns: far above rounding, far below any real motion

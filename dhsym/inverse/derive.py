@@ -89,7 +89,7 @@ def _without_wrong_roots(problem: Problem):
             if not unique:
                 raise
             joints = sorted(unique, key=problem.unknowns.index)
-            raise UserError(f"{refusal}; where {_names(joints)} came from an equation with two roots, one root "
+            raise type(refusal)(f"{refusal}; where {_names(joints)} came from an equation with two roots, one root "
                             f"missed the target (an arm of {len(problem.unknowns)} unknown joints cannot reach every "
                             f"pose), and no equation gives {'it' if len(joints) == 1 else 'them'} with one root"
                             ) from None

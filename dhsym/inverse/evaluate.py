@@ -36,20 +36,23 @@ def evaluate(solution, T, constants=None, name: str = ""):
 
 class Program:
     """The generated module's `ik` for one solution, compiled once, and the names of its keyword
-    arguments: what `robot.ik().evaluate()` keeps between calls (each solution its own)."""
+    arguments: what `robot.ik().evaluate()` keeps between calls (each solution its own). `others`:
+    names of the robot file's values for other chapters (g, masses), accepted and left out."""
 
-    def __init__(self, solution, name: str = ""):
+    def __init__(self, solution, name: str = "", others=()):
         namespace: dict = {}
         exec(compile(module_text(solution, name), f"<ik of {name}>", "exec"), namespace)  # our own text
         self.function = namespace["ik"]
         self.keywords = keyword_names(solution)  # constant or --free joint name -> keyword of ik()
         sample = {str(symbol) for symbol in solution.sample}
         self.required = [known for known in self.keywords if known not in sample]
+        self.unused = set(map(str, others)) - set(self.keywords)  # the file's other values (g, masses): not needed
         self.free = {symbol.name for symbol in solution.free}
         self.robot = name or "the robot"
 
     def __call__(self, T, constants=None):
         given = {getattr(k, "name", str(k)): v for k, v in (constants or {}).items()}
+        given = {name: value for name, value in given.items() if name not in self.unused}
         for name in given:
             if name not in self.keywords:
                 raise UserError(self._unknown(name))

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from ..errors import UserError
+from ..errors import NoClosedForm
 from . import algebra
 from .fresh import fresh_symbol
 from .lookups import Memos
@@ -63,7 +63,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
         option = best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, memos, unique)
         if option is None:
             solved = [str(v) for v in unknowns if v not in remaining]
-            raise UserError("no closed form by the course's rules: "
+            raise NoClosedForm("no closed form by the course's rules: "
                             + (f"after {', '.join(solved)}, " if solved else "")
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         candidates = option.candidates

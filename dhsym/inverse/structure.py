@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from ..core.chain import Chain, plain
 from ..core.sampling import random_pose
-from ..errors import UserError
+from ..errors import NoClosedForm, UserError
 from ..velocity.geometry import axis_line, cross, distance_to_axis, nearest_point, norm, poses
 
 TOLERANCE = 1e-7
@@ -70,7 +70,7 @@ def analyse(chain: Chain, free=(), sample=None) -> Structure:
         or tuple(unknowns) in meeting)
     first_wrist = tuple(unknowns[:3]) if len(unknowns) == 6 and tuple(unknowns[:3]) in meeting else None
     if len(unknowns) == 6 and wrist is None and first_wrist is None and not parallel:
-        raise UserError("no closed form by the course's rules: no three consecutive axes meet in a point at the "
+        raise NoClosedForm("no closed form by the course's rules: no three consecutive axes meet in a point at the "
                         "start or the end of the arm, or are parallel (Pieper's condition)")
     return Structure(unknowns, wrist, parallel[0] if parallel else None, spherical, first_wrist)
 
