@@ -110,11 +110,7 @@ def transform_equations(chain: Chain, target: sympy.Matrix, position: bool, star
     The two sides of each product are expanded once (per i, per j) and only the elements that
     are asked for are multiplied out: expansion is canonical, so the result is the same as
     expanding the whole product, at a fraction of the work."""
-    frames, first, last = chain.frames, chain.first_frame, chain.last_frame
-    if end is not None:
-        frames = frames[:frames.index(end) + 1]
-    if start is not None:
-        frames = frames[frames.index(start):]
+    frames, first, last = _frames_between(chain, start, end), chain.first_frame, chain.last_frame
     variables = frozenset(chain.joint_variables)
     columns = 4 if position else 3
     memo: dict = {}  # contracted tails of steps, shared by the squared lengths
@@ -149,20 +145,36 @@ def transform_equations(chain: Chain, target: sympy.Matrix, position: bool, star
                     equations.append(Equation(written[seen], chain_side[r, c], _kind(c, j == last),
                                               (f"element ({r + 1}, {c + 1}) of ", *where), (i, j)))
             if position:
-                tip = afters[j][:3, 3]
                 if j not in tip_lengths:
                     tip_lengths[j] = squared_length(chain.steps(last, j), variables, memo=memo, ring=ring)
-                # ‖T·b‖² = ‖b‖² + 2 p·(R b) + ‖p‖² for the unit-orthogonal R of the target
-                rotated = target[:3, :3] * tip
-                inner = (tip_lengths[j]
-                         + ring.expand(2 * sum(target[k, 3] * rotated[k] for k in range(3))
-                                        + sum(target[k, 3] ** 2 for k in range(3))))
-                point = rotated + target[:3, 3]
-                seen_length = squared_length(chain.steps(i, first), variables, point, inner, memo, ring)
-                there_length = squared_length(chain.steps(i, j), variables, memo=memo, ring=ring)
-                equations.append(Equation(seen_length, there_length, _kind(3, j == last),
-                                          ("squared length of ", *where), (i, j)))
+                equations.append(_length_equation(chain, target, (i, j), afters[j][:3, 3], tip_lengths[j], memo, ring))
     return equations
+
+
+def _frames_between(chain: Chain, start, end) -> list:
+    """The chain's frames from `start` to `end` (None: its first, its last)."""
+    frames = chain.frames
+    if end is not None:
+        frames = frames[:frames.index(end) + 1]
+    if start is not None:
+        frames = frames[frames.index(start):]
+    return frames
+
+
+def _length_equation(chain: Chain, target, pair, tip, tip_length, memo: dict, ring) -> Equation:
+    """The squared length of the vector from frame i's origin to the tip's point `tip` of frame j,
+    both ways: through the target and through the chain (`tip_length`: ‖tip‖², seen from the end)."""
+    i, j = pair
+    variables = frozenset(chain.joint_variables)
+    # ‖T·b‖² = ‖b‖² + 2 p·(R b) + ‖p‖² for the unit-orthogonal R of the target
+    rotated = target[:3, :3] * tip
+    inner = (tip_length + ring.expand(2 * sum(target[k, 3] * rotated[k] for k in range(3))
+                                      + sum(target[k, 3] ** 2 for k in range(3))))
+    point = rotated + target[:3, 3]
+    seen_length = squared_length(chain.steps(i, chain.first_frame), variables, point, inner, memo, ring)
+    there_length = squared_length(chain.steps(i, j), variables, memo=memo, ring=ring)
+    return Equation(seen_length, there_length, _kind(3, j == chain.last_frame),
+                    ("squared length of ", Frame(i), "T", Frame(j)), (i, j))
 
 
 def _kind(column: int, to_last: bool) -> str:
