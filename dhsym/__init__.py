@@ -39,7 +39,7 @@ _LAZY = {
     "UserError": ("dhsym.errors", "UserError"),
     "Location": ("dhsym.errors", "Location"),
 }
-_COMMANDS = ["fk", "jacobian", "convert", "check", "screws", "import_urdf", "ik"]
+_COMMANDS = ["fk", "jacobian", "convert", "check", "screws", "import_urdf", "ik", "equations_of_motion"]
 
 __all__ = sorted([*_LAZY, *_COMMANDS])
 
@@ -188,3 +188,18 @@ def ik(robot, free=(), numeric: bool = False, constants=None):
     from .api.ik import inverse_kinematics
 
     return inverse_kinematics(_robot_of(robot), free)
+
+
+def equations_of_motion(robot, to: int | None = None):
+    """The dynamics τ = M(q) q̈ + C(q, q̇) q̇ + g(q) in textbook form, as `dhsym dynamics`: `.M`, `.C`,
+    `.g`, `.christoffel`, `.tau(...)` (symbolic, or numbers for states), `.regressor()`, `.steps()`,
+    `.latex()`, `.text()`, `.code()`; of the links up to frame `to` only (`dhsym dynamics --to`).
+    (`dhsym.dynamics` is the package of the math, so this function has the name of what it gives.)
+
+    >>> import dhsym
+    >>> dhsym.equations_of_motion(dhsym.load("spong_elbow")).M[1, 1]
+    I_2 + l_c2**2*m_2
+    """
+    from .latex.dynamics_api import robot_dynamics
+
+    return robot_dynamics(_robot_of(robot), to)

@@ -35,15 +35,18 @@ ROOT = Path(__file__).resolve().parent.parent
 CACHE = ROOT / "build" / "web-cache"
 PYODIDE = ROOT / "node_modules" / "pyodide"
 MATHJAX = ROOT / "node_modules" / "mathjax-full" / "es5" / "tex-svg.js"
-RUNTIME = ("pyodide.mjs", "pyodide.asm.mjs", "pyodide.asm.wasm")  # and python_stdlib.zip, byte-compiled
+# Pyodide's runtime: its loader as it is, and the WebAssembly and its JavaScript gzip-compressed
+# (a quarter of their bytes; the page inflates them, so that any static host serves them small).
+LOADER = "pyodide.mjs"
+RUNTIME = ("pyodide.asm.mjs", "pyodide.asm.wasm")
+# What the page's Python loads at start: the runtime, its saved state, and the zips of the modules not in it.
+STARTS_WITH = [f"pyodide/{name}" for name in (LOADER, "pyodide-lock.json", *(f"{name}.gzip" for name in RUNTIME),
+                                              "python.snapshot.gzip", "python_stdlib.zip", "site-packages.zip")]
 PAGE_FILES = ("index.html", "style.css", "app.js", "page.js", "python.js", "editor.js", "results.js", "drawing.js",
               "worker.js")
 # What the page never runs: SymPy's test suites and benchmarks (a third of its files).
 LEFT_OUT = re.compile(r"(^|/)(tests|benchmarks)/")
-# Each wheel of the page: its PyPI name, the modules it provides, and what it needs.
-PACKAGES = {"sympy": (["sympy"], ["mpmath"]), "mpmath": (["mpmath"], []), "pyyaml": (["yaml"], []),
-            "dhsym": (["dhsym"], ["sympy", "pyyaml", "mpmath"])}
-COMPILED_STAMP = "compiled-4"  # change to recompile the cached third-party wheels
+COMPILED_STAMP = "compiled-5"  # change to recompile the cached third-party wheels
 
 
 def main(out: Path) -> None:
@@ -55,16 +58,20 @@ def main(out: Path) -> None:
         shutil.rmtree(out)
     (out / "pyodide").mkdir(parents=True)
     (out / "mathjax").mkdir()
-    wheels = _third_party_wheels(pins) + [_dhsym_wheel()]
-    shipped = _compiled(wheels, out / "pyodide")
-    _write_lock(shipped, out / "pyodide" / "pyodide-lock.json")
+    wheels, stdlib = _compiled(_third_party_wheels(pins) + [_dhsym_wheel()])
+    with tempfile.TemporaryDirectory() as scratch:
+        site = _site_zip(wheels, Path(scratch) / "site-packages.zip")
+        modules = _modules_on_first_use(Path(scratch) / "modules.txt")
+        _python_state(stdlib, site, modules, out / "pyodide")
+    _write_lock(out / "pyodide" / "pyodide-lock.json")
+    shutil.copy2(PYODIDE / LOADER, out / "pyodide" / LOADER)
     for name in RUNTIME:
-        shutil.copy2(PYODIDE / name, out / "pyodide" / name)
+        shutil.copy2(_gzipped(PYODIDE / name), out / "pyodide" / f"{name}.gzip")
     shutil.copy2(MATHJAX, out / "mathjax" / MATHJAX.name)
     for name in PAGE_FILES:
         shutil.copy2(ROOT / "web" / name, out / name)
     _write_robots(out / "robots.json")
-    _write_manifest(out, shipped)
+    _write_manifest(out, wheels["dhsym"])
 
 
 def _pins() -> dict:
@@ -118,8 +125,8 @@ def _dhsym_wheel() -> Path:
     return next(target.glob("dhsym-*.whl"))
 
 
-def _compiled(wheels: list[Path], out: Path) -> dict:
-    """Each wheel byte-compiled and without its .py files (third-party ones from the cache), in `out`:
+def _compiled(wheels: list[Path]) -> tuple[dict, Path]:
+    """Each wheel byte-compiled and without its .py files (third-party ones kept in the cache):
     {package name: wheel path}; and Pyodide's standard library, which npm ships as sources."""
     compiled = CACHE / COMPILED_STAMP
     compiled.mkdir(exist_ok=True)
@@ -143,12 +150,65 @@ def _compiled(wheels: list[Path], out: Path) -> dict:
             print(f"build_web: byte-compiled {count} modules with Pyodide's CPython {version}")
             for name, (_, target) in trees.items():
                 _pack(Path(scratch) / name, target, record=name != "stdlib")
-    shutil.copy2(stdlib, out / "python_stdlib.zip")
-    shipped = {}
-    for wheel in wheels:
-        shutil.copy2(compiled / wheel.name, out / wheel.name)
-        shipped[_package_name(wheel.name)] = out / wheel.name
-    return shipped
+    return {_package_name(wheel.name): compiled / wheel.name for wheel in wheels}, stdlib
+
+
+def _site_zip(wheels: dict, path: Path) -> Path:
+    """The page's packages as one zip that Python imports from (zipimport): the compiled wheels'
+    modules and data, without their metadata (the page installs nothing)."""
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED, compresslevel=9) as site:
+        for wheel in wheels.values():
+            with zipfile.ZipFile(wheel) as opened:
+                for info in opened.infolist():
+                    if ".dist-info/" not in info.filename:
+                        site.writestr(info, opened.read(info), compress_type=zipfile.ZIP_DEFLATED, compresslevel=9)
+    return path
+
+
+# Every output of the page once, natively (the same pure-Python code as in the page): the modules of
+# the page's packages that are imported on first use, not by `import dhsym.web.app`.
+FIRST_USE = """
+import json, sys
+from pathlib import Path
+from dhsym.web.app import handle
+before = set(sys.modules)
+robot = Path("dhsym/robots/planar2r.yaml").read_text("utf-8")
+for request in [{"kind": "show", "show": show} for show in ("table", "links", "fk", "jacobian", "ik")] + [
+        {"kind": "draw", "values": {}}, {"kind": "slides", "jacobian": True, "ik": True}]:
+    answer = json.loads(handle(json.dumps({**request, "yaml": robot, "file": "planar2r.yaml", "width": 700})))
+    assert answer["state"] == "ready", answer
+packages = ("dhsym", "sympy", "mpmath", "yaml")
+print("\\n".join(sorted(m for m in set(sys.modules) - before if m.split(".")[0] in packages)))
+"""
+
+
+def _modules_on_first_use(path: Path) -> Path:
+    result = subprocess.run([sys.executable, "-c", FIRST_USE], capture_output=True, text=True, cwd=ROOT)
+    if result.returncode:
+        sys.exit(f"build_web: working out the page's outputs natively failed:\n{result.stderr[-3000:]}")
+    path.write_text(result.stdout)
+    return path
+
+
+def _python_state(stdlib: Path, site: Path, modules: Path, out: Path) -> None:
+    """The Python state the page restores (SymPy and dhsym imported), and the modules left to import
+    from the zips (scripts/snapshot-python.js)."""
+    result = subprocess.run(["node", str(ROOT / "scripts" / "snapshot-python.js"), str(stdlib), str(site),
+                             str(modules), str(out)], capture_output=True, text=True, cwd=ROOT)
+    if result.returncode:
+        sys.exit(f"build_web: making the Python state failed:\n{result.stderr[-3000:]}")
+    summary = json.loads(result.stdout.splitlines()[-1])
+    print(f"build_web: Python's state with {summary['modules']} modules imported ({summary['memory'] / 1e6:.1f} MB "
+          f"of memory), saved in pyodide/python.snapshot.gzip; the zips hold the modules not imported")
+
+
+def _gzipped(path: Path) -> Path:
+    """The file gzip-compressed, kept in the cache (the same bytes each time)."""
+    target = CACHE / f"runtime-{_pyodide_version()}" / f"{path.name}.gzip"
+    if not target.exists():
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(gzip.compress(path.read_bytes(), compresslevel=9, mtime=0))
+    return target
 
 
 def _pyodide_version() -> str:
@@ -180,17 +240,11 @@ def _pack(tree: Path, archive_path: Path, record: bool = True) -> None:
                              compress_type=zipfile.ZIP_DEFLATED)
 
 
-def _write_lock(shipped: dict, path: Path) -> None:
-    """A lock file of the page's own: Pyodide's runtime facts, and the four local wheels."""
+def _write_lock(path: Path) -> None:
+    """A lock file of the page's own: Pyodide's runtime facts, and no packages (the page installs
+    none: they are in its Python state and site-packages.zip)."""
     info = json.loads((PYODIDE / "pyodide-lock.json").read_text())["info"]
-    packages = {}
-    for name, wheel in shipped.items():
-        imports, depends = PACKAGES[name]
-        packages[name] = {"name": name, "version": wheel.name.split("-")[1], "file_name": wheel.name,
-                          "install_dir": "site", "sha256": hashlib.sha256(wheel.read_bytes()).hexdigest(),
-                          "package_type": "package", "imports": imports, "depends": depends,
-                          "unvendored_tests": False, "shared_library": False}
-    path.write_text(json.dumps({"info": info, "packages": packages}, indent=1) + "\n")
+    path.write_text(json.dumps({"info": info, "packages": {}}, indent=1) + "\n")
 
 
 def _write_robots(path: Path) -> None:
@@ -200,12 +254,10 @@ def _write_robots(path: Path) -> None:
     path.write_text(json.dumps(builtin_robots(), ensure_ascii=False))
 
 
-def _write_manifest(out: Path, shipped: dict) -> None:
+def _write_manifest(out: Path, dhsym_wheel: Path) -> None:
     """build.json: the bytes of each file the page loads at start, for its progress bar; and a summary."""
-    loads = [f"pyodide/{name}" for name in RUNTIME] + ["pyodide/python_stdlib.zip", "pyodide/pyodide-lock.json"]
-    loads += [f"pyodide/{wheel.name}" for wheel in shipped.values()]
-    sizes = {name: (out / name).stat().st_size for name in loads}
-    manifest = {"pyodide": _pyodide_version(), "dhsym": shipped["dhsym"].name.split("-")[1], "files": sizes,
+    sizes = {name: (out / name).stat().st_size for name in STARTS_WITH}
+    manifest = {"pyodide": _pyodide_version(), "dhsym": dhsym_wheel.name.split("-")[1], "files": sizes,
                 "mathjax": (out / "mathjax" / MATHJAX.name).stat().st_size}
     (out / "build.json").write_text(json.dumps(manifest, indent=1) + "\n")
     everything = sorted(p for p in out.rglob("*") if p.is_file())

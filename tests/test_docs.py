@@ -8,7 +8,8 @@ that sees the repository's `docs/` and `tests/`, with COLUMNS=100):
   runs as `python -m dhsym.cli ARGS` does (`dhsym.cli.main` inside this process, which is what
   `python -m dhsym.cli` calls; one README example also runs as a real process), and the output must
   be exactly what is shown. The exit status must be 0 unless the next line is `$ echo $?` followed
-  by the status. `< FILE` and `> FILE` redirect as a shell does.
+  by the status. `< FILE` and `> FILE` redirect as a shell does. A built-in robot's file is shown as
+  `.../dhsym/robots/NAME.yaml`: where dhsym is installed differs from machine to machine.
 - ```sh: a list of commands without output. Lines `dhsym ...` run and must exit with status 0;
   `make TARGET` must name a Makefile target and `pip install '.[EXTRA]'` an extra of pyproject.toml.
 - ```python: run in order in one namespace per page. `>>>` lines (with `...` continuations) are
@@ -42,6 +43,7 @@ import pytest
 from cli_runner import run_dhsym
 
 ROOT = Path(__file__).resolve().parent.parent
+PACKAGE = Path(__import__("dhsym").__file__).resolve().parent
 PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 UPDATE = os.environ.get("DHSYM_UPDATE_DOCS") == "1"
 COLUMNS = "100"  # the shown outputs are 100 columns wide, whatever the tester's terminal
@@ -127,10 +129,11 @@ def run_command(words: list[str]) -> tuple[str, int]:
             target = Path(words[-1])
         words = words[:-2]
     result = run_dhsym(*words, stdin=stdin)
+    stderr = result.stderr.replace(str(PACKAGE) + os.sep, ".../dhsym/")
     if target is not None:
         target.write_text(result.stdout, encoding="utf-8")
-        return result.stderr, result.status
-    return result.stderr + result.stdout, result.status
+        return stderr, result.status
+    return stderr + result.stdout, result.status
 
 
 def run_sh(block: Block, where: str, makefile: str, pyproject: str) -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import http.server
+import json
 import os
 import re
 import shutil
@@ -168,6 +169,12 @@ def test_the_inverse_kinematics_of_the_planar_2r_and_its_drawing(open_page):
     tex = Path(download.value.path()).read_text(encoding="utf-8")
     assert download.value.suggested_filename == "planar2r.tex"
     assert "\\documentclass[11pt,aspectratio=169]{beamer}" in tex and "Branch 1: elbow down" in tex
+
+    page.click("#tabs button[data-show=jacobian]")
+    assert settled(page, "8-planar2r-jacobian") == "ready"
+    shown = typeset_text(page)
+    assert "0J=[−a1s1−a2s12" in shown and "detJblock=a1a2s2" in shown and "s2=0" in shown
+    assert math_problems(page) == [] and "show=jacobian" in page.url
     assert page.refused == [] and page.failures == []
 
 
@@ -190,3 +197,56 @@ def test_a_page_opened_as_a_file_says_how_to_serve_it(browser):
     page.wait_for_selector("#result[data-state=error]", state="attached", timeout=30_000)
     assert "python3 -m http.server" in page.inner_text("#result")
     page.close()
+
+
+# The page's Python as web/worker.js starts it, here in node with the same runtime: the saved state
+# restored, the zips written where it expects them.
+RESTORE = r"""
+const fs = require("fs"), zlib = require("zlib"), path = require("path");
+const { loadPyodide } = require("pyodide");
+const built = path.join(process.argv[1], "pyodide");
+async function main() {
+  const state = zlib.gunzipSync(fs.readFileSync(path.join(built, "python.snapshot.gzip")));
+  const memory = state.length - new Uint32Array(state.buffer, state.byteOffset, 4)[1];
+  const runtime = path.dirname(require.resolve("pyodide/package.json"));
+  const create = (await import(path.join(runtime, "pyodide.asm.mjs"))).default;
+  const site = fs.readFileSync(path.join(built, "site-packages.zip"));
+  const python = await loadPyodide({
+    indexURL: runtime + path.sep, stdLibURL: path.join(built, "python_stdlib.zip"),
+    _loadSnapshot: new Uint8Array(state),
+    createPyodideModule: async (settings) => {
+      const module = await create(settings);
+      module.growMemory(memory);
+      return module;
+    },
+    fsInit: async (FS) => FS.writeFile("/lib/site-packages.zip", site),
+  });
+  console.log(python.runPython(process.argv[2]));
+}
+main().catch((error) => { console.error(error); process.exit(1); });
+"""
+
+IN_THE_STATE = """
+import json, sys, traceback
+imported = all(name in sys.modules for name in ("sympy", "dhsym.web.app", "yaml"))
+robot = "name: arm\\nconvention: standard\\njoints:\\n  - {joint: R, theta: theta_1, d: 0, a: a_1, alpha: 0}\\n"
+answer = json.loads(handle(json.dumps({"kind": "show", "show": "fk", "yaml": robot, "file": "arm.yaml"})))
+import email.mime.text, sympy.physics.units  # left in the zips: imported from them on first use
+try:
+    sympy.Matrix([[1, 2]]).inv()
+except Exception:
+    shown = traceback.format_exc()
+json.dumps([imported, answer["state"], "sympy.physics.units" in sys.modules, shown.splitlines()[-1],
+            any("sympy/matrices" in line and ", line " in line for line in shown.splitlines())])
+"""
+
+
+def test_the_saved_python_state_restores_and_imports_what_the_zips_hold(site):
+    """The modules imported at build time are in the state; the others come from the zips; a
+    traceback still names the file and line of each step."""
+    result = subprocess.run(["node", "-e", RESTORE, str(BUILT), IN_THE_STATE], capture_output=True, text=True,
+                            cwd=ROOT)
+    assert result.returncode == 0, result.stderr[-3000:]
+    imported, state, from_zip, error, lines = json.loads(result.stdout.splitlines()[-1])
+    assert imported and state == "ready" and from_zip
+    assert error.startswith("sympy.matrices.exceptions.NonSquareMatrixError") and lines

@@ -9,7 +9,7 @@ import { showProblem, fillGutter, markLine } from "./editor.js";
 import { refreshDrawing } from "./drawing.js";
 import { $, robotFile, state } from "./page.js";
 import { ask, failed, startWorker, stopWorker } from "./python.js";
-import { chosenFrames, freeVariables, refresh } from "./results.js";
+import { chosenFrames, freeVariables, refresh, warmUpMath } from "./results.js";
 
 const SHOWS = ["table", "links", "fk", "jacobian", "ik"];
 
@@ -118,8 +118,7 @@ async function downloadSlides() {
 async function main() {
   startWorker();
   if (state.failed) return;
-  // MathJax's first formula sets up its parser and fonts: done while Python loads, not after.
-  window.addEventListener("load", () => MathJax.startup.promise.then(() => MathJax.tex2svg("x^2")));
+  window.addEventListener("load", warmUpMath);
   selectTab(new URLSearchParams(location.search).get("show") || "fk");
   try {
     state.robots = await (await fetch("robots.json")).json();

@@ -3,6 +3,13 @@
 
 export const $ = (id) => document.getElementById(id);
 
+// When the page reached each step of its start, in seconds since it was opened (the page's clock), for
+// benchmarks/web_speed.py; the first time only.
+window.dhsymMarks = window.dhsymMarks || {};
+export function mark(name) {
+  if (!(name in window.dhsymMarks)) window.dhsymMarks[name] = performance.now() / 1000;
+}
+
 export const state = {
   robots: [], // [{name, title, yaml}] from robots.json
   show: "fk",

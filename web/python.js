@@ -1,13 +1,15 @@
 // dhsym's Python in web/worker.js: starting it (with a progress bar and a clear message where it cannot
 // start), asking it (one request at a time per channel, a newer request replacing one not yet sent),
 // and stopping a long piece of work by ending the worker.
-import { $, setStatus, showMessage, state } from "./page.js";
+import { $, mark, setStatus, showMessage, state } from "./page.js";
 
 export function startWorker() {
   state.ready = false;
   state.busy = {};
+  const started = window.dhsymStarted; // the first worker, started by index.html before the page loaded
+  window.dhsymStarted = null;
   try {
-    state.worker = new Worker("worker.js", { type: "module" });
+    state.worker = started ? started.worker : new Worker("worker.js", { type: "module" });
   } catch (error) { // a page opened as a file, or a browser without module workers
     failed(error.message);
     return;
@@ -17,6 +19,7 @@ export function startWorker() {
     if (!state.ready) failed(event.message || "the Python runtime could not be started");
   };
   setStatus("loading", "Loading Python and SymPy (once; the browser keeps them)…");
+  for (const message of started ? started.early : []) onWorkerMessage(message);
 }
 
 function onWorkerMessage(message) {
@@ -27,18 +30,20 @@ function onWorkerMessage(message) {
     state.bytes = `${mb(message.loaded)} of ${mb(message.total)} MB`;
     setStatus("loading", `Loading Python and SymPy: ${state.bytes}`);
   } else if (message.kind === "stage") {
-    if (message.text.startsWith("Importing")) $("progress").value = 0.9;
+    $("progress").value = Math.max($("progress").value, 0.8);
     setStatus("loading", `${message.text}… ${state.bytes ? `(${state.bytes} loaded)` : ""}`);
   } else if (message.kind === "ready") {
     state.ready = true;
-    window.dhsymTimings = message.timings; // for benchmarks/web_speed.py
+    window.dhsymTimings = message.timings; // the worker's own steps, for benchmarks/web_speed.py
+    mark("python ready");
     $("progress").value = 1;
     $("versions").textContent = `dhsym ${message.versions.dhsym}, Pyodide ${message.versions.pyodide}; Python ready in ${message.seconds.toFixed(1)} s.`;
     setStatus("ready", "Ready");
-    for (const channel of Object.keys(state.pending)) send(channel);
+    updateStop();
   } else if (message.kind === "failed") {
     failed(message.message);
   } else if (message.kind === "answer") {
+    mark("first answer");
     const channel = Object.keys(state.busy).find((c) => state.busy[c] && state.busy[c].id === message.id);
     if (!channel) return;
     const job = state.busy[channel];
@@ -59,17 +64,18 @@ export function failed(why) {
   showMessage($("result"), "error", where, why);
 }
 
-// Asks the worker; a newer request on the same channel replaces one not yet sent.
+// Asks the worker; a newer request on the same channel replaces one not yet sent. A request made while
+// Python loads is sent at once: the worker answers it as soon as Python is up.
 export function ask(channel, request) {
   return new Promise((resolve) => {
     state.pending[channel] = { request, resolve };
-    if (state.ready && !state.busy[channel]) send(channel);
+    if (!state.busy[channel]) send(channel);
   });
 }
 
 function send(channel) {
   const job = state.pending[channel];
-  if (!job || state.busy[channel] || !state.ready) return;
+  if (!job || state.busy[channel] || state.failed) return;
   delete state.pending[channel];
   job.id = state.nextId++;
   state.busy[channel] = job;
@@ -78,6 +84,7 @@ function send(channel) {
 }
 
 function updateStop() {
+  if (!state.ready) return; // the progress bar until Python is up
   const working = Object.keys(state.busy).length > 0;
   $("stop").hidden = !working;
   if (working) setStatus("working", "Working it out…");
@@ -92,4 +99,5 @@ export function stopWorker() {
   showMessage($("result"), "error", "Stopped. Python starts again; change the robot or the output to go on.");
   $("stop").hidden = true;
   startWorker();
+  for (const channel of Object.keys(state.pending)) send(channel);
 }

@@ -1,7 +1,7 @@
 // The result: asked for at the line width of the column, then typeset piece by piece with MathJax.
 import { showProblem } from "./editor.js";
 import { refreshDrawing } from "./drawing.js";
-import { $, robotFile, showMessage, state } from "./page.js";
+import { $, mark, robotFile, showMessage, state } from "./page.js";
 import { ask } from "./python.js";
 
 function widthPt() {
@@ -56,10 +56,22 @@ export async function refresh() {
   result.appendChild(content);
   result.dataset.seconds = ((performance.now() - asked) / 1000).toFixed(3); // request to typeset
   result.dataset.state = "ready";
+  mark("first result typeset");
 }
 
 // MathJax, with its stylesheet for the SVG it makes (typeset piece by piece, the page adds it itself).
 let mathStyles = null;
+
+// MathJax's first formulas set up its parser, its fonts and the code of each construct: done with
+// formulas like the results' while Python loads, not once the first result is in.
+const WARM_UP = ["{}^{0}T_{1} = \\begin{bmatrix} c_{1} & -s_{1} & 0 & a_{1} c_{1} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
+  "\\begin{align*} r_{11} &= c_{1}[c_{23}(c_{4} c_{5} - s_{4})] - s_{1} & c_{1} &= \\cos{\\theta_{1}} \\end{align*}"];
+
+export async function warmUpMath() {
+  await mathReady();
+  for (const tex of WARM_UP) MathJax.tex2svg(tex, { display: true });
+  mathEm();
+}
 
 async function mathReady() {
   await MathJax.startup.promise;

@@ -39,8 +39,8 @@ from .options import Parser, VersionAction, default_limit, safety_net, text_widt
 
 # Each command and the module (in dhsym.cli) that registers it, in the order `dhsym --help` lists them.
 COMMANDS = {"list": "listing", "table": "kinematics", "links": "kinematics", "fk": "kinematics", "latex": "latex",
-            "plot": "plot", "jacobian": "jacobian", "ik": "ik", "import": "urdf_import", "convert": "convert",
-            "check": "check", "screws": "screws"}
+            "plot": "plot", "jacobian": "jacobian", "ik": "ik", "dynamics": "dynamics", "import": "urdf_import",
+            "convert": "convert", "check": "check", "screws": "screws"}
 
 EXIT_USER_ERROR = 2
 EXIT_INTERNAL_ERROR = 70
@@ -93,7 +93,7 @@ def command_modules(argv=None) -> list[str]:
     typo) all of them.
 
     >>> command_modules(["fk", "puma560"]), command_modules(["--version"]), len(command_modules(["--help"]))
-    (['kinematics'], [], 10)
+    (['kinematics'], [], 11)
     """
     argv = sys.argv[1:] if argv is None else argv
     if argv and argv[0] in COMMANDS:

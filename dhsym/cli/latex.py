@@ -33,9 +33,24 @@ def add_parsers(commands) -> None:
                           "sub-problem, every branch")
     sub.add_argument("--free", metavar="VAR", nargs="+", action="extend", default=[],
                      help="with --ik: joint variables kept as parameters (a redundant arm needs them)")
+    sub.add_argument("--dynamics", action="store_true",
+                     help="add the equations of motion: M(q), the Christoffel symbols, C, g(q) and one equation per "
+                          "joint (with --steps, their derivation by Lagrange's equations)")
     frame_options(sub)
     sub.add_argument("-o", "--output", metavar="FILE", help="write to FILE (atomically) instead of standard output")
     sub.set_defaults(run=run)
+
+
+def _document(robot, args) -> str:
+    from ..dynamics.derive import TooLargeToPrint
+
+    try:
+        return document(robot, args.document, steps=args.steps, start=args.start, end=args.end,
+                        jacobian=args.jacobian, ik=args.ik, free=args.free, dynamics=args.dynamics)
+    except TooLargeToPrint as error:
+        from .dynamics import refusal  # says which --to of `dhsym dynamics` fits
+
+        raise refusal(robot, error, f"dhsym dynamics {args.robot}") from None
 
 
 def run(robot, args) -> str | None:
@@ -54,8 +69,7 @@ def run(robot, args) -> str | None:
         refuse_jacobian_if_too_large(robot, chain.first_frame, chain.last_frame, LATEX_MAX_NODES, option="")
         if args.steps:
             refuse_steps_if_too_large(robot)
-    text = document(robot, args.document, steps=args.steps, start=args.start, end=args.end,
-                    jacobian=args.jacobian, ik=args.ik, free=args.free)
+    text = _document(robot, args)
     if args.output is None:
         return text
     write_atomic(args.output, text, inputs=[robot.path])

@@ -33,6 +33,16 @@ from .program import Program, dynamics_program
 from .textbook import MAX_TERMS, compact, expanded_terms
 
 
+class TooLargeToPrint(UserError):
+    """The elements of M, C and g would have about `terms` terms multiplied out, more than MAX_TERMS."""
+
+    def __init__(self, terms: int):
+        super().__init__(f"the elements of M, C and g would have about {terms:,} terms multiplied out, more than the "
+                         f"{MAX_TERMS:,} dhsym writes out; give the links' masses, centres of mass and inertias as "
+                         "numbers, take fewer links, or generate code with --format python, which needs no printing")
+        self.terms = terms
+
+
 @dataclass(frozen=True)
 class Dynamics:
     """M (d_ij), C, g (Spong's φ_k) and the Christoffel symbols {(i, j, k): c_ijk} that are not
@@ -64,17 +74,21 @@ class Dynamics:
         return self.M * sympy.Matrix(self.accelerations) + self.C * sympy.Matrix(self.rates) + self.g
 
 
+def printed_terms(chain: Chain, masses: MassModel) -> tuple[Program, dict, int]:
+    """The program of M and g, the Christoffel symbols as its names, and how many terms all of them
+    would have multiplied out: what `derive` measures before it writes anything out."""
+    program = dynamics_program(chain, masses, parts=("M", "g"))
+    christoffel = christoffel_symbols(program.tape, program.model, program.outputs["M"])
+    values = [*program.outputs["M"], *program.outputs["g"], *christoffel.values()]
+    return program, christoffel, expanded_terms(program.tape, values)
+
+
 def derive(chain: Chain, masses: MassModel) -> Dynamics:
     """The dynamics of `chain` with the filled `masses`, in textbook form."""
-    program = dynamics_program(chain, masses, parts=("M", "g"))
+    program, christoffel, size = printed_terms(chain, masses)
     tape = program.tape
-    christoffel = christoffel_symbols(tape, program.model, program.outputs["M"])
-    values = [*program.outputs["M"], *program.outputs["g"], *christoffel.values()]
-    size = expanded_terms(tape, values)
     if size > MAX_TERMS:
-        raise UserError(f"the elements of M, C and g would have about {size:,} terms multiplied out, more than the "
-                        f"{MAX_TERMS:,} dhsym writes out; give the links' masses, centres of mass and inertias as "
-                        "numbers, take fewer links, or generate code with --format python, which needs no printing")
+        raise TooLargeToPrint(size)
     masses_symbols = [link.mass for link in masses.links if isinstance(link.mass, sympy.Symbol)]
     M, g = program.outputs["M"], program.outputs["g"]
     n = M.rows

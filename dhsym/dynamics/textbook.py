@@ -56,6 +56,12 @@ def sum_formulas(expr: sympy.Expr, memo: dict | None = None) -> sympy.Expr:
     >>> c, s = sympy.cos, sympy.sin
     >>> sum_formulas(k*c(a)*c(b) - k*s(a)*s(b) + 2*s(a)*c(b) - 2*c(a)*s(b))
     k*cos(a + b) + 2*sin(a - b)
+
+    A partner's factors are counted, not just collected: s1 c1 c2 pairs with s1 s1 s2 (s1² s2),
+    not with s1 s2.
+
+    >>> sum_formulas(s(a)*c(a)*c(b) - s(a)**2*s(b) + s(a)*s(b))
+    sin(a)*sin(b) + sin(a)*cos(a + b)
     """
     terms: dict = {}  # the multiset of a term's factors -> its coefficient
     for term in sympy.Add.make_args(expr):
@@ -91,7 +97,7 @@ def _combine(terms: dict, key: frozenset) -> bool:
         if a == b:
             continue
         rest = key - {(first, 1), (second, 1)}
-        partner = rest | {(swap[type(first)](a), 1), (swap[type(second)](b), 1)}
+        partner = _multiset([f ** k for f, k in rest] + [swap[type(first)](a), swap[type(second)](b)])
         other = terms.get(partner)
         if other is None or abs(other) != abs(number):
             continue

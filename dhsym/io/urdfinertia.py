@@ -22,7 +22,7 @@ import sympy
 from ..core.inertia import LinkInertia, MassModel, entries, tensor
 from ..errors import UserError
 from ..geometry.rounding import fit
-from .inertia import physical_problem
+from .inertia import measured_slip, physical_problem
 
 INERTIA_ATTRIBUTES = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
 MAX_MERGED_LINKS = 200  # links merged into the bodies of one table, as many as a path may hold
@@ -144,6 +144,8 @@ def in_dh_frames(bodies: list, frames: list) -> tuple:
                             f"({problem.split(':')[0]}); it is left as the generic symbols I_xx{number} … I_yz{number}")
 
             tensor_entries = None
+        elif measured_slip(tensor_entries):
+            warnings.append(f"{body.place}: the inertia of DH link {number}: {measured_slip(tensor_entries)}")
         links.append(LinkInertia(written[0], tuple(written[1:4]), tensor_entries))
     given = tuple(links) if any(link.given for link in links) else ()
     return MassModel(given), rounded, warnings

@@ -32,10 +32,11 @@ DOCUMENTS = ("slides", "article", "snippet")
 # ---------------------------------------------------------------- the three documents
 
 def document(chain, kind: str = "slides", steps: bool = False, start=None, end=None, jacobian: bool = False,
-             ik: bool = False, free=()) -> str:
+             ik: bool = False, free=(), dynamics: bool = False) -> str:
     """The LaTeX text of a document of `kind` for `chain`, about the transform from frame
     `start` (default: the first) to `end` (default: the last); `jacobian` adds velocity kinematics,
-    `ik` the closed-form inverse kinematics (with the joint variables `free` as parameters).
+    `ik` the closed-form inverse kinematics (with the joint variables `free` as parameters),
+    `dynamics` the equations of motion (a chain too large to print raises TooLargeToPrint).
     Frames are numbered as the robot prints them."""
     chain = as_robot(chain)
     start = _check_frame(chain, chain.first_frame if start is None else start, "--from")
@@ -50,6 +51,10 @@ def document(chain, kind: str = "slides", steps: bool = False, start=None, end=N
     if ik:
         result = chain.ik(free)
         content += ik_sections(result.solution, result.robot, page)
+    if dynamics:
+        from .dynamics import document_sections  # the dynamics layer only for documents that show it
+
+        content += document_sections(chain, page, steps)
     return {"slides": _slides, "article": _article, "snippet": _snippet}[kind](chain, content, page)
 
 
