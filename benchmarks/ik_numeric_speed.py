@@ -1,7 +1,7 @@
 """The numeric inverse kinematics (dhsym.inverse.numeric): solutions per second over a batch of
 poses, against a plain numpy FK of the same poses and against EAIK's batch call, in the same run.
 
-- dhsym: `numeric_inverse(robot).solve(T)` on POSES poses at once (every real solution of each).
+- dhsym: `numeric_inverse_kinematics(robot).solve(T)` on POSES poses at once (every real solution of each).
 - plain numpy FK: the arm's constant transforms and its joints' turns (built with numpy.cos and
   numpy.sin) multiplied with `@` over the same batch, base and tool included: what the poses cost
   to make.
@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy
 
 import dhsym
-from dhsym.inverse.numeric import numeric_inverse
+from dhsym.api.ik import numeric_inverse_kinematics
 
 ROOT = Path(__file__).resolve().parent.parent
 PEER_VENV = ROOT / "build" / "peers" / "eaik"
@@ -130,7 +130,7 @@ def eaik_batch(python, arm, poses):
 
 def measure(name: str, count: int):
     """(the arm, the poses, dhsym's time, the solutions it finds, the plain FK's time) at `count` random poses."""
-    inverse = numeric_inverse(dhsym.load(name))
+    inverse = numeric_inverse_kinematics(dhsym.load(name))
     rng = numpy.random.default_rng(1)
     values = rng.uniform(-numpy.pi, numpy.pi, (count, len(inverse.arm.kinds)))
     poses = plain_fk(inverse.arm, values)

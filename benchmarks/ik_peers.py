@@ -2,7 +2,7 @@
 same run, as ratios of CPU time (the issue asks for 10x faster than the Robotics Toolbox's
 closed-form solver and 100x faster than IKBT).
 
-- dhsym: `robot.ik()` on the built-in puma560 (`dhsym.inverse.api.inverse_kinematics`: the
+- dhsym: `robot.ik()` on the built-in puma560 (`dhsym.api.ik.inverse_kinematics`: the
   derivation, decimals as written and the branch names checked against the arm, all that
   `dhsym ik` works out), cold (a fresh robot, empty SymPy cache), the least CPU time of RUNS runs
   (on a shared machine one run may wait for others).
@@ -32,7 +32,7 @@ import sympy
 from sympy.core.cache import clear_cache
 
 import dhsym
-from dhsym.inverse.api import inverse_kinematics
+from dhsym.api.ik import inverse_kinematics
 from dhsym.inverse.solution import target_matrix
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -26,8 +26,8 @@ import sympy
 from sympy.core.cache import clear_cache
 
 import dhsym
+from dhsym.api.ik import inverse_kinematics
 from dhsym.errors import UserError
-from dhsym.inverse.api import inverse_kinematics
 from dhsym.inverse.evaluate import Program
 from dhsym.inverse.solve import solve
 from dhsym.io.library import builtin_names
@@ -39,7 +39,7 @@ def derive(name: str):
     clear_cache()
     chain = dhsym.load(name)
     start, cpu = time.perf_counter(), time.process_time()
-    solution = solve(chain)
+    solution = inverse_kinematics(chain).solution
     return chain, solution, (time.perf_counter() - start, time.process_time() - cpu)
 
 
@@ -97,7 +97,12 @@ def report(name: str) -> None:
           f"ratio {ik_time / fk_time:.1f} (per branch {ik_time / fk_time / branches:.2f})")
 
 
-def derivation_cpu(name: str, runs: int = 3, work=solve) -> float:
+def solved(robot):
+    """The derivation alone (`solve` of the robot file's chain, with its sample, numbers and name)."""
+    return solve(robot.chain, sample=robot.sample, numbers=robot.numbers, name=robot.name)
+
+
+def derivation_cpu(name: str, runs: int = 3, work=solved) -> float:
     """The least CPU time of `runs` cold derivations (a fresh chain, an empty SymPy cache)."""
     times = []
     for _ in range(runs):
@@ -125,7 +130,7 @@ def main() -> None:
     chain = general_6r()
     start = time.perf_counter()
     try:
-        solve(chain)
+        inverse_kinematics(chain)
         message = "solved (unexpected)"
     except UserError as error:
         message = str(error)

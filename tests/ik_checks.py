@@ -8,7 +8,10 @@ import re
 import numpy as np
 import sympy
 
+from dhsym.inverse.derive import derive
 from dhsym.inverse.solution import TARGET_NAMES
+from dhsym.inverse.solve import free_variables
+from dhsym.printing.ik_sentences import PlainSentences
 
 JSON_KEYS = {"robot", "convention", "joint_variables", "free", "method", "target", "definitions", "solutions",
              "conditions", "degenerate"}
@@ -61,6 +64,18 @@ def _names(expression: str) -> set:
     functions = {type(f) for f in value.atoms(sympy.Function)}
     assert functions <= ALLOWED_FUNCTIONS, (expression, functions)
     return {s.name for s in value.free_symbols}
+
+
+def derived(robot, free=()):
+    """The derivation of a robot file's chain with its sample and numbers, as the solver makes it
+    (dhsym.inverse.derive: its decimals not made symbols, its branches named by the signs)."""
+    return derive(robot.chain, free_variables(robot.chain, free), sample=robot.sample, numbers=robot.numbers,
+                  name=robot.name, path=robot.path)
+
+
+def said(record, robot=None) -> str:
+    """A sentence of the solver (its method, a condition, a degenerate case) as the JSON gives it."""
+    return PlainSentences({"frame_offset": robot.numbering.offset if robot else 0}).sentence(record)
 
 
 def import_module(path):

@@ -5,12 +5,13 @@ The planar 2R is Spong's elbow manipulator: D = cos θ2 by the law of cosines, t
 import sympy
 
 from dhsym import load
-from dhsym.inverse.solution import Branch, Solution, Step
+from dhsym.inverse.sentences import Subproblem
+from dhsym.inverse.solution import Branch, DerivationStep, Solution
 
 
 def planar2r() -> Solution:
-    chain = load("planar2r")
-    t1, t2 = chain.joint_variables
+    robot = load("planar2r")
+    t1, t2 = robot.chain.joint_variables
     px, py, a1, a2, D = sympy.symbols("px py a_1 a_2 D", real=True)
     cosine = (px**2 + py**2 - a1**2 - a2**2) / (2 * a1 * a2)
     branches = []
@@ -18,21 +19,23 @@ def planar2r() -> Solution:
         elbow = sympy.atan2(sign * sympy.sqrt(1 - D**2), D)
         shoulder = sympy.atan2(py, px) - sympy.atan2(a2 * sympy.sin(t2), a1 + a2 * sympy.cos(t2))
         branches.append(Branch(name, ((t2, elbow), (t1, shoulder))))
-    steps = (Step(px**2 + py**2, a1**2 + a2**2 + 2 * a1 * a2 * sympy.cos(t2), "law of cosines", (t2,),
-                  "the distance from the base to the tip fixes the elbow angle"),
-             Step(sympy.atan2(py, px), t1 + sympy.atan2(a2 * sympy.sin(t2), a1 + a2 * sympy.cos(t2)),
-                  "atan2 of a pair", (t1,), "the direction to the tip, less the angle the forearm adds"))
+    steps = (DerivationStep(px**2 + py**2, a1**2 + a2**2 + 2 * a1 * a2 * sympy.cos(t2), Subproblem("law of cosines"),
+                            (t2,), "the distance from the base to the tip fixes the elbow angle"),
+             DerivationStep(sympy.atan2(py, px), t1 + sympy.atan2(a2 * sympy.sin(t2), a1 + a2 * sympy.cos(t2)),
+                            Subproblem("atan2 of a pair"), (t1,),
+                            "the direction to the tip, less the angle the forearm adds"))
     reach = "D² ≤ 1: the tip within reach, |a1 − a2| ≤ r ≤ a1 + a2"
-    return Solution(chain, "planar arm: the law of cosines for the elbow, then the shoulder", (t1, t2),
+    return Solution(robot.chain, "planar arm: the law of cosines for the elbow, then the shoulder", (t1, t2),
                     ((D, cosine),), tuple(branches), conditions=(reach,),
-                    degenerate=("px = py = 0 with a1 = a2: θ1 is arbitrary",), steps=steps)
+                    degenerate=("px = py = 0 with a1 = a2: θ1 is arbitrary",), steps=steps, sample=dict(robot.sample),
+                    numbers=robot.numbers)
 
 
 def puma560() -> Solution:
     """Craig's solution of the PUMA 560 (Introduction to Robotics, section 4.7): θ1 from px, py;
     θ3 from the constant K; θ2 from θ23; the wrist angles from 3R6; eight branches."""
-    chain = load("puma560")
-    t1, t2, t3, t4, t5, t6 = chain.joint_variables
+    robot = load("puma560")
+    t1, t2, t3, t4, t5, t6 = robot.chain.joint_variables
     r11, r12, r13, px, r21, r22, r23, py, r31, r32, r33, pz = sympy.symbols(
         "r11 r12 r13 px r21 r22 r23 py r31 r32 r33 pz", real=True)
     a2, a3, d3, d4, K = sympy.symbols("a_2 a_3 d_3 d_4 K", real=True)
@@ -59,8 +62,12 @@ def puma560() -> Solution:
                 branches.append(Branch(f"shoulder {shoulder}, elbow {elbow}, wrist {wrist}",
                                        ((t1, theta1), (t3, theta3), (t2, theta2), (t4, theta4), (t5, theta5),
                                         (t6, theta6))))
-    steps = (Step(-s1 * px + c1 * py, d3, "a cos θ + b sin θ = c", (t1,), "the second row of 1T6 = 1T0 0T6"),
-             Step(K, a3 * c3 - d4 * s3, "a cos θ + b sin θ = c", (t3,), "the sum of the squares of the position"),)
-    return Solution(chain, "kinematic decoupling: axes 4, 5, 6 meet at the wrist centre", tuple(chain.joint_variables),
-                    ((K, k),), tuple(branches), conditions=("px² + py² ≥ d3²", "K² ≤ a3² + d4²"),
-                    degenerate=("s5 = 0: axes 4 and 6 line up; only θ4 + θ6 is determined",), steps=steps)
+    steps = (DerivationStep(-s1 * px + c1 * py, d3, Subproblem("a cos θ + b sin θ = c"), (t1,),
+                            "the second row of 1T6 = 1T0 0T6"),
+             DerivationStep(K, a3 * c3 - d4 * s3, Subproblem("a cos θ + b sin θ = c"), (t3,),
+                            "the sum of the squares of the position"),)
+    return Solution(robot.chain, "kinematic decoupling: axes 4, 5, 6 meet at the wrist centre",
+                    tuple(robot.chain.joint_variables), ((K, k),), tuple(branches),
+                    conditions=("px² + py² ≥ d3²", "K² ≤ a3² + d4²"),
+                    degenerate=("s5 = 0: axes 4 and 6 line up; only θ4 + θ6 is determined",), steps=steps,
+                    sample=dict(robot.sample), numbers=robot.numbers)

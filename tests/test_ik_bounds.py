@@ -22,7 +22,7 @@ def no_search(monkeypatch):
     def refuse(*args, **kwargs):
         raise AssertionError("the derivation started")
 
-    solver = importlib.import_module("dhsym.inverse.solve")  # the module, not the function of that name
+    solver = importlib.import_module("dhsym.inverse.methods")  # where the methods build their equations
     for name in ("transform_equations", "point_equations"):
         monkeypatch.setattr(solver, name, refuse)
 
@@ -41,7 +41,7 @@ def test_too_much_work_is_refused_before_the_derivation_starts(name, message, no
 
 def test_more_unknowns_than_the_arm_has_motions_is_refused_before_the_derivation(no_search, monkeypatch):
     """A planar arm moves its end in three ways: four unknown joints leave a family of solutions."""
-    monkeypatch.setattr(dhsym.inverse.redundant, "_derives", lambda robot, free: False)
+    monkeypatch.setattr(dhsym.inverse.redundant, "_derives", lambda chain, sample, numbers, free: False)
     robot = load(str(CORPUS / "cli_ik_planar_4r_redundant.yaml"))
     with pytest.raises(UserError, match="4 of them unknown, but they move its end in only 3 independent ways: make 1 "
                                         "of them a parameter with --free; none of the 3 choices dhsym tried"):
@@ -75,7 +75,8 @@ def test_no_hint_where_no_choice_works():
 
 def test_the_hint_derives_a_bounded_number_of_choices(monkeypatch):
     tried = []
-    monkeypatch.setattr(dhsym.inverse.redundant, "_derives", lambda robot, free: tried.append(free) and False)
+    monkeypatch.setattr(dhsym.inverse.redundant, "_derives",
+                        lambda chain, sample, numbers, free: tried.append(free) and False)
     with pytest.raises(UserError, match="none of the 4 choices dhsym tried"):  # θ4 is passed over before deriving
         load("iiwa7").ik()
     assert len(tried) == dhsym.inverse.redundant.HINT_DERIVATIONS == 3

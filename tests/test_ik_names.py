@@ -196,7 +196,7 @@ HEADS = {"shoulder left": "shoulder right/left: ", "shoulder right": "shoulder r
 @pytest.mark.parametrize("name", ["puma560", "scara", "stanford", "ur5", "spatial3r", "planar2r", "finger_rrr"])
 def test_each_word_printed_is_defined_once_where_the_method_is_said(name):
     result = load(name).ik()
-    said = result.solution.method.split("branch names: ")[1]
+    said = result.json()["method"].split("branch names: ")[1]
     used = {"+√/−√: " if part.endswith("√") else HEADS[part]
             for branch in result.branches for part in branch.name.split(", ")}
     for head in set(HEADS.values()) | {"+√/−√: "}:

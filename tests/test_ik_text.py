@@ -36,7 +36,7 @@ def _body(text: str) -> str:
 @pytest.mark.parametrize("name", ROBOTS)
 def test_no_bracket_is_negated_when_its_terms_are(name):
     result = _solved(name)
-    text, latex = result.text(), snippet(result.solution)
+    text, latex = result.text(), snippet(result.solution, result.robot)
     assert not re.search(r"−[(\[{]−", text), text
     assert not re.search(r"-(\(|\[|\\\{)-", latex), latex
 
@@ -66,7 +66,7 @@ def test_a_named_angle_prints_as_c_and_s_of_its_name_and_the_legend_says_so():
     result = _solved("planar3r")
     text = result.text()
     assert "cφ1 = cos φ1, sφ1 = sin φ1" in text and "cos φ1" not in _body(text)
-    latex = snippet(result.solution)
+    latex = snippet(result.solution, result.robot)
     assert "c_{\\phi 1} &= \\cos{\\phi_{1}}" in latex and "\\cos{\\phi_{1}})" not in latex
     assert "cos(phi_1)" in json.dumps(result.json())  # the JSON keeps the full form
     assert "c(phi1) = cos phi1" in result.text(ascii=True)  # ASCII labels a lettered angle as a joint's: c(phi2)
@@ -84,11 +84,11 @@ def test_an_equation_to_zero_starts_with_a_plus_and_values_are_math():
     assert "  px − b = 0 and pz = 0: φ1 is not determined" in _solved("rps_leg").text()
     text = _solved("scara_spong").text()
     assert "r33 = −1" in text and "= -1" not in text
-    assert "$r_{33} = -1$" in snippet(_solved("scara_spong").solution)
+    assert "$r_{33} = -1$" in snippet(_solved("scara_spong").solution, _solved("scara_spong").robot)
 
 
 def test_the_sign_of_a_bracket_is_decided_by_how_its_terms_print():
-    arm = load("planar3r")
+    arm = load("planar3r").chain
     printer = text_printer(arm)
     l1, l2, l3 = (sympy.Symbol(f"l_{k}", real=True) for k in (1, 2, 3))
     px, py, a, b = sympy.symbols("px py a b", real=True)

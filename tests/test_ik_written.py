@@ -10,8 +10,8 @@ import sympy
 from ik_checks import check_branches_reach, check_json, import_module, numeric_fk, random_joints
 
 from dhsym import load
+from dhsym.api.ik import inverse_kinematics
 from dhsym.core.numbers import decimal_text
-from dhsym.inverse.api import inverse_kinematics
 from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.written import Written, exact
 

@@ -14,10 +14,10 @@ import sympy
 from cli_runner import run_dhsym
 
 import dhsym
+from dhsym.api.ik import numeric_inverse_kinematics
 from dhsym.core.chain import Chain, DHRow
 from dhsym.core.robot import Robot
 from dhsym.core.transforms import Step
-from dhsym.inverse.numeric.solver import numeric_inverse
 
 DATA = Path(__file__).parent / "data" / "numeric"
 COBOT, HUMANOID, GENERAL = (str(DATA / name) for name in ("offset_wrist_cobot.yaml", "humanoid_arm.yaml",
@@ -83,7 +83,7 @@ def assert_every_solution(inverse, count: int, seed: int, **given_columns):
 @pytest.mark.parametrize("seed, kinds, convention", [(1, "RRRRRR", "standard"), (2, "RRRRRR", "modified"),
                                                      (3, "RRPRRR", "modified"), (4, "PRRRRP", "standard")])
 def test_every_solution_of_a_general_arm_reaches_the_pose_and_holds_the_joints(seed, kinds, convention):
-    counts = assert_every_solution(numeric_inverse(general_arm(seed, kinds, convention)), 20, seed)
+    counts = assert_every_solution(numeric_inverse_kinematics(general_arm(seed, kinds, convention)), 20, seed)
     assert max(counts) <= 16 and all(count % 2 == 0 for count in counts)  # real roots of a real polynomial
 
 
@@ -91,29 +91,30 @@ def test_every_solution_of_a_general_arm_reaches_the_pose_and_holds_the_joints(s
 @pytest.mark.parametrize("seed", range(10, 34))
 def test_many_general_arms_of_every_kind_in_both_conventions(seed):
     kinds = ["RRRRRR", "RRRRRR", "RPRRRR", "RRRRPR", "PRRRRR", "RPRPRR"][seed % 6]
-    assert_every_solution(numeric_inverse(general_arm(seed, kinds, ("standard", "modified")[seed % 2])), 40, seed)
+    arm = general_arm(seed, kinds, ("standard", "modified")[seed % 2])
+    assert_every_solution(numeric_inverse_kinematics(arm), 40, seed)
 
 
 def test_an_offset_wrist_cobot_has_up_to_sixteen_solutions():
-    inverse = numeric_inverse(dhsym.load(COBOT))
+    inverse = numeric_inverse_kinematics(dhsym.load(COBOT))
     counts = assert_every_solution(inverse, 60, 5)
     assert sorted(set(counts)) == [4, 8, 12]  # 16 at some poses, too: see the slow test
 
 
 @pytest.mark.slow
 def test_an_offset_wrist_cobot_at_many_poses():
-    counts = assert_every_solution(numeric_inverse(dhsym.load(COBOT)), 400, 6)
+    counts = assert_every_solution(numeric_inverse_kinematics(dhsym.load(COBOT)), 400, 6)
     assert max(counts) == 16
 
 
 def test_a_redundant_arm_with_a_joint_given():
-    inverse = numeric_inverse(dhsym.load(HUMANOID), free=["q_3"])
+    inverse = numeric_inverse_kinematics(dhsym.load(HUMANOID), free=["q_3"])
     counts = assert_every_solution(inverse, 30, 7)
     assert max(counts) >= 8
 
 
 def test_a_sweep_of_the_given_joint_solves_the_pose_at_each_of_its_values():
-    inverse = numeric_inverse(dhsym.load(HUMANOID), free=["q_3"])
+    inverse = numeric_inverse_kinematics(dhsym.load(HUMANOID), free=["q_3"])
     q = numpy.array([0.3, -0.4, numpy.pi / 6, -0.6, 0.7, -0.8, 0.9])  # q3 on the sweep's 5° grid
     values, solutions = inverse.sweep(inverse.pose(q))
     assert values.shape == (72,) and solutions.shape == (72, 16, 7)
@@ -127,7 +128,7 @@ def test_a_sweep_of_the_given_joint_solves_the_pose_at_each_of_its_values():
 
 
 def test_the_nearest_solution_from_a_seed_on_any_arm_and_within_limits():
-    inverse = numeric_inverse(dhsym.load(HUMANOID))  # seven unknown joints: no list, the nearest one
+    inverse = numeric_inverse_kinematics(dhsym.load(HUMANOID))  # seven unknown joints: no list, the nearest one
     q = numpy.array([0.3, -0.4, 0.5, -0.6, 0.7, -0.8, 0.9])
     found = inverse.nearest(inverse.pose(q), q + 0.05)
     assert numpy.abs(inverse.pose(found) - inverse.pose(q)).max() < REACH and apart(found, q, "R" * 7) < 0.2
@@ -144,15 +145,15 @@ def test_the_nearest_solution_from_a_seed_on_any_arm_and_within_limits():
 def test_a_general_arm_with_symbols_needs_numbers_and_takes_them():
     robot = dhsym.load(GENERAL)
     with pytest.raises(dhsym.UserError, match="needs numbers: general 6R has no value for a_1, a_2"):
-        numeric_inverse(robot)
+        numeric_inverse_kinematics(robot)
     rng = numpy.random.default_rng(8)
     numbers = {s.name: float(rng.uniform(0.1, 0.5)) for s in robot.chain.symbols if s.name[0] in "ad"}
     numbers.update({f"alpha_{k}": float(rng.uniform(-3, 3)) for k in range(1, 7)})
-    assert_every_solution(numeric_inverse(robot, constants=numbers), 10, 8)
+    assert_every_solution(numeric_inverse_kinematics(robot, constants=numbers), 10, 8)
 
 
 def test_the_module_is_the_solver_and_takes_the_given_joint():
-    inverse = numeric_inverse(dhsym.load(HUMANOID), free=["q_3"])
+    inverse = numeric_inverse_kinematics(dhsym.load(HUMANOID), free=["q_3"])
     namespace: dict = {}
     exec(compile(inverse.code("dhsym ik humanoid_arm.yaml --free q_3"), "humanoid_ik.py", "exec"), namespace)
     values, poses = configurations(inverse, 5, 9)
@@ -199,7 +200,7 @@ def three_parallel_arm(seed: int) -> Robot:
 
 
 def assert_same_sets_as_eaik(robot, count: int, seed: int):
-    inverse = numeric_inverse(robot)
+    inverse = numeric_inverse_kinematics(robot)
     eaik = eaik_robot(inverse.arm)
     assert eaik.has_known_decomposition(), eaik.get_kinematic_family()
     values, poses = configurations(inverse, count, seed)
@@ -254,7 +255,7 @@ def test_numeric_json_holds_the_target_and_solutions_that_reach_it():
     assert result["replaced"] == {"px": 0.4, "pz": 0.5} and result["joints_among_solutions"] is None
     target, solutions = numpy.array(result["target"]), numpy.array(result["solutions"])
     assert target[0, 3] == 0.4 and target[2, 3] == 0.5 and len(solutions) > 0
-    inverse = numeric_inverse(dhsym.load(COBOT))
+    inverse = numeric_inverse_kinematics(dhsym.load(COBOT))
     assert numpy.abs(inverse.pose(solutions) - target).max() < REACH
 
 
@@ -266,7 +267,7 @@ def test_the_python_module_of_an_arm_with_no_closed_form_is_numeric():
         "or the end of the arm, or are parallel (Pieper's condition): the module finds every solution numerically"]
     namespace: dict = {}
     exec(compile(result.stdout, "cobot_ik.py", "exec"), namespace)
-    inverse = numeric_inverse(dhsym.load(COBOT))
+    inverse = numeric_inverse_kinematics(dhsym.load(COBOT))
     values, poses = configurations(inverse, 4, 11)
     found = namespace["ik"](poses)
     assert found.shape == (4, 16, 6) and f"Made by `dhsym ik {COBOT} --format python`" in result.stdout

@@ -16,6 +16,8 @@ import sympy
 from cli_runner import run_dhsym
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from ik_checks import derived as solve
+from ik_checks import said
 from strategies import length_drawer
 from test_inverse_robots import check_round_trip
 
@@ -26,7 +28,6 @@ from dhsym.geometry.convert import convert_robot
 from dhsym.inverse.codegen import module_text
 from dhsym.inverse.quartic import Complex, ferrari, root, written_out
 from dhsym.inverse.solution import Branch, Solution
-from dhsym.inverse.solve import solve
 from dhsym.inverse.written import Written, exact
 
 GENERAL = """name: general Pieper arm
@@ -83,14 +84,14 @@ def _quartic_module():
     """The generated numpy module of a one-joint 'solution' whose joint is 2 atan(u) for each root u
     of the quartic with the coefficients r11, r12, r13, px, r21: the numerics of every Pieper arm."""
     theta = sympy.Symbol("theta_1", real=True)
-    arm = Robot(Chain([DHRow.revolute(theta)], "standard"), name="quartic")
+    arm = Chain([DHRow.revolute(theta)], "standard")
     r11, r12, r13, px, r21 = sympy.symbols("r11 r12 r13 px r21", real=True)
     definitions, expression = ferrari([r11, r12, r13, px, r21])
     u = Complex("u")
     branches = tuple(Branch(f"root {k}", ((u, root(expression, a, b)), (theta, sympy.atan2(2 * u, 1 - u ** 2))))
                      for k, (a, b) in enumerate(SIGNS, 1))
     namespace: dict = {}
-    exec(compile(module_text(Solution(arm, "quartic", (theta,), tuple(definitions), branches)), "q", "exec"),
+    exec(compile(module_text(Solution(arm, "quartic", (theta,), tuple(definitions), branches), "quartic"), "q", "exec"),
          namespace)
     return namespace["ik"]
 
@@ -157,7 +158,7 @@ def general_arms(draw):
 @given(general_arms(), st.integers(0, 10 ** 6))
 def test_random_general_arms_with_a_spherical_wrist_round_trip(chain, seed):
     solution = solve(chain)
-    assert "as Pieper solved them" in solution.method
+    assert "as Pieper solved them" in said(solution.method)
     assert len(solution.branches) == 8 and len({b.name for b in solution.branches}) == 8
     check_round_trip(chain, solution, random.Random(seed), trials=3)
 
@@ -255,7 +256,7 @@ def test_a_general_arm_after_a_wrist_at_the_start_is_solved_from_the_end(convent
     chain = convert_robot(Robot(Chain(rows, "standard"), name="wrist first", sample=sample), convention)
     solution = solve(chain)
     assert "seen from the last frame gives q_4, q_5, q_6 as Pieper solved them: a quartic in tan(θ4/2)" \
-        in solution.method
+        in said(solution.method)
     assert solution.branches[0].name == "quartic root 1, wrist not flipped"
     check_round_trip(chain, solution, random.Random(4), trials=3)
 
@@ -284,7 +285,8 @@ def test_the_json_evaluated_by_sympy_gives_q_and_every_step_of_the_derivation_ho
     match = [known for joints, known in arms
              if np.allclose(np.angle(np.exp(1j * (np.array(joints) - q[:3]))), 0, atol=1e-9)]
     assert match, arms
-    steps = [step for step in ik.solution.steps if "Pieper" in step.subproblem or "quartic" in step.subproblem
+    steps = [step for step in ik.solution.steps
+             if step.subproblem.name in ("Pieper's distance", "Pieper's height", "Ferrari's quartic")
              or step.solves and str(step.solves[0]) in ("theta_1", "theta_2")]
     assert len(steps) == 7
     by_name = {symbol.name: value for symbol, value in match[0].items()}

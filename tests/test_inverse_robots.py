@@ -6,18 +6,19 @@ import functools
 import importlib.util
 import math
 import random
-import re
 
 import numpy
 import pytest
 import sympy
+from ik_checks import derived as solve
+from ik_checks import said
 from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
 
 import dhsym
 from dhsym import Robot
 from dhsym.inverse.evaluate import evaluate
+from dhsym.inverse.sentences import Decoupled, LinedUp
 from dhsym.inverse.solution import TARGET_NAMES
-from dhsym.inverse.solve import solve
 
 pytestmark = pytest.mark.slow  # real robots solved in closed form: seconds to minutes per test
 
@@ -50,7 +51,7 @@ def used_elements(solution) -> list[tuple[int, int]]:
 
 
 def check_round_trip(chain, solution, rng, trials=4, constants=None):
-    constants = {**{k: float(v) for k, v in chain.sample.items()}, **(constants or {})}
+    constants = {**{k: float(v) for k, v in chain.sample.items() if k in chain.chain.symbols}, **(constants or {})}
     # a positioning arm (three joints or fewer) reaches the elements it uses; from four joints on, the pose
     elements = used_elements(solution) if len(solution.joint_variables) < 4 else [(r, c) for r in range(3)
                                                                                    for c in range(4)]
@@ -80,11 +81,11 @@ def test_every_real_branch_reaches_the_pose_and_one_is_q(name):
 
 def test_the_puma_is_solved_by_decoupling_with_eight_named_branches():
     _, solution = solved("puma560")
-    assert solution.method.startswith("kinematic decoupling")
+    assert isinstance(solution.method, Decoupled) and said(solution.method).startswith("kinematic decoupling")
     assert len(solution.branches) == 8
     assert {"shoulder right, elbow down, wrist not flipped", "shoulder left, elbow up, wrist flipped"} <= \
         {b.name for b in solution.branches}
-    assert any("theta_5" in text for text in solution.degenerate)
+    assert any("theta_5" in said(case) for case in solution.degenerate)
 
 
 def test_the_stanford_arm_names_its_wrist_centre():
@@ -96,7 +97,7 @@ def test_the_stanford_arm_names_its_wrist_centre():
 def test_the_planar_elbow_uses_px_and_py_and_says_so():
     _, solution = solved("planar2r")
     assert used_elements(solution) == [(0, 3), (1, 3)]
-    assert "px, py" in solution.method and any("consistent" in c for c in solution.conditions)
+    assert "px, py" in said(solution.method) and any("consistent" in said(c) for c in solution.conditions)
     assert [b.name for b in solution.branches] == ["elbow down", "elbow up"]
 
 
@@ -148,7 +149,7 @@ def test_a_redundant_arm_is_refused_and_solved_with_a_free_joint():
 
 
 def test_a_bad_free_name_is_one_sentence():
-    with pytest.raises(dhsym.UserError, match="--free theta_9: no joint variable of that name"):
+    with pytest.raises(dhsym.UserError, match="--free theta_9: .* has no joint variable theta_9; its joint variables"):
         solve(dhsym.load("iiwa7"), free=("theta_9",))
 
 
@@ -200,9 +201,8 @@ def test_where_two_axes_line_up_the_angle_said_to_be_determined_is(name):
     from dhsym.core.numeric import NumericChain
 
     chain = dhsym.load(name)
-    sentence = next(d for d in solve(chain).degenerate if "line up" in d)
-    found = re.search(r"at (\w+) = 0 only (.+?) is determined, at \w+ = pi only (.+?),", sentence)
-    angle, at_zero, at_pi = found.groups()
+    lined = next(case.reason for case in solve(chain).degenerate if isinstance(case.reason, LinedUp))
+    angle, at_zero, at_pi = str(lined.angle), lined.total(), lined.total(at_pi=True)
     rng = random.Random(5)
     numeric = NumericChain(chain.chain, {s: float(v) for s, v in chain.sample.items()}
                            | {s: 0.7 for s in chain.symbols - set(chain.sample) - set(chain.joint_variables)})
@@ -210,7 +210,7 @@ def test_where_two_axes_line_up_the_angle_said_to_be_determined_is(name):
     for value, kept in ((0.0, at_zero), (math.pi, at_pi)):
         q = [rng.uniform(-math.pi, math.pi) for _ in names]
         q[names.index(angle)] = value
-        expression = dhsym.parse_expression(kept)
+        expression = kept
         coefficients = {str(s): float(expression.coeff(s)) for s in expression.free_symbols}
         last = max(coefficients, key=names.index)
         rotation = lambda q: numpy.array(numeric.end(q))[:3, :3]  # noqa: E731

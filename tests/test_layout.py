@@ -18,9 +18,8 @@ PACKAGE = Path(__file__).parent.parent / "dhsym"
 # (dhsym/__init__.py, names imported on first use) stands above them all.
 LAYERS = ["errors", "core", "geometry", "io", "velocity", "inverse", "dynamics", "printing", "latex", "plot",
           "checking", "api", "cli", "web"]
-# Upward imports still allowed, as (importer, imported) without the `dhsym.` prefix: inverse/api.py's
-# printing, until the inverse side's rebuild (issue 25) moves it up to api/ik.py; then none.
-ALLOWED_UPWARD = {("inverse.api", "latex.ik"), ("inverse.api", "printing.ik")}
+# No upward import is allowed, at module level or inside a function.
+ALLOWED_UPWARD: set = set()
 
 
 def _modules():

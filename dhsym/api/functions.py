@@ -149,9 +149,9 @@ def ik(robot, free=(), numeric: bool = False, constants=None):
     NumericInverse('Universal Robots UR5', 6 joints)
     """
     if numeric:
-        from ..inverse.numeric import numeric_inverse
+        from .ik import numeric_inverse_kinematics
 
-        return numeric_inverse(notebook_robot(robot), free, constants)
+        return numeric_inverse_kinematics(notebook_robot(robot), free, constants)
     return notebook_robot(robot).ik(free)
 
 

@@ -177,7 +177,7 @@ class Robot(record.Robot):
         """The closed-form inverse kinematics, with the joint variables `free` (symbols or names)
         kept as parameters: its branches, `.evaluate(T)`, `.latex()` and `.code()`; see
         dhsym.inverse. Solved once per choice of `free`."""
-        from ..inverse.api import inverse_kinematics  # becomes api.ik once the inverse side moves it up
+        from .ik import inverse_kinematics  # the solver only when it is asked for
 
         key = frozenset(getattr(v, "name", str(v)) for v in free)
         if key not in self._solved:

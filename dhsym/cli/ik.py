@@ -36,13 +36,13 @@ def add_parsers(commands) -> None:
 
 
 def run(robot, args) -> str:
-    from ..api.robot import notebook_robot  # here: the other commands need no solver
+    from ..api.ik import inverse_kinematics  # here: the other commands need no solver
     from ..errors import NoClosedForm
 
     if ik_numeric.wanted(args):
         return ik_numeric.run(robot, args)
     try:
-        result = notebook_robot(robot).ik(args.free)
+        result = inverse_kinematics(robot, args.free)
     except NoClosedForm as refusal:  # the numeric module, or the command that answers numerically
         return ik_numeric.refused(robot, args, refusal)
     if args.format == "json":
@@ -52,7 +52,7 @@ def run(robot, args) -> str:
     if args.format == "latex":
         from ..latex.ik import snippet  # the LaTeX layout lives with the documents
 
-        return snippet(result.solution)
+        return snippet(result.solution, result.robot)
     return result.text(args.width, args.ascii)
 
 

@@ -45,12 +45,12 @@ def wanted(args) -> bool:
 
 def run(robot, args, refusal: str = "") -> str:
     """The numeric answer in the format asked for; `refusal` says why the closed form was not used."""
+    from ..api.ik import numeric_inverse_kinematics
     from ..inverse.numeric.answer import answer  # numpy, only when numbers are asked for
-    from ..inverse.numeric.solver import numeric_inverse
 
     if args.format == "latex":
         raise UserError("the numeric solution has no LaTeX form; use --format text, json or python")
-    inverse = numeric_inverse(robot, args.free, parse_assignments(robot, args.constants, "--set"))
+    inverse = numeric_inverse_kinematics(robot, args.free, parse_assignments(robot, args.constants, "--set"))
     if args.format == "python":
         return inverse.code(command=command(args, numeric=not refusal))
     found = answer(inverse, parse_assignments(robot, args.joints, "--q"), pose_elements(args.pose))
@@ -126,7 +126,7 @@ def _numeric_hint(robot, args) -> str:
     except ImportError:  # no numpy: the numeric command will say which extra it needs
         return hint
     try:
-        arm = numeric_arm(robot)
+        arm = numeric_arm(robot.chain, sample=robot.sample, name=robot.name)
         check_rank(arm, free_positions(arm, args.free))
     except UserError as reason:
         return f"; nor a list in numbers: {reason.message}"

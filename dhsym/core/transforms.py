@@ -123,6 +123,19 @@ def joint_axis_frame(convention: str, joint: int) -> int:
     return joint - 1 if convention == "standard" else joint
 
 
+def twist_row(convention: str, joint: int) -> int:
+    """The row (1..n; n + 1 where no row holds it) whose α is the twist from the axis of `joint` to
+    the axis of the next joint: a row's α turns z of the frame before it into z of its own frame
+    in both conventions, so this is the row after the joint's axis frame (`joint_axis_frame`):
+    the joint's own row in the standard convention (αᵢ), the next one in the modified (α_i in row
+    i + 1). Every place that asks which printed row holds a twist asks here.
+
+    >>> twist_row("standard", 2), twist_row("modified", 2)
+    (2, 3)
+    """
+    return joint_axis_frame(convention, joint) + 1
+
+
 def product(steps) -> sympy.Matrix:
     """The plain matrix product of the steps, without any simplification."""
     result = sympy.eye(4)

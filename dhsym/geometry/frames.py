@@ -33,7 +33,7 @@ import sympy
 from ..core.chain import Chain, DHRow
 from ..core.grid import ANGLE_STEP
 from ..core.robot import Robot
-from ..core.transforms import CONVENTIONS, Step
+from ..core.transforms import CONVENTIONS, Step, twist_row
 from ..errors import UserError
 from .exact import cross, dot, is_zero_vector, tidy_vector, unit
 from .lines import JointAxis, distance_between, normal_feet, relation
@@ -208,13 +208,13 @@ def _z_turns(convention: str, exact: list, base_steps: list, tool_steps: list) -
     tool's first turn when it is about z; the twist is None where no z axis comes before."""
     base_turns = [step for step in base_steps if step.kind[0] == "R"]
     turns = [("base", base_turns[0].value, None)] if [s.kind for s in base_turns] == ["Rz"] else []
-    for i, values in enumerate(exact):
-        twist = exact[i - 1]["alpha"] if convention == "standard" else values["alpha"]
-        twist = twist if i else (0 if turns else None)
+    for i, values in enumerate(exact):  # row i + 1's θ turns about the axis of joint i + 1; the twist before it
+        twist = exact[twist_row(convention, i) - 1]["alpha"] if i else (0 if turns else None)
         turns.append((i + 1, values["theta"], twist))
     tool_turns = [step for step in tool_steps if step.kind[0] == "R"]
     if tool_turns and tool_turns[0].kind == "Rz":
-        turns.append(("tool", tool_turns[0].value, exact[-1]["alpha"] if convention == "standard" else 0))
+        after = twist_row(convention, len(exact))  # the twist after the last joint's axis, where a row holds one
+        turns.append(("tool", tool_turns[0].value, exact[after - 1]["alpha"] if after <= len(exact) else 0))
     return turns
 
 

@@ -12,19 +12,21 @@ any algebra, so that an arm the search cannot handle is refused at once on any m
   solutions replaces the branches: a spatial arm has six, a planar one three.
 
 >>> import dhsym
->>> motion_rank(dhsym.load("iiwa7"), range(1, 8)), motion_rank(dhsym.load("planar3r"), (1, 2, 3))
+>>> motion_rank(dhsym.load("iiwa7").chain, range(1, 8)), motion_rank(dhsym.load("planar3r").chain, (1, 2, 3))
 (6, 3)
->>> refuse_unbounded(dhsym.load("puma560"))  # a textbook arm: nothing to say
+>>> refuse_unbounded(dhsym.load("puma560").chain, "puma560.yaml")  # a textbook arm: nothing to say
 """
 from __future__ import annotations
 
 import random
 from dataclasses import dataclass
 
+from ..core.chain import Chain, plain
 from ..core.estimate import estimated_size
+from ..core.sampling import random_pose
 from ..core.size import expanded_terms, rough_count
 from ..errors import UserError
-from ..velocity.geometry import axis_line, cross, minus, norm, poses, sample_values
+from ..velocity.geometry import axis_line, cross, minus, norm, poses
 
 ENTRY_EXTRA_TERMS = 40  # (l1 + l2 + l3 + l4)^4, 35 terms, takes the PUMA's derivation from 1 s to 3 s; ^6 (84) to 20 s
 POOL_MAX_NODES = 60_000  # general 6R arms with a wrist reach 36,000 (3–4 s); a planar 24R, 18 --free: 69,456 (84 s)
@@ -33,9 +35,10 @@ RANK_TRIALS = 3  # generic poses: the rank is the largest found (one pose may be
 RANK_TOLERANCE = 1e-8  # of unit columns: far above rounding, far below any real motion
 
 
-def refuse_unbounded(robot) -> None:
-    """A UserError when the table's entries or the equations would be too large to work with."""
-    chain = robot.chain
+def refuse_unbounded(chain: Chain, path: str = "<robot>") -> None:
+    """A UserError when the table's entries or the equations would be too large to work with;
+    `path` says where the chain comes from (its robot file), for the message."""
+    chain = plain(chain)
     entries = [(f"joint row {k} {key}", getattr(row, key)) for k, row in enumerate(chain.rows, 1)
                for key in ("theta", "d", "a", "alpha")]
     entries += [(f"{side} step {k}", step.value) for side, steps in (("base", chain.base), ("tool", chain.tool))
@@ -44,12 +47,12 @@ def refuse_unbounded(robot) -> None:
     total = sum(extra.values())
     if total > ENTRY_EXTRA_TERMS:
         largest = max(extra, key=extra.get)
-        raise UserError(f"{robot.path}: {largest} multiplies out to {_count(extra[largest] + 1)} terms, and the "
+        raise UserError(f"{path}: {largest} multiplies out to {_count(extra[largest] + 1)} terms, and the "
                         "inverse kinematics' equations square it: dhsym solves tables whose entries multiply out to "
                         f"at most {ENTRY_EXTRA_TERMS} terms beyond the first of each (this one: {_count(total)}); name "
                         "such a sum as a constant (a symbol such as l_1) and give its value in the robot file's sample")
     if pool_size(chain, POOL_MAX_NODES) > POOL_MAX_NODES:
-        raise UserError(f"{robot.path}: the inverse kinematics' equations (one for each pair of frames) would hold "
+        raise UserError(f"{path}: the inverse kinematics' equations (one for each pair of frames) would hold "
                         f"more than the {POOL_MAX_NODES:,} expression nodes that dhsym searches; a joint made --free "
                         "still enters every equation: write the joints you do not solve for as numbers in a copy of "
                         "the table")
@@ -71,14 +74,14 @@ def pool_size(chain, stop: int | None = None) -> int:
     return total
 
 
-def motion_rank(robot, joints) -> int:
+def motion_rank(chain: Chain, joints, sample=None) -> int:
     """In how many independent ways the joints `joints` (numbers 1..n) move the end of the arm:
-    the rank of their Jacobian columns at a few generic poses (the largest found)."""
-    chain = getattr(robot, "chain", robot)
-    sample = getattr(robot, "sample", {})
+    the rank of their Jacobian columns at a few generic poses (the largest found; the constants of
+    `sample`, the robot file's, where it gives them)."""
+    chain = plain(chain)
     rng, best = random.Random(24), 0
     for _ in range(RANK_TRIALS):
-        frame_poses = poses(chain, sample_values(chain, rng, sample))
+        frame_poses = poses(chain, random_pose(chain, rng, sample))
         end = frame_poses[chain.last_frame][1]
         columns = []
         for joint in joints:
@@ -133,21 +136,21 @@ class Redundancy:
         return self.n - self.arm_rank
 
 
-def redundancy(robot, free) -> Redundancy | None:
+def redundancy(chain: Chain, free, sample=None) -> Redundancy | None:
     """How the unknown joints (all but `free`) outnumber the ways they move the end, or None."""
-    chain = robot.chain
+    chain = plain(chain)
     unknowns = [j for j, v in enumerate(chain.joint_variables, 1) if v not in set(free)]
-    rank = motion_rank(robot, unknowns)
+    rank = motion_rank(chain, unknowns, sample)
     if len(unknowns) <= rank:
         return None
-    arm_rank = motion_rank(robot, range(1, chain.n + 1)) if free else rank
+    arm_rank = motion_rank(chain, range(1, chain.n + 1), sample) if free else rank
     return Redundancy(len(unknowns), rank, chain.n, arm_rank)
 
 
-def redundant_message(robot, free, redundant: Redundancy, example=(), tried: int = 0) -> str:
+def redundant_message(name: str, free, redundant: Redundancy, example=(), tried: int = 0) -> str:
     """Why a closed form needs other or more joints made parameters, and which (`example`, checked by
-    a derivation), or that none of the `tried` choices gave one."""
-    name = robot.name or "the robot"
+    a derivation), or that none of the `tried` choices gave one; `name`: the robot's, for the message."""
+    name = name or "the robot"
     ways = lambda count: f"{count} independent way{'s' if count != 1 else ''}"  # noqa: E731
     if redundant.lost:
         chosen = ", ".join(str(v) for v in free) + (" a parameter" if len(free) == 1 else " parameters")

@@ -11,12 +11,13 @@ numbers; an angle from them is NaN where its root is not real.
 
 >>> import sympy
 >>> from dhsym.core.chain import Chain, DHRow
->>> from dhsym import Robot
 >>> from dhsym.inverse.solution import Branch, Solution
 >>> t, l = sympy.symbols("theta_1 l_1", real=True)
->>> arm = Robot(Chain([DHRow.revolute(t, a=l)], "standard"), name="pendulum", sample={l: sympy.Rational(1, 2)})
+>>> arm = Chain([DHRow.revolute(t, a=l)], "standard")
 >>> px, py = sympy.symbols("px py", real=True)
->>> code = module_text(Solution(arm, "one angle", (t,), (), (Branch("only", ((t, sympy.atan2(py, px)),)),)))
+>>> solution = Solution(arm, "one angle", (t,), (), (Branch("only", ((t, sympy.atan2(py, px)),)),),
+...                     sample={l: sympy.Rational(1, 2)})
+>>> code = module_text(solution, "pendulum")
 >>> namespace = {}
 >>> exec(compile(code, "pendulum_ik.py", "exec"), namespace)
 >>> namespace["ik"]([[0, -1, 0, 0], [1, 0, 0, 0.5], [0, 0, 1, 0], [0, 0, 0, 1]]).round(4).tolist()
@@ -129,30 +130,19 @@ def default_text(value) -> str:
     return repr(float(value))
 
 
-def module_text(solution, command: str = "") -> str:
-    """The text of the standalone module for `solution` (see the module docstring)."""
+def module_text(solution, name: str = "", command: str = "") -> str:
+    """The text of the standalone module for `solution` (see the module docstring); `name`: the
+    robot's, `command` the one that made it, for its docstring."""
     chain = solution.chain
     joints = list(solution.joint_variables)
     names, constants = _names(solution)
-    code = _NumpyCode(names, chain.numbers)
-    sample = {str(symbol): value for symbol, value in chain.sample.items()}
-    keywords = [f"{names[s.name]}={default_text(sample[s.name])}" for s in constants if s.name in sample]
-
-    keywords += [names[s.name] for s in constants if s.name not in sample]
-    keywords += [names[s.name] for s in solution.free]
-    used = set().union(*(value.free_symbols for _, value in solution.definitions),
-                       *(value.free_symbols for branch in solution.branches for _, value in branch.assignments))
-    held = {symbol.name for symbol in used}
-    elements = [(k, element.name) for k, element in enumerate(solution.target_symbols) if element.name in held]
+    code = _NumpyCode(names, solution.numbers)
+    keywords = _keywords(solution, names, constants)
     kinds = {row.variable: row.joint for row in chain.rows}
     revolute = tuple(k for k, joint in enumerate(joints) if kinds.get(joint) == "R")
-    body = [f"    {names[name]} = elements[{k}]" for k, name in elements]
-    body.append(f"    result = numpy.empty(({len(solution.branches)}, {len(joints)}, len(poses)))"
-                "  # each value's poses side by side: faster")
-    body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
-    body += ["        " + line for line in _computation(solution, names, code)]
+    body = _body(solution, names, code)
     lines = [
-        f'"""Closed-form inverse kinematics of {comment_text(chain.name)} ({chain.convention} DH).\n',
+        f'"""Closed-form inverse kinematics of {comment_text(name)} ({chain.convention} DH).\n',
         (f"Made by `{comment_text(command)}`.\n" if command else "Made by dhsym.\n"),
         "ik(T, **constants): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by",
         "default; the result holds every branch's joint values, shaped (B, n) or (N, B, n): branches in",
@@ -185,6 +175,28 @@ def module_text(solution, command: str = "") -> str:
         "    return result[0] if T.ndim == 2 else result", "",
     ]
     return "\n".join(lines)
+
+
+def _keywords(solution, names: dict, constants) -> list[str]:
+    """ik()'s keyword arguments: the constants with the file's sample values as defaults, then those
+    without, then the --free joint variables."""
+    sample = {str(symbol): value for symbol, value in solution.sample.items()}
+    keywords = [f"{names[s.name]}={default_text(sample[s.name])}" for s in constants if s.name in sample]
+    keywords += [names[s.name] for s in constants if s.name not in sample]
+    return keywords + [names[s.name] for s in solution.free]
+
+
+def _body(solution, names: dict, code) -> list[str]:
+    """ik()'s middle: the target's elements it reads, the result array, every branch's values."""
+    used = set().union(*(value.free_symbols for _, value in solution.definitions),
+                       *(value.free_symbols for branch in solution.branches for _, value in branch.assignments))
+    held = {symbol.name for symbol in used}
+    elements = [(k, element.name) for k, element in enumerate(solution.target_symbols) if element.name in held]
+    body = [f"    {names[name]} = elements[{k}]" for k, name in elements]
+    body.append(f"    result = numpy.empty(({len(solution.branches)}, {len(solution.joint_variables)}, len(poses)))"
+                "  # each value's poses side by side: faster")
+    body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
+    return body + ["        " + line for line in _computation(solution, names, code)]
 
 
 _REAL_ANGLE = [

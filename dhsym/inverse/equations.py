@@ -19,10 +19,11 @@ from functools import cached_property
 
 import sympy
 
-from ..core.robot import as_chain, as_robot
+from ..core.chain import Chain
 from ..core.simplify import collect_by_trig, contract
 from . import algebra
 from .algebra import Ring
+from .sentences import Frame, Phrase
 
 ZERO = sympy.Matrix([0, 0, 0])
 
@@ -31,13 +32,14 @@ ZERO = sympy.Matrix([0, 0, 0])
 class Equation:
     """`lhs` = `rhs`: lhs from the target (moved to a frame by known or unknown first joints),
     rhs from the chain; `kind` "position" (a point) or "orientation" (a rotation element);
-    `where` names the matrix element it comes from, for the derivation."""
+    `where` names the matrix element it comes from, for the derivation (a phrase: words and
+    the chain's frames)."""
 
     lhs: sympy.Expr
     rhs: sympy.Expr
     kind: str
-    where: str
-    source: str = ""  # the matrix equation it is an element of: pairs are taken within one
+    where: Phrase
+    source: tuple = ()  # the matrix equation it is an element of (its frames): pairs are taken within one
 
     @cached_property
     def expr(self) -> sympy.Expr:  # built once: the search reads it in every round
@@ -63,11 +65,10 @@ def squared_length(steps, variables, point=ZERO, point_length=0, memo: dict | No
     return collect_by_trig(algebra.expand(total) if ring is None else ring.expand(total), variables)
 
 
-def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None,
+def moved(chain: Chain, frame, point: sympy.Matrix, point_length, known_in=None,
           memo: dict | None = None) -> tuple[sympy.Matrix, sympy.Expr]:
     """The point (known in frame `known_in`, the first by default) seen from `frame`, and its
     squared distance from that frame's origin (`memo` as for `squared_length`)."""
-    chain = as_chain(chain)
     known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
     inverse = chain.transform(frame, known_in)
@@ -76,12 +77,11 @@ def moved(chain, frame, point: sympy.Matrix, point_length, known_in=None,
         squared_length(chain.steps(frame, known_in), variables, point, point_length, memo)
 
 
-def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matrix, holder,
+def point_equations(chain: Chain, point: sympy.Matrix, point_length, local: sympy.Matrix, holder,
                     known_in=None) -> list[Equation]:
     """A point known in frame `known_in` (the first by default; the last for a wrist at the start)
     that sits at `local` in frame `holder`: its three coordinates and squared distance, seen from
     each frame between the two."""
-    robot, chain = as_robot(chain), as_chain(chain)  # frames are the chain's; the robot names them
     frames = chain.frames
     known_in = chain.first_frame if known_in is None else known_in
     variables = chain.joint_variables
@@ -95,28 +95,22 @@ def point_equations(chain, point: sympy.Matrix, point_length, local: sympy.Matri
         there = chain_side[:3, :3] * local + chain_side[:3, 3]
         there = there.applyfunc(lambda e: collect_by_trig(algebra.expand(e), frozenset(variables)))
         there_length = squared_length(chain.steps(frame, holder), variables, local, local_length, memo)
-        name = _frame_name(robot, frame)
         for axis in range(3):
             equations.append(Equation(seen[axis], there[axis], "position",
-                                      f"{'xyz'[axis]} of the point in frame {name}", f"point in {name}"))
+                                      (f"{'xyz'[axis]} of the point in frame ", Frame(frame)), ("point", frame)))
         equations.append(Equation(seen_length, there_length, "position",
-                                  f"squared distance of the point from the origin of frame {name}"))
+                                  ("squared distance of the point from the origin of frame ", Frame(frame))))
     return equations
 
 
-def transform_equations(chain, target: sympy.Matrix, position: bool, start=None, end=None) -> list[Equation]:
+def transform_equations(chain: Chain, target: sympy.Matrix, position: bool, start=None, end=None) -> list[Equation]:
     """(ⁱT_first) T (ʲT_last)⁻¹ = ⁱT_j for every pair of frames i ≤ j (between `start` and `end`):
     the rotation elements, and with `position` the position elements and the squared distance.
 
     The two sides of each product are expanded once (per i, per j) and only the elements that
     are asked for are multiplied out: expansion is canonical, so the result is the same as
     expanding the whole product, at a fraction of the work."""
-    robot, chain = as_robot(chain), as_chain(chain)  # frames are the chain's; the robot names them
-    frames, first, last = chain.frames, chain.first_frame, chain.last_frame
-    if end is not None:
-        frames = frames[:frames.index(end) + 1]
-    if start is not None:
-        frames = frames[frames.index(start):]
+    frames, first, last = _frames_between(chain, start, end), chain.first_frame, chain.last_frame
     variables = frozenset(chain.joint_variables)
     columns = 4 if position else 3
     memo: dict = {}  # contracted tails of steps, shared by the squared lengths
@@ -142,29 +136,45 @@ def transform_equations(chain, target: sympy.Matrix, position: bool, start=None,
         for j in frames[a + 1:]:
             after = expanded_after[j]
             chain_side = chain.transform(i, j)
-            where = f"{_frame_name(robot, i)}T{_frame_name(robot, j)}"
+            where = (Frame(i), "T", Frame(j))
             for r in range(3):
                 for c in range(columns):
                     seen = sum((before[r][m] * after[m][c] for m in range(3)), before[r][3] if c == 3 else 0)
                     if seen not in written:  # the same element recurs in other pairs of frames: written once
                         written[seen] = made(seen)
                     equations.append(Equation(written[seen], chain_side[r, c], _kind(c, j == last),
-                                              f"element ({r + 1}, {c + 1}) of {where}", where))
+                                              (f"element ({r + 1}, {c + 1}) of ", *where), (i, j)))
             if position:
-                tip = afters[j][:3, 3]
                 if j not in tip_lengths:
                     tip_lengths[j] = squared_length(chain.steps(last, j), variables, memo=memo, ring=ring)
-                # ‖T·b‖² = ‖b‖² + 2 p·(R b) + ‖p‖² for the unit-orthogonal R of the target
-                rotated = target[:3, :3] * tip
-                inner = (tip_lengths[j]
-                         + ring.expand(2 * sum(target[k, 3] * rotated[k] for k in range(3))
-                                        + sum(target[k, 3] ** 2 for k in range(3))))
-                point = rotated + target[:3, 3]
-                seen_length = squared_length(chain.steps(i, first), variables, point, inner, memo, ring)
-                there_length = squared_length(chain.steps(i, j), variables, memo=memo, ring=ring)
-                equations.append(Equation(seen_length, there_length, _kind(3, j == last), f"squared length of {where}",
-                                          where))
+                equations.append(_length_equation(chain, target, (i, j), afters[j][:3, 3], tip_lengths[j], memo, ring))
     return equations
+
+
+def _frames_between(chain: Chain, start, end) -> list:
+    """The chain's frames from `start` to `end` (None: its first, its last)."""
+    frames = chain.frames
+    if end is not None:
+        frames = frames[:frames.index(end) + 1]
+    if start is not None:
+        frames = frames[frames.index(start):]
+    return frames
+
+
+def _length_equation(chain: Chain, target, pair, tip, tip_length, memo: dict, ring) -> Equation:
+    """The squared length of the vector from frame i's origin to the tip's point `tip` of frame j,
+    both ways: through the target and through the chain (`tip_length`: ‖tip‖², seen from the end)."""
+    i, j = pair
+    variables = frozenset(chain.joint_variables)
+    # ‖T·b‖² = ‖b‖² + 2 p·(R b) + ‖p‖² for the unit-orthogonal R of the target
+    rotated = target[:3, :3] * tip
+    inner = (tip_length + ring.expand(2 * sum(target[k, 3] * rotated[k] for k in range(3))
+                                      + sum(target[k, 3] ** 2 for k in range(3))))
+    point = rotated + target[:3, 3]
+    seen_length = squared_length(chain.steps(i, chain.first_frame), variables, point, inner, memo, ring)
+    there_length = squared_length(chain.steps(i, j), variables, memo=memo, ring=ring)
+    return Equation(seen_length, there_length, _kind(3, j == chain.last_frame),
+                    ("squared length of ", Frame(i), "T", Frame(j)), (i, j))
 
 
 def _kind(column: int, to_last: bool) -> str:
@@ -172,6 +182,3 @@ def _kind(column: int, to_last: bool) -> str:
     position of an inner frame, which the target's rotation and position give together."""
     return "orientation" if column < 3 else "position" if to_last else "mixed"
 
-
-def _frame_name(robot, frame) -> str:
-    return str(robot.numbering.frame(frame))

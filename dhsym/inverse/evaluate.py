@@ -4,14 +4,15 @@ with numpy (imported here only, on first use: the symbolic commands never load i
 >>> import numpy, dhsym
 >>> from dhsym.inverse.solve import solve
 >>> arm = dhsym.load("planar2r")
+>>> solution = solve(arm.chain, sample=arm.sample)
 >>> pose = numpy.eye(4); pose[:2, 3] = [0.5, 0.4]        # a_1 = 0.5, a_2 = 0.4: θ = (0, π/2)
->>> numpy.round(evaluate(solve(arm), pose), 6)
+>>> numpy.round(evaluate(solution, pose), 6)
 array([[ 0.      ,  1.570796],
        [ 1.349482, -1.570796]])
 
 A constant the robot does not have is an error, not a value quietly left out:
 
->>> evaluate(solve(arm), pose, {"a_3": 1.0})
+>>> evaluate(solution, pose, {"a_3": 1.0}, name=arm.name)
 Traceback (most recent call last):
 ...
 dhsym.errors.UserError: Planar elbow manipulator (2R) has no constant a_3; its constants are a_1, a_2
@@ -22,30 +23,32 @@ from ..errors import UserError
 from .codegen import keyword_names, module_text
 
 
-def evaluate(solution, T, constants=None):
+def evaluate(solution, T, constants=None, name: str = ""):
     """Joint values of every branch for the pose T (4×4 → (B, n)) or poses (N×4×4 → (N, B, n)):
     branches in solution order, joints in `solution.joint_variables` order, NaN where a branch
     does not exist. `constants` maps the robot's symbols (and --free joint variables), or their
     names, to numbers; the robot's sample values are the defaults. The numbers come from the
     module `dhsym ik --format python` writes (dhsym.inverse.codegen): one generator for the
-    printed module and for this. A `Program` compiles it once for many calls."""
-    return Program(solution)(T, constants)
+    printed module and for this. A `Program` compiles it once for many calls; `name`: the robot's,
+    for the messages."""
+    return Program(solution, name)(T, constants)
 
 
 class Program:
     """The generated module's `ik` for one solution, compiled once, and the names of its keyword
-    arguments: what `robot.ik().evaluate()` keeps between calls (each solution its own)."""
+    arguments: what `robot.ik().evaluate()` keeps between calls (each solution its own). `others`:
+    names of the robot file's values for other chapters (g, masses), accepted and left out."""
 
-    def __init__(self, solution):
+    def __init__(self, solution, name: str = "", others=()):
         namespace: dict = {}
-        exec(compile(module_text(solution), f"<ik of {solution.chain.name}>", "exec"), namespace)  # our own text
+        exec(compile(module_text(solution, name), f"<ik of {name}>", "exec"), namespace)  # our own text
         self.function = namespace["ik"]
         self.keywords = keyword_names(solution)  # constant or --free joint name -> keyword of ik()
-        sample = {str(symbol) for symbol in solution.chain.sample}
-        self.required = [name for name in self.keywords if name not in sample]
-        self.unused = sample - set(self.keywords)  # the file's other values (g, masses): known, not needed here
+        sample = {str(symbol) for symbol in solution.sample}
+        self.required = [known for known in self.keywords if known not in sample]
+        self.unused = set(map(str, others)) - set(self.keywords)  # the file's other values (g, masses): not needed
         self.free = {symbol.name for symbol in solution.free}
-        self.robot = solution.chain.name or "the robot"
+        self.robot = name or "the robot"
 
     def __call__(self, T, constants=None):
         given = {getattr(k, "name", str(k)): v for k, v in (constants or {}).items()}

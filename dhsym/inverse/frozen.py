@@ -63,8 +63,9 @@ class KeepsForm:
     """A dataclass that pickles and deep-copies its expressions as they are (see the module)."""
 
     def __reduce__(self):
-        return _rebuilt, (type(self), tuple(frozen(getattr(self, field.name)) for field in fields(self)))
+        return _rebuilt, (type(self), {field.name: frozen(getattr(self, field.name)) for field in fields(self)
+                                       if field.init})
 
 
-def _rebuilt(kind, values):
-    return kind(*(thawed(value) for value in values))
+def _rebuilt(kind, values: dict):
+    return kind(**{name: thawed(value) for name, value in values.items()})

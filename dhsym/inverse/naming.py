@@ -40,52 +40,31 @@ are measured in dhsym.inverse.sides, "up" being the direction of axis 1:
   always get opposite words; for the PUMA "not flipped" is θ5's +√, as in Craig.
 
 Where no word holds the name says the root: "shoulder +√", "elbow −√". Every word printed is
-defined once in the method line (DEFINITIONS).
+defined once in the method line (a `Meaning` each; dhsym.printing.ik_words writes them).
 
 >>> import dhsym
->>> [branch.name for branch in dhsym.load("puma560").ik().branches][:2]
+>>> from dhsym.inverse import solve
+>>> [branch.name for branch in solve(dhsym.load("puma560").chain).branches][:2]
 ['shoulder left, elbow up, wrist not flipped', 'shoulder left, elbow up, wrist flipped']
->>> [branch.name for branch in dhsym.load("scara").ik().branches]
+>>> [branch.name for branch in solve(dhsym.load("scara").chain).branches]
 ['righty', 'lefty']
 """
 from __future__ import annotations
 
-import math
 import random
 from dataclasses import replace
 
-from ..core.robot import as_chain
+from ..core.sampling import random_pose
 from ..velocity.geometry import poses, wrist_centre
 from .branches import WORDS
 from .pointwise import BranchValues
+from .sentences import Meaning, Method
 from .sides import MEASURES, TOLERANCE, Arm
 from .solution import Branch
 
 POSES = 12  # the words must hold at every one of these poses
 CHECKED_AT_LEAST = 3  # poses at which every branch must be measured for a word to be given
 ROOT = ("+√", "−√")
-ROOT_DEFINITION = "+√/−√: the sign chosen in that joint's formula, where no word about the arm holds at every pose"
-DEFINITIONS = {
-    "right": "shoulder right/left: seen from above (axis {one} up), the arm's plane lies right/left of the line "
-             "from axis {one} to the {wrist}",
-    "front": "shoulder front/back: the {wrist} on the side of axis {one} where axis {two} is, or on the other",
-    "ahead": "shoulder front/back: the {wrist} on the side of axis {one} that frame {one}'s x axis points to, or "
-             "over the back",
-    "ahead_end": "shoulder front/back: the end point (the target's origin) on the side of axis {one} that frame "
-                 "{one}'s x axis points to, or over the back",
-    "up": "elbow up/down: the elbow above/below the line from the shoulder to the {elbow_wrist}",
-    "up_out": "elbow up/down: drawn in the arm's plane with axis {one} up and the {elbow_wrist} right of it, the "
-              "elbow left/right of the line from the shoulder to the {elbow_wrist} (above/below it where the "
-              "{elbow_wrist} is further out than the shoulder)",
-    "planar": "elbow up/down: seen from +z0 (x0 right, y0 up), the elbow left/right of the line from joint {one} to "
-              "the {planar_wrist} (Spong's +√ of the elbow is down)",
-    "lefty": "righty/lefty: seen from above (axis {one} up), the elbow right/left of the line from axis {one} to the "
-             "{planar_wrist}",
-    "slide": "slide forward/back: along the slide (axis {slide}), the {slide_wrist} on the side of its crossing with "
-             "axis {slide_from} that the axis points to, or behind",
-    "flip": "wrist not flipped/flipped: seen from the tip of axis {b}'s direction u{b}, axis {c} is turned from "
-            "axis {a} counter-clockwise/clockwise (u{a} × u{c} along +u{b}/−u{b})",
-}
 
 
 def checked_names(solution):
@@ -96,7 +75,7 @@ def checked_names(solution):
     chain = solution.chain
     joints = [_root_joint(solution, parts, k) for k in range(len(parts[0]))]
     chosen = [None] * len(joints)
-    arm = Arm(as_chain(chain), wrist_centre(as_chain(chain), sample=chain.sample), chain.sample, chain.frame_offset)
+    arm = Arm(chain, wrist_centre(chain, sample=solution.sample), solution.sample)
     if any(joints):
         measured = _measured(solution, arm, parts, joints)
         chosen = [_first_holding(measured, parts, k, role) if joints[k] else None
@@ -108,11 +87,12 @@ def checked_names(solution):
         texts = _names(parts, chosen, symbols)
     meanings = []
     for k, choice in enumerate(chosen):
-        text = DEFINITIONS[choice[0]].format(**arm.names(joints[k])) if choice else ROOT_DEFINITION
-        if text not in meanings:
-            meanings.append(text)
+        meaning = arm.meaning(choice[0], joints[k]) if choice else Meaning("root")
+        if meaning not in meanings:
+            meanings.append(meaning)
     branches = tuple(Branch(text, branch.assignments) for text, branch in zip(texts, solution.branches))
-    return replace(solution, branches=branches, method=f"{solution.method}; branch names: {'; '.join(meanings)}")
+    said = replace(solution.method, words=tuple(meanings)) if isinstance(solution.method, Method) else solution.method
+    return replace(solution, branches=branches, method=said)
 
 
 def _names(parts, chosen, symbols) -> list[str]:
@@ -176,7 +156,7 @@ def _measured(solution, arm, parts, joints) -> list:
     measured: list = [[] for _ in solution.branches]
     keys = [(key, k) for k, (role, _) in enumerate(parts[0]) if joints[k] for key in _candidates(role)]
     for _ in range(POSES):
-        values = _values(chain, solution.chain.sample, rng)
+        values = random_pose(chain, rng, solution.sample)
         rotation, origin = poses(chain, values)[chain.last_frame]
         target = [[*rotation[r], origin[r]] for r in range(3)]
         constants = {s: x for s, x in values.items() if s not in needed}  # the pose's own joints stay unknown
@@ -233,16 +213,3 @@ def _text(said) -> str:
             parts.append(f"{role} {word}")
     return ", ".join(parts)
 
-
-def _values(chain, sample: dict, rng: random.Random) -> dict:
-    """Joint angles uniform in (−π, π), slides in (0.5, 1.5), constants from the robot's sample (else
-    in (0.5, 1.5)), drawn in the order of the names: the same numbers in every run."""
-    values = {}
-    for symbol in sorted(chain.symbols, key=lambda s: s.name):
-        if symbol in sample:
-            values[symbol] = float(sample[symbol])
-        elif symbol in chain.joint_variables and chain.rows[chain.joint_variables.index(symbol)].joint == "R":
-            values[symbol] = rng.uniform(-math.pi, math.pi)
-        else:
-            values[symbol] = rng.uniform(0.5, 1.5)
-    return values

@@ -5,10 +5,10 @@ cheaper than compiling the numpy module of `dhsym ik --format python` (dhsym.inv
 whose work is in sharing sub-expressions across branches for many poses at once.
 
 >>> import dhsym, math
->>> from dhsym.inverse.solve import solve
->>> arm = dhsym.load("planar2r")
+>>> from dhsym.inverse.derive import derive
+>>> arm = dhsym.load("planar2r").chain
 >>> a_1, a_2 = sorted((s for s in arm.symbols if s not in arm.joint_variables), key=str)
->>> values = BranchValues(solve(arm), arm.joint_variables)
+>>> values = BranchValues(derive(arm), arm.joint_variables)
 >>> pose = [[1, 0, 0, 0.5], [0, 1, 0, 0.4], [0, 0, 1, 0], [0, 0, 0, 1]]   # θ = (0, π/2)
 >>> [[round(x, 6) for x in branch.values()] for branch in values(pose, {a_1: 0.5, a_2: 0.4})]
 [[1.570796, 0.0], [-1.570796, 1.349482]]

@@ -14,27 +14,27 @@ misses the pose, while the branch with that one sign flipped reaches it.
 
 >>> import dhsym, sympy
 >>> from dhsym.inverse.scan import Derivation
->>> from dhsym.inverse.solve import solve
->>> arm = dhsym.load("planar2r")
+>>> from dhsym.inverse.derive import derive
+>>> arm = dhsym.load("planar2r").chain
 >>> t1, t2 = arm.joint_variables
->>> solution = solve(arm)
+>>> solution = derive(arm)
 >>> (D, _), = solution.definitions
 >>> y, x = solution.branches[0].values()[t1].args
 >>> s1, s2 = sympy.symbols("sigma_1 sigma_2", real=True)
 >>> elbow = sympy.atan2(s1 * sympy.sqrt(1 - D**2), D)
 >>> both = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(y, x))], signs=[(s1, t2, "law")])
->>> wrong_root(arm, solution.definitions, both, [t1, t2]) is None   # elbow up and down both reach
+>>> wrong_root(arm, {}, solution.definitions, both, [t1, t2]) is None   # elbow up and down both reach
 True
 >>> turned = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(s2 * y, s2 * x))],
 ...                     signs=[(s1, t2, "law"), (s2, t1, "one")])
->>> wrong_root(arm, solution.definitions, turned, [t1, t2])   # θ1 + π points the arm away
+>>> wrong_root(arm, {}, solution.definitions, turned, [t1, t2])   # θ1 + π points the arm away
 theta_1
 """
 from __future__ import annotations
 
 from itertools import product
 
-from ..core.robot import as_robot
+from ..core.chain import Chain, plain
 from ..velocity.geometry import poses
 from .fresh import reserved, target_symbols
 from .witness import SEED, number_at, witness
@@ -44,12 +44,12 @@ POSE_JOINTS = 4  # from this many unknown joints on, a branch must give the whol
 MISS = 1e-6  # the pose's elements are of order one (lengths of the robot's sample, rotations)
 
 
-def wrong_root(robot, definitions, derivation, unknowns):
+def wrong_root(chain: Chain, sample, definitions, derivation, unknowns):
     """The joint whose two roots do not both reach the pose (the first such, in the derivation's
     order), or None. `definitions` and `derivation.assignments` are computed in order, each sign
-    σ = ±1; `unknowns` are the joint variables solved for (the rest are given)."""
-    robot = as_robot(robot)
-    chain = robot.chain
+    σ = ±1; `unknowns` are the joint variables solved for (the rest are given); the poses are
+    drawn with the constants of `sample` (the robot file's)."""
+    chain = plain(chain)
     signs = [sigma for sigma, _, _ in derivation.signs]
     blamed = [(k, joint) for k, (_, joint, rule) in enumerate(derivation.signs) if rule != "quartic"]
     if not blamed:
@@ -59,7 +59,7 @@ def wrong_root(robot, definitions, derivation, unknowns):
     targets = target_symbols(reserved(chain))
     used = [k for k, t in enumerate(targets) if t in held or len(unknowns) >= POSE_JOINTS]
     for seed in SEEDS:
-        numbers = witness(robot, seed)
+        numbers = witness(chain, sample, seed)
         target = [float(numbers[t]) for t in targets]
         given = {s: float(x) for s, x in numbers.items() if s not in unknowns}
         reached = {choice: _reaches(chain, steps, {**given, **dict(zip(signs, choice))}, target, used)

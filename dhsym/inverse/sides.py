@@ -17,6 +17,7 @@ import random
 from dataclasses import dataclass
 from typing import Callable
 
+from ..core.chain import Chain
 from ..velocity.geometry import (
     axis_line,
     cross,
@@ -28,6 +29,7 @@ from ..velocity.geometry import (
     poses,
     sample_values,
 )
+from .sentences import Meaning, Point
 
 TOLERANCE = 1e-7  # a measure smaller than this says nothing (the pose is between two words)
 
@@ -44,8 +46,8 @@ class Arm:
     frame (velocity.geometry.wrist_centre) or None; whether it is planar (every revolute axis
     parallel to axis 1) and a SCARA (planar, with a slide along those axes)."""
 
-    def __init__(self, chain, centre=None, sample=None, offset: int = 0):
-        self.chain, self.centre, self.offset = chain, centre, offset  # axes printed as offset + 1, …
+    def __init__(self, chain: Chain, centre=None, sample=None):
+        self.chain, self.centre = chain, centre
         self.sample = poses(chain, sample_values(chain, random.Random(3), sample or {}))
         first = axis_line(chain, 1, self.sample)[1]
         parallel = [_parallel(first, axis_line(chain, j, self.sample)[1]) for j in range(1, chain.n + 1)]
@@ -54,20 +56,20 @@ class Arm:
         self.scara = self.planar and any(p for p, kind in zip(parallel, kinds) if kind == "P")
 
     def wrist(self, frames):
-        """(the point the shoulder's words use, its name): the wrist centre; for an arm without one
-        whose axis 4 is parallel to axis 2 (the UR5's), where axes 5 and 6 (else 4 and 5) meet; else
-        the end point."""
+        """(the point the shoulder's words use, what it is: a Point): the wrist centre; for an arm
+        without one whose axis 4 is parallel to axis 2 (the UR5's), where axes 5 and 6 (else 4 and 5)
+        meet; else the end point."""
         chain = self.chain
         if self.centre is not None:
-            return frames[self.centre][1], "wrist centre"
+            return frames[self.centre][1], Point("wrist centre")
         if chain.n >= 5 and _parallel(axis_line(chain, 2, frames)[1], axis_line(chain, 4, frames)[1]):
             for j in range(min(chain.n, 6), 4, -1):
                 line, before = axis_line(chain, j, frames), axis_line(chain, j - 1, frames)
                 if not _parallel(line[1], before[1]):
                     point = nearest_point(line, before)
                     if distance_to_axis(point, before) < TOLERANCE:
-                        return point, f"wrist (where axes {j - 1 + self.offset} and {j + self.offset} meet)"
-        return frames[chain.last_frame][1], "end point (the target's origin)"
+                        return point, Point("meeting", (j - 1, j))
+        return frames[chain.last_frame][1], Point("target origin")
 
     def elbow_wrist(self, frames, joint):
         """(the point the elbow's words use, its name): the wrist centre; else a point on the next
@@ -75,7 +77,7 @@ class Arm:
         chain = self.chain
         if self.centre is None and joint < chain.n and \
                 _parallel(axis_line(chain, joint, frames)[1], axis_line(chain, joint + 1, frames)[1]):
-            return axis_line(chain, joint + 1, frames)[0], f"point of axis {joint + 1 + self.offset} in the arm's plane"
+            return axis_line(chain, joint + 1, frames)[0], Point("axis point", (joint + 1,))
         return self.wrist(frames)
 
     def planar_wrist(self, frames, joint):
@@ -83,8 +85,8 @@ class Arm:
         chain = self.chain
         for j in range(joint + 1, chain.n + 1):
             if chain.rows[j - 1].joint == "R":
-                return axis_line(chain, j, frames)[0], f"wrist point (axis {j + self.offset})"
-        return frames[chain.last_frame][1], "end point"
+                return axis_line(chain, j, frames)[0], Point("wrist point", (j,))
+        return frames[chain.last_frame][1], Point("end point")
 
     def slide_axes(self, frames, joint):
         """(the slide j at or after `joint`, the revolute axis r before it that it crosses) or None."""
@@ -102,21 +104,22 @@ class Arm:
         n = self.chain.n
         return n - 1 if joint >= n - 2 else 2 if joint <= 3 else joint
 
-    def names(self, joint: int) -> dict:
-        """What a definition says its points and axes are, for the choice held by `joint`."""
+    def meaning(self, key: str, joint: int) -> Meaning:
+        """What the word `key` means for the choice held by `joint`: its joints and points (1..n)."""
         slide = self.slide_axes(self.sample, joint) or (0, 0)
-        middle, offset = self.wrist_middle(joint), self.offset
-        return {"wrist": self.wrist(self.sample)[1], "elbow_wrist": self.elbow_wrist(self.sample, joint)[1],
-                "planar_wrist": self.planar_wrist(self.sample, joint)[1], "slide": slide[0] + offset,
-                "slide_from": slide[1] + offset, "slide_wrist": self.slide_point(self.sample)[1],
-                "a": middle - 1 + offset, "b": middle + offset, "c": middle + 1 + offset, "one": 1 + offset,
-                "two": 2 + offset}
+        middle = self.wrist_middle(joint)
+        joints = {"slide": slide[0], "slide_from": slide[1], "a": middle - 1, "b": middle, "c": middle + 1, "one": 1,
+                  "two": 2}
+        points = {"wrist": self.wrist(self.sample)[1], "elbow_wrist": self.elbow_wrist(self.sample, joint)[1],
+                  "planar_wrist": self.planar_wrist(self.sample, joint)[1],
+                  "slide_wrist": self.slide_point(self.sample)[1]}
+        return Meaning(key, tuple(joints.items()), tuple(points.items()))
 
     def slide_point(self, frames):
-        """(the point a slide's words use: the wrist centre, else the end point, its name)."""
+        """(the point a slide's words use: the wrist centre, else the end point; a Point)."""
         if self.centre is not None:
-            return frames[self.centre][1], "wrist centre"
-        return frames[self.chain.last_frame][1], "end point"
+            return frames[self.centre][1], Point("wrist centre")
+        return frames[self.chain.last_frame][1], Point("end point")
 
 
 def _right(arm, frames, joint):
@@ -153,7 +156,7 @@ def _ahead(end: bool):
         if across is None or _front(arm, frames, joint) is not None:
             return None
         point, name = arm.wrist(frames)
-        if end and name.startswith("end"):
+        if end and name.kind == "target origin":
             return None  # the same as the wrist's word
         base = axis_line(arm.chain, 1, frames)[0]
         x1 = _flat([row[0] for row in frames[1][0]], up)

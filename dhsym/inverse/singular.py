@@ -15,14 +15,17 @@ milliseconds where det A takes most of the time (the same factors `dhsym jacobia
 from __future__ import annotations
 
 import random
+from dataclasses import replace
 
 import sympy
 
 from ..core.chain import Chain
+from ..core.robot import Robot
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
-from .subproblems import LINED_UP_UNSAID, angle_symbol, factor_bases, lined_up_angle
+from .sentences import LinedUp
+from .subproblems import angle_symbol, factor_bases
 
 
 def tie_to_jacobian(chain: Chain, derivation, sample, numbers) -> None:
@@ -42,11 +45,11 @@ def tie_to_jacobian(chain: Chain, derivation, sample, numbers) -> None:
             wrist_centre(chain, sample=sample) is not None:
         factors = wrist_factors(chain, numbers, sample)
     else:
-        factors = determinant(chain, numbers=numbers, sample=sample).factors
+        factors = determinant(Robot(chain, sample=sample, numbers=numbers)).factors
     for index, bases in found:
         matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
         if matched:
-            derivation.degenerate[index] += f"; a singularity of J: the factor {matched[0]} of det J"
+            derivation.degenerate[index] = replace(derivation.degenerate[index], singular_factor=matched[0])
 
 
 def wrist_factors(chain: Chain, numbers, sample=None) -> list:
@@ -58,15 +61,15 @@ def wrist_factors(chain: Chain, numbers, sample=None) -> list:
     return joint_factors(value, chain)
 
 
-def say_lined_up(chain, derivation) -> None:
+def say_lined_up(chain: Chain, derivation) -> None:
     """Where sin θk = 0 lines up two axes, say which of the sum or the difference is determined."""
-    for expr, index in derivation.vanishing:
-        angle, sentence = lined_up_angle(expr), derivation.degenerate[index]
-        if angle is not None and LINED_UP_UNSAID in sentence:
-            derivation.degenerate[index] = sentence.replace(LINED_UP_UNSAID, lined_up(chain, angle))
+    for _, index in derivation.vanishing:
+        said = derivation.degenerate[index]
+        if isinstance(said.reason, LinedUp):
+            derivation.degenerate[index] = replace(said, reason=lined_up(chain, said.reason.angle))
 
 
-def lined_up(chain, angle) -> str:
+def lined_up(chain: Chain, angle) -> LinedUp:
     """Where sin θk = 0 lines up the axes of joints k − 1 and k + 1, which angle they still fix:
     the sum of the angles about the lined-up axes where they point the same way, the difference
     where they point opposite ways; θk = 0 and θk = π swap the two. Joints whose axes are parallel
@@ -74,15 +77,17 @@ def lined_up(chain, angle) -> str:
     (sin(θk + c) = 0) the axes line up where θk + c is 0 or π.
 
     >>> import dhsym
-    >>> lined_up(dhsym.load("puma560").chain, dhsym.load("puma560").joint_variables[4])
-    'at theta_5 = 0 only theta_4 + theta_6 is determined, at theta_5 = pi only theta_4 - theta_6'
+    >>> found = lined_up(dhsym.load("puma560").chain, dhsym.load("puma560").joint_variables[4])
+    >>> found.total(), found.total(at_pi=True)
+    (theta_4 + theta_6, theta_4 - theta_6)
     """
+    unsaid = LinedUp(angle)
     joint = angle_symbol(angle)
     if joint not in chain.joint_variables:
-        return LINED_UP_UNSAID
+        return unsaid
     k = list(chain.joint_variables).index(joint) + 1
     if not 1 < k < chain.n:
-        return LINED_UP_UNSAID
+        return unsaid
     values = sample_values(chain, random.Random(k))
     values[joint] = -float(angle - joint)  # the angle 0
     frame_poses = poses(chain, values)
@@ -102,11 +107,7 @@ def lined_up(chain, angle) -> str:
     after, away = parallel_run(k + 1, 1)
     alike = dot(towards, away)
     if not before or not after or abs(abs(alike) - 1) > TOLERANCE:
-        return LINED_UP_UNSAID
-
-    def total(run, sign=1):
-        return " ".join(f"{'+' if sign * s > 0 else '-'} {chain.joint_variables[j - 1]}" for j, s in sorted(run))
-
-    first = total(before).removeprefix("+ ")
-    same, opposite = total(after, 1 if alike > 0 else -1), total(after, -1 if alike > 0 else 1)
-    return f"at {angle} = 0 only {first} {same} is determined, at {angle} = pi only {first} {opposite}"
+        return unsaid
+    variables = chain.joint_variables
+    return LinedUp(angle, tuple((variables[j - 1], s) for j, s in sorted(before)),
+                   tuple((variables[j - 1], s if alike > 0 else -s) for j, s in sorted(after)))

@@ -20,10 +20,12 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from ..core.chain import Chain, plain
+from ..core.numbers import WrittenNumbers
 from .fresh import TARGET_NAMES, reserved, target_symbols
 from .frozen import KeepsForm
 
-__all__ = ["TARGET_NAMES", "Branch", "Solution", "Step", "target_matrix", "target_symbols"]
+__all__ = ["TARGET_NAMES", "Branch", "DerivationStep", "Solution", "target_matrix", "target_symbols"]
 
 
 def target_matrix(taken=()) -> sympy.Matrix:
@@ -32,17 +34,17 @@ def target_matrix(taken=()) -> sympy.Matrix:
 
 
 @dataclass(frozen=True)
-class Step(KeepsForm):
+class DerivationStep(KeepsForm):
     """One equation of the derivation, as a student writes it: `lhs = rhs`, the sub-problem it is
-    an instance of (e.g. "a cos θ + b sin θ = c", "law of cosines", "atan2 of a pair",
-    "prismatic joint from a distance", "sum of parallel-axis angles", "Euler angles of the wrist"),
-    the unknowns it solves for, and a short note in words."""
+    an instance of (a `Subproblem` of dhsym.inverse.sentences, by name: "law of cosines", "atan2
+    of a pair", ...), the unknowns it solves for, and a note: a phrase of words and the chain's
+    joints and frames ("element (1, 2) of ", Frame(0), "T", Frame(6)), or plain words."""
 
     lhs: sympy.Expr
     rhs: sympy.Expr
-    subproblem: str
+    subproblem: object
     solves: tuple[sympy.Symbol, ...] = ()
-    note: str = ""
+    note: tuple | str = ()
 
 
 @dataclass(frozen=True)
@@ -62,22 +64,29 @@ class Branch(KeepsForm):
 class Solution(KeepsForm):
     """A closed-form inverse-kinematics solution of a chain.
 
-    `method` says in words how it was found ("kinematic decoupling: axes 4, 5, 6 meet at the wrist
-    centre", "planar arm", ...); `free` are joint variables made parameters (`--free`);
-    `conditions` say when a branch exists (the argument of a square root ≥ 0: the workspace);
-    `degenerate` names the poses where a family of solutions replaces the branches
-    ("s5 = 0: only θ4 + θ6 is determined"); `steps` is the derivation in order.
+    `method` says how it was found (a record of dhsym.inverse.sentences: Decoupled, EulerWrist,
+    BySubproblems); `free` are joint variables made parameters (`--free`); `conditions` say when
+    a branch exists (Exists: the argument of a square root ≥ 0, the workspace); `degenerate`
+    names the poses where a family of solutions replaces the branches (Undetermined: s5 = 0, only
+    θ4 + θ6 is determined); `steps` is the derivation in order. A solution written by hand may
+    give any of these as plain words. `sample` gives numbers for the chain's constants (its robot
+    file's: the defaults of the generated module) and `numbers` how its decimals are written.
     """
 
-    chain: object  # the dhsym Chain it solves
-    method: str
+    chain: Chain  # the plain chain it solves, frames 0..n
+    method: object
     joint_variables: tuple[sympy.Symbol, ...]
     definitions: tuple[tuple[sympy.Symbol, sympy.Expr], ...]
     branches: tuple[Branch, ...]
     free: tuple[sympy.Symbol, ...] = ()
-    conditions: tuple[str, ...] = ()
-    degenerate: tuple[str, ...] = ()
-    steps: tuple[Step, ...] = field(default=())
+    conditions: tuple = ()
+    degenerate: tuple = ()
+    steps: tuple[DerivationStep, ...] = field(default=())
+    sample: dict = field(default_factory=dict, compare=False)
+    numbers: WrittenNumbers = WrittenNumbers()
+
+    def __post_init__(self):
+        plain(self.chain)
 
     @property
     def target_symbols(self) -> tuple[sympy.Symbol, ...]:

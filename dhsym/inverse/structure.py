@@ -6,12 +6,12 @@ Pieper's condition decides a six-joint arm: three consecutive axes that meet in 
 that are parallel. An arm that has neither is refused here, at once.
 
 >>> import dhsym
->>> analyse(dhsym.load("puma560")).wrist
+>>> analyse(dhsym.load("puma560").chain).wrist
 (4, 5, 6)
->>> analyse(dhsym.load("ur5")).parallel
+>>> analyse(dhsym.load("ur5").chain).parallel
 (2, 3, 4)
 >>> try:
-...     analyse(dhsym.load("iiwa7"))
+...     analyse(dhsym.load("iiwa7").chain)
 ... except dhsym.UserError as error:
 ...     print(error)
 the arm has 7 joints and a closed form needs at most 6: it is redundant; make 1 of its joint variables a \
@@ -22,9 +22,10 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass
 
-from ..core.robot import as_chain, as_robot
+from ..core.chain import Chain, plain
+from ..core.sampling import random_pose
 from ..errors import NoClosedForm, UserError
-from ..velocity.geometry import axis_line, cross, distance_to_axis, nearest_point, norm, poses, sample_values
+from ..velocity.geometry import axis_line, cross, distance_to_axis, nearest_point, norm, poses
 
 TOLERANCE = 1e-7
 TRIALS = 3
@@ -44,9 +45,10 @@ class Structure:
     first_wrist: tuple[int, int, int] | None = None  # the first three axes meet: a wrist at the start
 
 
-def analyse(chain, free=()) -> Structure:
-    """The structure of `chain` (a Robot or a Chain) with the joint variables in `free` made parameters."""
-    sample, chain = as_robot(chain).sample, as_chain(chain)
+def analyse(chain: Chain, free=(), sample=None) -> Structure:
+    """The structure of `chain` (frames 0..n) with the joint variables in `free` made parameters;
+    `sample`: numbers for its constants (its robot file's), the rest drawn."""
+    chain = plain(chain)
     unknowns = tuple(j for j, v in enumerate(chain.joint_variables, start=1) if v not in set(free))
     if len(unknowns) > 6:  # which joints will do is checked by dhsym.inverse.redundant, which derives with them
         extra = len(unknowns) - 6
@@ -57,7 +59,7 @@ def analyse(chain, free=()) -> Structure:
         raise UserError("every joint variable is --free: nothing is left to solve for")
     rng = random.Random(11)
     lines = [{j: axis_line(chain, j, pose) for j in unknowns}
-             for pose in (poses(chain, sample_values(chain, rng, sample)) for _ in range(TRIALS))]
+             for pose in (poses(chain, random_pose(chain, rng, sample)) for _ in range(TRIALS))]
     revolute = {j for j in unknowns if chain.rows[j - 1].joint == "R"}
     triples = [unknowns[k:k + 3] for k in range(len(unknowns) - 2)]
     meeting = [t for t in triples if set(t) <= revolute and all(_meet(config, t) for config in lines)]

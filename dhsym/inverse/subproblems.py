@@ -24,6 +24,7 @@ import sympy
 
 from ..core.size import length
 from . import algebra
+from .sentences import LinedUp, Undetermined
 
 
 def expand_around(expr: sympy.Expr, variable: sympy.Symbol) -> sympy.Expr | None:
@@ -257,9 +258,6 @@ def prismatic(coefficients, sigma) -> sympy.Expr:
     return (-b + sigma * sympy.sqrt(b ** 2 - 4 * a * c)) / (2 * a)
 
 
-LINED_UP_UNSAID = "only the sum (or difference) of the angles about them is determined"  # singular.py says which
-
-
 def factor_bases(expr) -> set:
     """The factors of a product that are not numbers, a power by its base: −2 sin(θ5)² → {sin(θ5)}."""
     return {f.base if f.is_Pow else f for f in sympy.Mul.make_args(expr) if not f.is_number}
@@ -295,26 +293,24 @@ def angle_symbol(angle):
     return symbol if (angle - symbol).is_number else None
 
 
-def degenerate_pair(det, shown, forms) -> str:
+def degenerate_pair(det, shown, forms) -> Undetermined:
     """Where a pair's determinant vanishes. When that is sin θk = 0 of a joint already solved
-    (the wrist's s5), the axes on either side of joint k line up: a one-parameter family. A pair
-    [[α, −β], [β, α]] has α² + β² for its determinant, zero where both are: said so.
+    (the wrist's s5), the axes on either side of joint k line up: a one-parameter family (which
+    sum or difference is left, dhsym.inverse.singular measures). A pair [[α, −β], [β, α]] has
+    α² + β² for its determinant, zero where both are: said so.
 
     >>> x, y, t = sympy.symbols("x y t", real=True)
-    >>> degenerate_pair(x**2 + y**2, t, ((x, -y, 1), (y, x, 2)))
-    'x = 0 and y = 0: t is not determined by these equations'
+    >>> degenerate_pair(x**2 + y**2, t, ((x, -y, 1), (y, x, 2))).condition
+    (x, y)
     """
     angle = lined_up_angle(det)
     if angle is not None:
-        return (f"{sympy.sin(angle)} = 0: {shown} is not determined on its own: the axes on either side of "
-                f"{angle_symbol(angle)} line up, and {LINED_UP_UNSAID}, a one-parameter family (a numeric "
-                "evaluation gives one member)")
+        return Undetermined((sympy.sin(angle),), shown, LinedUp(angle))
     a1, b1, _ = forms[0]
     # α = 0 and β = 0 where that is shorter than α² + β² expanded (pz² + (px c1 + py s1)²)
     if rotation_sign(*forms) is not None and length(a1) + length(b1) < length(det):
-        first, second = sorted((str(unsigned(a1)), str(unsigned(b1))))
-        return f"{first} = 0 and {second} = 0: {shown} is not determined by these equations"
-    return f"{unsigned(det)} = 0: {shown} is not determined by these equations"
+        return Undetermined(tuple(sorted((unsigned(a1), unsigned(b1)), key=str)), shown)
+    return Undetermined((unsigned(det),), shown)
 
 
 def unsigned(expr):

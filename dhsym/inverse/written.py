@@ -26,12 +26,9 @@ from dataclasses import replace
 
 import sympy
 
-from ..core.chain import Chain, DHRow
+from ..core.chain import Chain, DHRow, plain
 from ..core.numbers import decimal_text
-from ..core.robot import as_robot
 from ..core.transforms import Step
-from .solution import Branch
-from .solution import Step as Equation
 
 
 class Written(sympy.Symbol):
@@ -53,11 +50,12 @@ def exact(expr):
     return expr.xreplace(found) if found else expr
 
 
-def with_written_symbols(robot, numbers) -> tuple:
-    """(a copy of `robot` whose written decimals are `Written` symbols, {symbol: value}); the robot
-    itself and {} when it has none. Angles (θ offsets, α, base and tool rotations) keep their numbers:
-    the solver reads the axes' directions from them."""
-    found: dict = {}
+def with_written_symbols(chain: Chain, sample, numbers) -> tuple:
+    """(a copy of `chain` whose written decimals (as `numbers` says the file wrote them) are
+    `Written` symbols, the `sample` with their values, {symbol: value}); the chain and sample
+    themselves and {} when it has none. Angles (θ offsets, α, base and tool rotations) keep their
+    numbers: the solver reads the axes' directions from them."""
+    chain, sample, found = plain(chain), dict(sample or {}), {}
 
     def put(value):
         value = sympy.sympify(value)
@@ -71,15 +69,12 @@ def with_written_symbols(robot, numbers) -> tuple:
             terms.append(term)
         return sympy.Add(*terms)
 
-    plain = robot.chain
-    rows = [DHRow(row.joint, row.theta, put(row.d), put(row.a), row.alpha, row.variable) for row in plain.rows]
+    rows = [DHRow(row.joint, row.theta, put(row.d), put(row.a), row.alpha, row.variable) for row in chain.rows]
     moved = [[step if step.is_rotation else Step(step.kind, put(step.value)) for step in steps]
-             for steps in (plain.base, plain.tool)]
+             for steps in (chain.base, chain.tool)]
     if not found:
-        return robot, {}
-    copy = robot.replace(chain=Chain(rows, plain.convention, moved[0], moved[1], plain.simplifier),
-                         sample={**robot.sample, **found})
-    return copy, found
+        return chain, sample, {}
+    return Chain(rows, chain.convention, moved[0], moved[1], chain.simplifier), {**sample, **found}, found
 
 
 def fold(expr, numbers):
@@ -152,17 +147,18 @@ def _written(expr, numbers):
     return (1 if value > 0 else -1) * Written.of(abs(value))
 
 
-def as_written(solution, chain, numbers):
-    """A solution of the chain `with_written_symbols` made, given back to `chain` with its
-    numbers folded (see `fold`); the chain's numbers say so, and its printers write the rationals
-    left (the algebra's own: Ferrari's s/2, cos 60° = 1/2) as fractions."""
+def as_written(solution, chain: Chain, sample, numbers):
+    """A solution of the chain `with_written_symbols` made, given back to `chain` and its `sample`
+    with its numbers folded (see `fold`); its numbers say so, and the printers write the rationals
+    left (the algebra's own: Ferrari's s/2, cos 60° = 1/2) as fractions. (What the sentences say
+    stays as it was: the printers read their numbers exactly.)"""
     pairs = lambda items: tuple((name, fold(value, numbers)) for name, value in items)  # noqa: E731
-    steps = tuple(Equation(_fold_any(step.lhs, numbers), _fold_any(step.rhs, numbers), step.subproblem, step.solves,
-                           step.note) for step in solution.steps)
-    chain = as_robot(chain)
-    chain = chain.replace(numbers=replace(chain.numbers, folded=True))
-    return replace(solution, chain=chain, definitions=pairs(solution.definitions), steps=steps,
-                   branches=tuple(Branch(branch.name, pairs(branch.assignments)) for branch in solution.branches))
+    steps = tuple(replace(step, lhs=_fold_any(step.lhs, numbers), rhs=_fold_any(step.rhs, numbers))
+                  for step in solution.steps)
+    return replace(solution, chain=plain(chain), sample=dict(sample or {}), numbers=replace(numbers, folded=True),
+                   definitions=pairs(solution.definitions), steps=steps,
+                   branches=tuple(replace(branch, assignments=pairs(branch.assignments))
+                                  for branch in solution.branches))
 
 
 def _fold_any(expr, numbers):

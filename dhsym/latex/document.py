@@ -52,7 +52,7 @@ def document(robot: Robot, kind: str = "slides", steps: bool = False, start: Fra
     if jacobian:
         content += velocity_sections(robot, page, steps=steps)
     if ik is not None:
-        content += ik_sections(ik(), page)
+        content += ik_sections(ik(), robot, page)
     if dynamics:
         from .dynamics import document_sections  # the dynamics layer only for documents that show it
 

@@ -10,10 +10,10 @@ when wider than the page; nothing is shrunk.
 >>> from dhsym.inverse.solution import Branch, Solution
 >>> from dhsym import load
 >>> arm = load("planar2r")
->>> t1, t2 = arm.joint_variables
+>>> t1, t2 = arm.chain.joint_variables
 >>> px, py = sympy.symbols("px py", real=True)
->>> both = Solution(arm, "planar arm", (t1, t2), (), (Branch("one", ((t1, sympy.atan2(py, px)), (t2, 0))),))
->>> [section.title for section in ik_sections(both, PAGES["article"])]
+>>> both = Solution(arm.chain, "planar arm", (t1, t2), (), (Branch("one", ((t1, sympy.atan2(py, px)), (t2, 0))),))
+>>> [section.title for section in ik_sections(both, arm, PAGES["article"])]
 ['Inverse kinematics: the problem', 'Branch 1: one']
 """
 from __future__ import annotations
@@ -23,16 +23,14 @@ import re
 import sympy
 
 from ..printing.ik import (
+    IKLatexPrinter,
     latex_name,
-    latex_printer,
-    named_angles,
+    solution_printer,
     target_name,
     target_names,
-    target_points,
     target_title,
     variable_list,
 )
-from ..printing.ik_sentences import relation, sentence_parts, solution_names
 from .display import Latex
 from .layout import (
     ALIGNED_EXTRA,
@@ -61,19 +59,20 @@ PART = "Inverse kinematics"
 _MATH_CHARACTERS = {"²": "$^{2}$", "³": "$^{3}$", "√": "$\\surd$"}  # tex_text has no text form for these
 
 
-def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Section]:
+def ik_sections(solution, robot, page: Page, headings: bool | None = None) -> list[Section]:
     """The problem and the method; the derivation step by step (if the solver kept its steps);
     the intermediate quantities; one section per branch; existence and degenerate poses; the legend.
-    `headings` (default: where pages have no frame titles) starts each section with its title."""
+    `robot` numbers the frames and joints; `headings` (default: where pages have no frame titles)
+    starts each section with its title."""
     chain = solution.chain
     targets = target_names(solution)
-    printer = latex_printer(chain, named_angles(solution), target_points(solution), targets)
+    printer = solution_printer(solution, robot.numbering, DocumentPrinter)
     names = [[target_name(targets[4 * r + c], "latex") for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
     unknowns = [v for v in solution.joint_variables if v not in solution.free]
     problem = [paragraph(f"Given the pose of the last frame, find ${variable_list(unknowns, printer)}$. "
                          f"The target is written with the names of its elements:", page),
-               display(f"{target_title(chain, 'latex')} =\n{bmatrix(names)}", matrix_height(names)),
-               paragraph(f"Method: {latex_sentence(solution.method, solution_names(solution), printer)}.", page)]
+               display(f"{target_title(chain, robot.numbering, 'latex')} =\n{bmatrix(names)}", matrix_height(names)),
+               paragraph(f"Method: {printer.sentence(solution.method)}.", page)]
     if solution.free:
         problem.append(paragraph(f"Free joint variables, kept as parameters: "
                                  f"${variable_list(solution.free, printer)}$.", page))
@@ -89,11 +88,8 @@ def ik_sections(solution, page: Page, headings: bool | None = None) -> list[Sect
     for number, branch in enumerate(solution.branches, 1):
         rows = [value_rows(latex_name(name), value, printer, page) for name, value in branch.assignments]
         out.append(Section(PART, f"Branch {number}: {branch_title(branch.name)}", [Rows([rows])]))
-    names = solution_names(solution)
-    remarks = [paragraph(f"Condition: {latex_sentence(text, names, printer)}.", page)
-               for text in solution.conditions]
-    remarks += [paragraph(f"Degenerate: {latex_sentence(text, names, printer)}.", page)
-                for text in solution.degenerate]
+    remarks = [paragraph(f"Condition: {printer.sentence(said)}.", page) for said in solution.conditions]
+    remarks += [paragraph(f"Degenerate: {printer.sentence(said)}.", page) for said in solution.degenerate]
     if remarks:
         out.append(Section(PART, "Existence and degenerate poses", remarks))
     out[-1].items.extend(legend_items(printer, page))
@@ -110,7 +106,7 @@ def value_rows(label: str, value, printer, page: Page) -> list[tuple[str, float]
     >>> import dhsym
     >>> from dhsym.printing.ik import latex_printer
     >>> value = sympy.atan2(sum(sympy.symbols("x_1:12")), sum(sympy.symbols("y_1:12")))
-    >>> rows = value_rows("\\theta_{1}", value, latex_printer(dhsym.load("planar2r")), PAGES["article"])
+    >>> rows = value_rows("\\theta_{1}", value, latex_printer(dhsym.load("planar2r").chain), PAGES["article"])
     >>> [row[-12:] for row, _ in rows]
     ['{8} + x_{9},', '{8} + y_{9})']
     """
@@ -148,8 +144,8 @@ def _step_items(steps, printer, page: Page) -> list:
     items = []
     for number, step in enumerate(steps, 1):
         solves = f", for ${variable_list(step.solves, printer)}$" if step.solves else ""
-        note = f": {prose(step.note)}" if step.note else ""
-        text = paragraph(f"Step {number} ({prose(step.subproblem)}){solves}{note}.", page)
+        note = f": {printer.sentence(step.note)}" if step.note else ""
+        text = paragraph(f"Step {number} ({printer.sentence(step.subproblem)}){solves}{note}.", page)
         text.keep_with_next = True
         items += [text, Rows([[_equation_rows(step.lhs, step.rhs, printer, page)]])]
     return items
@@ -168,20 +164,11 @@ def _equation_rows(lhs, rhs, printer, page: Page) -> list[tuple[str, float]]:
     return [(row, row_height([row], array=False)) for row in rows]
 
 
-def latex_sentence(text: str, names, printer) -> str:
-    """A solver's sentence as LaTeX text, its relations and the names it mentions as math."""
-    out = []
-    with printer.numbers_read_back():
-        for part in sentence_parts(text, names):
-            if part[0] == "relation":
-                out.append(f"${relation(part, printer, 'latex')}$")
-                continue
-            position = 0
-            for start, end, expression in part[2]:
-                out += [prose(part[1][position:start]), f"${printer.doprint(expression)}$"]
-                position = end
-            out.append(prose(part[1][position:]))
-    return "".join(out).replace("$ = $", " = ")  # r_{32} = -1 as one formula
+class DocumentPrinter(IKLatexPrinter):
+    """The LaTeX printer of the documents: a sentence's words set as LaTeX text (`prose`)."""
+
+    def _words(self, text: str) -> str:
+        return prose(text)
 
 
 def prose(text: str) -> str:
@@ -200,10 +187,10 @@ def prose(text: str) -> str:
     return "".join(piece if position % 2 else tex_prose(piece) for position, piece in enumerate(pieces))
 
 
-def snippet(solution) -> str:
+def snippet(solution, robot) -> str:
     """The math of `ik_sections` for a document with amsmath (`dhsym ik --format latex`)."""
-    out = [f"% dhsym ik: {' '.join(solution.chain.name.split())}; needs \\usepackage{{amsmath}}"]
-    for section in ik_sections(solution, PAGES["snippet"], headings=False):  # the titles are comments
+    out = [f"% dhsym ik: {' '.join(robot.name.split())}; needs \\usepackage{{amsmath}}"]
+    for section in ik_sections(solution, robot, PAGES["snippet"], headings=False):  # the titles are comments
         out.append(f"% {' '.join(section.title.split())}")
         for item in section.items:
             block = item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")
@@ -211,12 +198,12 @@ def snippet(solution) -> str:
     return "\n".join(out) + "\n"
 
 
-def notebook_display(solution):
+def notebook_display(solution, robot):
     """The sections as one display for Jupyter, laid out for the notebook's line: text is set
     as \\text{…} lines with its math between them, which MathJax renders without extensions."""
     page = PAGES["notebook"]
     items = []
-    for section in ik_sections(solution, page, headings=False):
+    for section in ik_sections(solution, robot, page, headings=False):
         for item in [paragraph(section.title, page)] + section.items:
             items += _text_rows(item.latex, page) if isinstance(item, Block) and not item.is_display else [item]
     return Latex(stacked(items, page))

@@ -3,8 +3,8 @@ configurations, the planar arm's elbow up and elbow down.
 
 The pose is the one the joint values `values` give (default: every joint 0), with any of its
 elements replaced by `target` ({"px": 0.4, ...}, the names `dhsym ik` uses); each branch is
-evaluated by the generated numpy code of `chain.ik()` and drawn with `draw`; a branch that does
-not exist at the pose gets a panel that says so.
+evaluated by the generated numpy code of the solution (dhsym.inverse.solve, or the one given) and
+drawn with `draw`; a branch that does not exist at the pose gets a panel that says so.
 
     from dhsym.plot.branches import draw_branches
     figure = draw_branches(dhsym.load("puma560"), values={"theta_2": "-30deg", "theta_3": "45deg"})
@@ -17,6 +17,7 @@ import textwrap
 import numpy as np
 
 from ..errors import UserError
+from ..inverse import evaluate, solve
 from ..inverse.solution import TARGET_NAMES
 from .draw import draw
 from .poses import as_number, frame_poses, is_planar
@@ -44,30 +45,34 @@ def target_pose(chain, values=None, target=None) -> np.ndarray:
     return pose
 
 
-def branch_values(chain, pose, constants=None, free=(), values=None) -> tuple[list[str], np.ndarray]:
-    """(branch names, joint values (B, n) of every joint of the chain, in joint order) of
-    `chain.ik(free)` at `pose`; NaN where a branch does not exist. Free joints keep their values
-    from `values` (default 0), constants come from `constants` or the sample."""
-    result = chain.ik(free)
+def branch_values(robot, pose, constants=None, free=(), values=None, solution=None) -> tuple[list[str], np.ndarray]:
+    """(branch names, joint values (B, n) of every joint of the robot, in joint order) of its
+    inverse kinematics (`solution`, else solved with `free` kept as parameters) at `pose`; NaN where
+    a branch does not exist. Free joints keep their values from `values` (default 0), constants come
+    from `constants` or the sample."""
+    chain = robot.chain
+    if solution is None:
+        solution = solve(chain, free, sample=robot.sample, numbers=robot.numbers, name=robot.name, path=robot.path)
     given = {str(k): as_number(v, str(k)) for k, v in (constants or {}).items()}
-    for variable in result.solution.free:
+    for variable in solution.free:
         given[variable.name] = as_number((values or {}).get(variable.name, 0), variable.name)
-    solved = result.evaluate(pose, **given)  # by the robot's own names (the module renames len, float …)
-    joints = np.empty((len(result.branches), chain.n))
+    solved = evaluate(solution, pose, given, robot.name)  # by the robot's own names (the module renames len, float …)
+    joints = np.empty((len(solution.branches), chain.n))
     for k, variable in enumerate(chain.joint_variables):
-        if variable in result.joint_variables:
-            joints[:, k] = solved[:, list(result.joint_variables).index(variable)]
+        if variable in solution.joint_variables:
+            joints[:, k] = solved[:, list(solution.joint_variables).index(variable)]
         else:
             joints[:, k] = given[variable.name]
-    return [branch.name for branch in result.branches], joints
+    return [branch.name for branch in solution.branches], joints
 
 
-def draw_branches(chain, values=None, target=None, constants=None, free=(), figure=None, show_frames=False):
-    """A figure with one picture per branch of the inverse kinematics at the pose of `values`
-    (with `target`'s elements replaced), side by side; returns the Figure. The pose's origin is
-    marked on every picture."""
-    pose = target_pose(chain, {**(constants or {}), **(values or {})}, target)
-    names, joints = branch_values(chain, pose, constants, free, values)
+def draw_branches(robot, values=None, target=None, constants=None, free=(), figure=None, show_frames=False,
+                  solution=None):
+    """A figure with one picture per branch of the inverse kinematics (`solution`, else solved with
+    `free` kept as parameters) at the pose of `values` (with `target`'s elements replaced), side by
+    side; returns the Figure. The pose's origin is marked on every picture."""
+    pose = target_pose(robot, {**(constants or {}), **(values or {})}, target)
+    names, joints = branch_values(robot, pose, constants, free, values, solution)
     if figure is None:
         import matplotlib.pyplot as plt  # only here: library users in notebooks want pyplot's figures
 
@@ -75,9 +80,9 @@ def draw_branches(chain, values=None, target=None, constants=None, free=(), figu
     columns = min(len(names), MAX_COLUMNS)
     rows = math.ceil(len(names) / columns)
     figure.set_size_inches(PANEL_INCHES[0] * columns, PANEL_INCHES[1] * rows)
-    variables = [v.name for v in chain.joint_variables]
+    variables = [v.name for v in robot.chain.joint_variables]
     existing = [k for k in range(len(names)) if np.isfinite(joints[k]).all()]
-    planar = is_planar(chain, {**(constants or {}), **dict(zip(variables, joints[existing[0]]))}) if existing \
+    planar = is_planar(robot, {**(constants or {}), **dict(zip(variables, joints[existing[0]]))}) if existing \
         else False
     drawn = []
     for k, name in enumerate(names):
@@ -87,19 +92,23 @@ def draw_branches(chain, values=None, target=None, constants=None, free=(), figu
             ax.set_title(title + "\n(does not reach this pose)", fontsize=9)
             ax.set_axis_off()
             continue
-        shown = dict(zip(variables, joints[k]))
-        draw(chain, {**(constants or {}), **shown}, ax=ax, show_frames=show_frames,
-             title=title + "\n" + _joint_values(chain, joints[k]))
-        ax.title.set_fontsize(9)
-        if ax.get_legend():  # the joint symbols need no key on every picture, and it would cover the next
-            ax.get_legend().remove()
-        point = pose[:2, 3] if planar else pose[:3, 3]
-        ax.scatter(*point, marker="*", s=140, color=TARGET_COLOUR, zorder=5)
+        shown = {**(constants or {}), **dict(zip(variables, joints[k]))}
+        _picture(ax, robot, shown, title + "\n" + _joint_values(robot.chain, joints[k]), show_frames)
+        ax.scatter(*(pose[:2, 3] if planar else pose[:3, 3]), marker="*", s=140, color=TARGET_COLOUR, zorder=5)
         drawn.append(ax)
     _same_limits(drawn, planar)
     figure.subplots_adjust(hspace=0.45, wspace=0.3)
-    figure.suptitle(f"{chain.name}: {len(existing)} of {len(names)} branches reach the pose", fontsize=11)
+    figure.suptitle(f"{robot.name}: {len(existing)} of {len(names)} branches reach the pose", fontsize=11)
     return figure
+
+
+def _picture(ax, robot, values: dict, title: str, show_frames: bool) -> None:
+    """One branch's picture: the arm at `values`, no legend (the joint symbols need no key on
+    every picture, and it would cover the next)."""
+    draw(robot, values, ax=ax, show_frames=show_frames, title=title)
+    ax.title.set_fontsize(9)
+    if ax.get_legend():
+        ax.get_legend().remove()
 
 
 def _same_limits(axes, planar: bool) -> None:

@@ -8,12 +8,12 @@ a quotient prints with its denominator bracketed, (px² + py² − a1² − a2²
 starts with the target's terms, positive ones first.
 
 >>> import sympy, dhsym
->>> arm = dhsym.load("planar2r")
+>>> arm = dhsym.load("planar2r").chain
 >>> px, py, a1, a2 = sympy.symbols("px py a_1 a_2", real=True)
->>> printer = IKTextPrinter(chain_settings(arm))
+>>> printer = text_printer(arm)
 >>> printer.doprint((px**2 + py**2 - a1**2 - a2**2) / (2 * a1 * a2))
 '(px² + py² − a1² − a2²)/(2 a1 a2)'
->>> IKLatexPrinter(chain_settings(arm)).doprint(sympy.atan2(py, px) - sympy.acos(px / a1))
+>>> latex_printer(arm).doprint(sympy.atan2(py, px) - sympy.acos(px / a1))
 '\\\\mathrm{atan2}(p_{y}, p_{x}) - \\\\arccos(\\\\frac{p_{x}}{a_{1}})'
 """
 from __future__ import annotations
@@ -23,16 +23,17 @@ import re
 import sympy
 from sympy.printing.precedence import PRECEDENCE, precedence
 
-from ..core.robot import as_robot
+from ..core.chain import Chain
+from ..core.numbering import PLAIN, Numbering
+from ..core.numbers import WrittenNumbers
 from ..inverse.fresh import plain
 from ..inverse.solution import TARGET_NAMES
 from ..inverse.written import Written
 from . import render
-from .ik_lines import assignments_text
-from .ik_sentences import solution_names, text_sentence, wrap_sentence
-from .names import GREEK_NAMES, display_name
-from .notation import Abbreviation
-from .printers import ExactPrinter, LatexPrinter, TextPrinter, chain_settings
+from .ik_sentences import LatexSentences, TextSentences
+from .names import display_name
+from .notation import Abbreviation, written_offsets
+from .printers import ExactPrinter, LatexPrinter, TextPrinter
 
 _TARGET = frozenset(TARGET_NAMES)
 
@@ -190,10 +191,11 @@ def _has_target(term, targets) -> bool:
     return any(symbol.name in targets for symbol in term.free_symbols)
 
 
-class IKTextPrinter(_InverseNotation, TextPrinter):
-    """Text: atan2(py, px), acos(D), √(1 − D²)."""
+class IKTextPrinter(_InverseNotation, TextSentences, TextPrinter):
+    """Text: atan2(py, px), acos(D), √(1 − D²); the solver's sentences (dhsym.printing.ik_sentences)."""
 
-    _default_settings = {**TextPrinter._default_settings, "angles": (), "points": (), "targets": TARGET_NAMES}
+    _default_settings = {**TextPrinter._default_settings, "angles": (), "points": (), "targets": TARGET_NAMES,
+                         "frame_offset": 0}
     _times = " · "
 
     def _print_atan2(self, expr):
@@ -210,10 +212,12 @@ class IKTextPrinter(_InverseNotation, TextPrinter):
         return super()._fraction(top, f"({bottom})" if spaced else bottom, grouped)
 
 
-class IKLatexPrinter(_InverseNotation, LatexPrinter):
-    r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x}."""
+class IKLatexPrinter(_InverseNotation, LatexSentences, LatexPrinter):
+    r"""LaTeX: \mathrm{atan2}(y, x) (MathJax spaces \operatorname{atan2} as "atan 2"), \arccos, \arcsin, p_{x};
+    the solver's sentences (dhsym.printing.ik_sentences)."""
 
-    _default_settings = {**LatexPrinter._default_settings, "angles": (), "points": (), "targets": TARGET_NAMES}
+    _default_settings = {**LatexPrinter._default_settings, "angles": (), "points": (), "targets": TARGET_NAMES,
+                         "frame_offset": 0}
     _times = " \\cdot "
 
     def _print_atan2(self, expr):
@@ -262,16 +266,38 @@ def _one_group(text: str) -> bool:
     return depth == 0
 
 
-def text_printer(chain, ascii: bool = False, angles=(), points=(), targets=TARGET_NAMES) -> IKTextPrinter:
+def ik_settings(chain: Chain, numbers: WrittenNumbers | None = None, numbering: Numbering = PLAIN) -> dict:
+    """The settings of the IK printers for a chain's solution: its joint variables and offsets, how
+    its numbers are written, and how its frames and joints are numbered (a robot file's first_frame)."""
+    return {"joint_variables": chain.joint_variables, "offsets": written_offsets(chain.rows),
+            "numbers": numbers or WrittenNumbers(), "first_joint": numbering.first_joint,
+            "frame_offset": numbering.offset}
+
+
+def text_printer(chain: Chain, numbers=None, numbering: Numbering = PLAIN, ascii: bool = False, angles=(), points=(),
+                 targets=TARGET_NAMES) -> IKTextPrinter:
     """The text printer of a chain's solution; `angles` (see `named_angles`) print as cφ1, sφ1,
     and `points` (see `target_points`) come first in a sum, as the target's elements (`targets`,
     see `target_names`) do."""
-    return IKTextPrinter(chain_settings(chain), ascii=ascii, angles=tuple(angles), points=tuple(points),
-                         targets=tuple(targets))
+    return IKTextPrinter(ik_settings(chain, numbers, numbering), ascii=ascii, angles=tuple(angles),
+                         points=tuple(points), targets=tuple(targets))
 
 
-def latex_printer(chain, angles=(), points=(), targets=TARGET_NAMES) -> IKLatexPrinter:
-    return IKLatexPrinter(chain_settings(chain), angles=tuple(angles), points=tuple(points), targets=tuple(targets))
+def latex_printer(chain: Chain, numbers=None, numbering: Numbering = PLAIN, angles=(), points=(), targets=TARGET_NAMES,
+                  kind=None) -> IKLatexPrinter:
+    """The LaTeX printer of a chain's solution (`kind`: a subclass, the documents' own)."""
+    return (kind or IKLatexPrinter)(ik_settings(chain, numbers, numbering), angles=tuple(angles),
+                                    points=tuple(points), targets=tuple(targets))
+
+
+def solution_printer(solution, numbering: Numbering = PLAIN, kind=None, ascii: bool = False):
+    """The printer (`kind`: IKTextPrinter, IKLatexPrinter or a subclass) of a whole solution: its
+    chain and numbers, the angles it names, the points it writes first, its target's names."""
+    settings = ik_settings(solution.chain, solution.numbers, numbering)
+    if ascii:
+        settings["ascii"] = True
+    return (kind or IKTextPrinter)(settings, angles=named_angles(solution), points=target_points(solution),
+                                   targets=target_names(solution))
 
 
 def target_names(solution) -> tuple:
@@ -300,88 +326,14 @@ def named_angles(solution) -> tuple:
     return tuple(dict.fromkeys(name for name, _ in pairs if name not in joints and name in inside))
 
 
-def target_title(chain, style: str = "unicode") -> str:
-    """⁰T₆: the transform `dhsym fk` prints by default, from base (else 0) to tool (else n)."""
-    robot = as_robot(chain)
-    return render.transform_title(robot.first_frame, robot.last_frame, style)  # as printed
+def target_title(chain: Chain, numbering: Numbering = PLAIN, style: str = "unicode") -> str:
+    """⁰T₆: the transform `dhsym fk` prints by default, from base (else 0) to tool (else n), as numbered."""
+    return render.transform_title(numbering.frame(chain.first_frame), numbering.frame(chain.last_frame), style)
 
 
 def variable_list(symbols, printer) -> str:
     """θ1, θ2 in the printer's style."""
     return ", ".join(printer.doprint(symbol) for symbol in symbols)
-
-
-def text_solution(solution, width: int = 100, ascii: bool = False) -> str:
-    """The whole solution as text that fits `width`: title, target, method, definitions, each
-    branch, when branches exist, the degenerate poses, and the legend of c/s abbreviations."""
-    chain = solution.chain
-    targets = target_names(solution)
-    printer = text_printer(chain, ascii, named_angles(solution), target_points(solution), targets)
-    style = "ascii" if ascii else "unicode"
-    title = f"{chain.name}: inverse kinematics  ({chain.convention}\u00a0DH)"  # "(modified DH)" kept whole
-    blocks = [render.wrap(title, width, "  ").replace("\u00a0", " ")]
-    target = [[target_name(targets[4 * r + c], style) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
-    blocks.append(render.wrap(f"Target {target_title(chain, style)}, the pose to reach (what `dhsym fk` prints):",
-                              width, "  ") + "\n" + render.aligned_matrix(target, ascii))
-    names = solution_names(solution)
-    about = [f"Method: {text_sentence(solution.method, names, printer)}."]
-    if solution.free:
-        about.append(f"Free (parameters): {variable_list(solution.free, printer)}.")
-    count = len(solution.branches)
-    about.append(f"{count} branch{'es' if count != 1 else ''}.")
-    blocks.append(render.wrap(" ".join(about), width, "  "))
-    if solution.definitions:
-        blocks.append("where\n" + assignments_text(solution.definitions, printer, width))
-    for number, branch in enumerate(solution.branches, 1):
-        heading = render.wrap(f"Branch {number}: {branch.name}", width, "  ")
-        blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
-    for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
-        if lines:
-            blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + text_sentence(line, names, printer), width,
-                                                                  "    ") for line in lines))
-    legend = render.text_legend(printer, width)
-    text = "\n\n".join(blocks + ([legend] if legend else []))
-    return ascii_text(text) if ascii else text
-
-
-_ASCII = {"−": "-", "–": "-", "≥": ">=", "≤": "<=", "≠": "!=", "·": "*", "×": "x", "√": "sqrt", "±": "+-",
-          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0", "′": "'", "ʹ": "'"}
-
-
-def ascii_text(text: str) -> str:
-    """Text for --ascii: the solver's sentences may hold Greek letters, squares and signs.
-
-    >>> ascii_text("s5 = 0: only θ4 + θ6 is determined; D² ≤ 1")
-    's5 = 0: only theta4 + theta6 is determined; D^2 <= 1'
-    """
-    out = []
-    for ch in text:
-        if ch.isascii():
-            out.append(ch)
-        else:
-            out.append(_ASCII.get(ch) or GREEK_NAMES.get(ch) or "?")
-    return "".join(out)
-
-
-def json_solution(solution) -> dict:
-    """The JSON contract: full forms with the robot file's names and decimals as written;
-    `sympy.sympify` reads every expression back."""
-    chain = solution.chain
-    exact = IKExactPrinter(chain_settings(chain))
-    pairs = lambda items: [[name.name, exact.doprint(value)] for name, value in items]  # noqa: E731
-    return {
-        "robot": chain.name,
-        "convention": chain.convention,
-        "joint_variables": [symbol.name for symbol in solution.joint_variables],
-        "free": [symbol.name for symbol in solution.free],
-        "method": solution.method,
-        "target": list(target_names(solution)),
-        "definitions": pairs(solution.definitions),
-        "solutions": [{"name": branch.name, "assignments": pairs(branch.assignments)}
-                      for branch in solution.branches],
-        "conditions": list(solution.conditions),
-        "degenerate": list(solution.degenerate),
-    }
 
 
 def latex_name(symbol: sympy.Symbol) -> str:

@@ -5,7 +5,8 @@ solution there, as text and as JSON.
 >>> import dhsym
 >>> from dhsym.inverse.numeric.answer import answer
 >>> from dhsym.inverse.numeric.solver import numeric_inverse
->>> text = numeric_text(answer(numeric_inverse(dhsym.load("puma560"))))
+>>> puma = dhsym.load("puma560")
+>>> text = numeric_text(answer(numeric_inverse(puma.chain, sample=puma.sample, name=puma.name)))
 >>> print(text.splitlines()[0])
 PUMA 560: inverse kinematics in numbers  (modified DH)
 """
@@ -13,9 +14,8 @@ from __future__ import annotations
 
 import numpy
 
-from ..core.robot import as_robot
 from . import render
-from .ik import ascii_text
+from .ik_solution import ascii_text
 from .names import display_name
 
 DIGITS = 6  # decimals of the printed joint values and target elements
@@ -24,7 +24,6 @@ DIGITS = 6  # decimals of the printed joint values and target elements
 def numeric_text(found, width: int = 100, ascii: bool = False, robot=None, refusal: str = "") -> str:
     """The answer as text: title, why numeric (`refusal`, the closed form's), method, arm, target, solutions."""
     inverse = found.inverse
-    robot = as_robot(robot) if robot is not None else None
     title = f"{inverse.arm.name}: inverse kinematics in numbers  ({inverse.arm.convention}\u00a0DH)"
     blocks = [render.wrap(title, width, "  ").replace("\u00a0", " ")]
     if refusal:
@@ -80,10 +79,14 @@ def _arm_block(robot, inverse, ascii, width) -> str:
     return "\n".join(lines)
 
 
+def _ends(robot) -> tuple:
+    """The first and last frames of the robot's chain, numbered as its file numbers them."""
+    return robot.numbering.frame(robot.chain.first_frame), robot.numbering.frame(robot.chain.last_frame)
+
+
 def _target_block(found, robot, ascii, width) -> str:
-    ends = (robot.numbering.frame(robot.chain.first_frame), robot.numbering.frame(robot.chain.last_frame)) \
-        if robot is not None else ()
-    frames = f"{render.transform_title(*ends, 'ascii' if ascii else 'unicode')} " if ends else ""
+    frames = f"{render.transform_title(*_ends(robot), 'ascii' if ascii else 'unicode')} " \
+        if robot is not None else ""
     at = ", ".join(f"{_name(name)} = {_short(value)}" for name, value in found.joints.items())
     said = f"Target {frames}at {at}"
     if found.replaced:

@@ -1,124 +1,276 @@
-"""A solver's sentences (conditions, degenerate poses, the method) in the printers' notation:
-the relations they start with as math, the names and sums of names they mention as math, and
-lines wrapped so that no relation is cut in two.
+"""The solver's sentences (dhsym.inverse.sentences: when a branch exists, where it degenerates, the
+method, a step's sub-problem and note) written out: one `_print_<Record>` per record, shared by
+the text and LaTeX printers and by the JSON's plain strings, each style writing the pieces (words,
+math, relations) its way and the chain's joints and frames with the robot file's numbers. The
+relations a sentence starts with are math, and so are the names it mentions.
 
->>> import dhsym
+>>> import dhsym, sympy
+>>> from dhsym.inverse.sentences import ByEquations, Undetermined
 >>> from dhsym.printing.ik import text_printer
->>> printer = text_printer(dhsym.load("planar2r"))
->>> text_sentence("-px + a_1 = 0 and py = 0: theta_1 is not determined", ["px", "py", "a_1", "theta_1"], printer)
-'px − a1 = 0 and py = 0: θ1 is not determined'
+>>> arm = dhsym.load("planar2r")
+>>> px, py = sympy.symbols("px py", real=True)
+>>> said = Undetermined((-px, py), arm.joint_variables[0], ByEquations(2))
+>>> text_printer(arm).sentence(said)
+'px = 0 and py = 0: θ1 is not determined by these equations'
+>>> PlainSentences().sentence(said)
+'-px = 0 and py = 0: theta_1 is not determined by these equations'
 """
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
-from ..errors import UserError
-from ..io.expr import parse_expression, real_symbol
+import sympy
+from sympy.printing.str import StrPrinter
+
+from ..inverse.sentences import ByEquations, CentreOnAxis, Frame, Joint, LinedUp
+from ..inverse.written import exact
 from . import render
+from .ik_words import meaning_text
 
-_RELATION = re.compile(r"^(.+?)\s*(>=|<=|!=|=|>|<)\s*(.+)$")
-_NAME = r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?ʹ*"  # ʹ: a prime of the derivation's (dhsym.inverse.fresh)
-_TERM = rf"(?:(?:sin|cos)\([^()]*\)|{_NAME}(?![\w(]))"
-_MATH_RUN = re.compile(rf"(?<![\w.'’]){_TERM}(?: [+-] {_TERM})*")  # theta_2 + theta_3, sin(theta_5); not Pieper's s
-_VALUE = re.compile(r"(?<== )-?(?:\d+(?:\.\d+)?|pi)(?![\w.])")  # "r32 = -1", "theta_5 = pi": math
 _GLUE = "\u00a0"  # holds a relation together while a sentence is wrapped
 RELATIONS = {"text": {">=": " ≥ ", "<=": " ≤ ", "!=": " ≠ ", "=": " = ", ">": " > ", "<": " < "},
              "latex": {">=": " \\geq ", "<=": " \\leq ", "!=": " \\neq ", "=": " = ", ">": " > ", "<": " < "}}
+LINED_UP_UNSAID = "only the sum (or difference) of the angles about them is determined"
+SUBPROBLEMS = {"Pieper's distance": "Pieper: a distance that θ{} does not change",
+               "Pieper's height": "Pieper: a height that θ{} does not change",
+               "Ferrari's quartic": "a quartic in u = tan(θ{}/2), by Ferrari's method"}
 
 
-def sentence_parts(text: str, names) -> list:
-    """A solver's sentence ("1 - D**2 >= 0 (else …)", "a_3 = 0 and d_4 = 0: theta_3 is not
-    determined") as parts to print: ("relation", lhs, operator, rhs) for each relation it starts
-    with (up to a colon or a bracket), read by dhsym's safe parser, and ("words", text, math) for
-    the rest, where `math` lists (start, end, expression) for the names, sums of names and sines
-    and cosines of them that the words mention (theta_2 + theta_3, sin(theta_5)), each printed
-    as math. A sentence that starts with no relation stays words.
+@dataclass(frozen=True)
+class Math:
+    """A piece of a sentence that is math."""
 
-    >>> sentence_parts("1 - D**2 >= 0 (else no branch)", ["D"])[0]
-    ('relation', 1 - D**2, '>=', 0)
-    >>> sentence_parts("only theta_4 + theta_6 is determined; the factor sin(theta_5)", ["theta_4", "theta_5",
-    ...                "theta_6"])[0][2]
-    [(5, 22, theta_4 + theta_6), (49, 61, sin(theta_5))]
-    """
-    cuts = [len(text)] + [m.start() for m in re.finditer(r": | \(", text)]
-    for cut in sorted(set(cuts)):
-        relations = _relations(text[:cut])
-        if relations:
-            rest = text[cut:]
-            return relations + ([("words", rest, _mentioned(rest, names))] if rest else [])
-    return [("words", text, _mentioned(text, names))]
+    expr: object
 
 
-def _relations(math: str) -> list:
-    """[("relation", lhs, operator, rhs), ("words", " and ", []), …] for `math`, or [] if it is not
-    a conjunction of relations the safe parser reads."""
-    parts = []
-    for clause in math.split(" and "):
-        match = _RELATION.match(clause.strip())
-        try:
-            sides = [parse_expression(match.group(1)), parse_expression(match.group(3))] if match else None
-        except UserError:
-            sides = None
-        if sides is None:
-            return []
-        if parts:
-            parts.append(("words", " and ", []))
-        parts.append(("relation", sides[0], match.group(2), sides[1]))
-    return parts
+@dataclass(frozen=True)
+class Angle(Math):
+    """An angle θk or θk + c (a row's offset) in a sentence, written as a book writes it: θk first."""
 
 
-def _mentioned(text: str, names) -> list:
-    """(start, end, expression) for each run of math in `text` that names only the chain's and the
-    solution's names: a name, a sum of them, sin or cos of them; and each number after `= `."""
-    wanted, found = set(names), []
-    for match in _VALUE.finditer(text):
-        found.append((match.start(), match.end(), parse_expression(match.group(0))))
-    for match in _MATH_RUN.finditer(text):
-        used = {m.group(0) for m in re.finditer(_NAME, match.group(0))}
-        if not used - {"sin", "cos"} or not used - {"sin", "cos"} <= wanted:
-            continue
-        try:
-            expression = parse_expression(match.group(0))
-        except UserError:
-            continue
-        found.append((match.start(), match.end(), expression.xreplace({s: real_symbol(s.name)
-                                                                         for s in expression.free_symbols})))
-    return sorted(found, key=lambda run: run[0])
+@dataclass(frozen=True)
+class Relation:
+    """A piece of a sentence that is a relation, `lhs operator rhs`."""
+
+    lhs: object
+    operator: str
+    rhs: object = sympy.Integer(0)
 
 
-def solution_names(solution) -> list[str]:
-    """The names a solver's sentence may mention: the chain's symbols, the definitions', the target's."""
-    return ([s.name for s in solution.chain.symbols] + [name.name for name, _ in solution.definitions]
-            + [s.name for s in solution.target_symbols])
+class SentenceWriting:
+    """`_print_<Record>` for the solver's records; a style writes the pieces (`_pieces`) and
+    numbers the chain's joints and frames (the setting `frame_offset`, a robot file's first_frame)."""
 
+    def sentence(self, record) -> str:
+        """A record, or a phrase (a tuple of words, joints and frames, or plain words), in this style."""
+        if isinstance(record, str):
+            return self._said(record)
+        return self._said(*record) if isinstance(record, tuple) else self._print(record)
 
-def text_sentence(text: str, names, printer) -> str:
-    """A solver's sentence in the printer's notation: '1 − D² ≥ 0', 's5 = 0: only θ4 + θ6 is determined'."""
-    out = []
-    with printer.numbers_read_back():
-        for part in sentence_parts(text, names):
-            if part[0] == "relation":
-                out.append(relation(part, printer, "text"))
+    def _frame(self, frame) -> str:
+        return str(frame + self._settings.get("frame_offset", 0) if isinstance(frame, int) else frame)
+
+    def _joint(self, joint: int) -> str:
+        return str(joint + self._settings.get("frame_offset", 0))
+
+    def _said(self, *pieces) -> str:
+        """Pieces (words, Math, Relation, Joint, Frame, and tuples of them) as one sentence."""
+        out = []
+        for piece in _flat(pieces):
+            if isinstance(piece, Joint):
+                piece = self._joint(piece.number)
+            elif isinstance(piece, Frame):
+                piece = self._frame(piece.frame)
+            if isinstance(piece, str) and out and isinstance(out[-1], str):
+                out[-1] += piece
             else:
-                out.append(_math_printed(part[1], part[2], printer))
-    return "".join(out)
+                out.append(piece)
+        return self._pieces(out)
+
+    # ---------------------------------------------------------------- when a branch exists
+
+    def _print_Exists(self, said):
+        unknown = () if said.unknown is None else (
+            " (else ", Math(said.unknown), " has no real value: the target is out of reach; where it is 0 the two "
+            "roots meet)")
+        return self._said(Relation(said.expression, said.relation), unknown)
+
+    def _print_RealRoot(self, said):
+        return self._said("quartic root k (for ", Math(said.joint), f") exists where the root {said.root.name} of the "
+                          "quartic is real: 4, 2 or none of the four roots are, and a root that is not real is a "
+                          "branch that does not exist")
+
+    def _print_Consistent(self, said):
+        joints = f"{said.unknowns} unknown joint{'s' if said.unknowns != 1 else ''}"
+        fixed = [(Math(element), " = ", Math(value)) for element, value in said.fixed]
+        fixed = (" (in every pose of this arm ", _listed(fixed), ")") if fixed else ()
+        return self._said(f"the arm has {joints}: only ", _listed([Math(u) for u in said.used]),
+                          " are used, and the other elements of the target must be consistent with them", fixed)
+
+    # ---------------------------------------------------------------- where the branches degenerate
+
+    def _print_Undetermined(self, said):
+        condition = _listed([Relation(c, "=") for c in said.condition], " and ")
+        reason = said.reason
+        if isinstance(reason, ByEquations):
+            why = " by this equation" if reason.count == 1 else " by these equations"
+        elif isinstance(reason, CentreOnAxis):
+            why = (" (the wrist centre on axis ", Joint(reason.joint), ")")
+        else:
+            why = (" on its own: the axes on either side of ", Math(_joint_symbol(reason.angle)), " line up, and ",
+                   self._lined_up(reason), ", a one-parameter family (a numeric evaluation gives one member)")
+        factor = () if said.singular_factor is None else (
+            "; a singularity of J: the factor ", Math(said.singular_factor), " of det J")
+        return self._said(condition, ": ", Math(said.unknown), " is not determined", why, factor)
+
+    def _math(self, piece: Math) -> str:
+        """A piece of math in the printer's notation; an angle θk + c with θk first (θ5 + 1)."""
+        expr = exact(piece.expr)
+        if isinstance(piece, Angle) and expr.is_Add:
+            joint = _joint_symbol(expr)
+            offset = expr - joint
+            minus = offset.could_extract_minus_sign()
+            return self.doprint(joint) + (self.minus if minus else " + ") + self.doprint(-offset if minus else offset)
+        return self.doprint(expr)
+
+    def _lined_up(self, lined: LinedUp) -> tuple:
+        if not lined.said:
+            return (LINED_UP_UNSAID,)
+        angle = Angle(lined.angle)
+        return ("at ", angle, " = ", Math(sympy.Integer(0)), " only ", Math(lined.total()), " is determined, at ",
+                angle, " = ", Math(sympy.pi), " only ", Math(lined.total(at_pi=True)))
+
+    def _print_RootAtPi(self, said):
+        joint = Math(said.joint)
+        return self._said(Relation(said.leading, "="), ": ", joint, " = ", Math(sympy.pi), " is a root, which "
+                          f"{said.root.name} = tan(", joint, "/2) does not reach")
+
+    # ---------------------------------------------------------------- the method
+
+    def _print_Decoupled(self, said):
+        arm = _listed([Math(v) for v in said.arm])
+        oriented = _listed([Math(v) for v in said.oriented])
+        pieper = () if said.quartic is None else (
+            " as Pieper solved them: a quartic in tan(θ", Joint(said.quartic), "/2), its roots by radicals (Ferrari)")
+        if said.at_start:
+            how = (" meet at a point fixed in the base; that point seen from the last frame gives ", arm, pieper,
+                   ", the orientation ", oriented)
+        else:
+            how = (" meet at the wrist centre; the position of the wrist centre gives ", arm, pieper,
+                   ", its orientation ", oriented)
+        return self._said("kinematic decoupling: the axes of joints ", _joints(said.wrist), how, self._about(said))
+
+    def _print_EulerWrist(self, said):
+        return self._said("a spherical wrist: the axes of joints ", _joints(said.joints), " meet in a point; the "
+                          "orientation gives the Euler angles", self._about(said))
+
+    def _print_BySubproblems(self, said):
+        how = "the sub-problems of the equations (Hawkins's way for three parallel axes)" if said.parallel else \
+            "position problem by sub-problems"
+        return self._said(how, self._about(said))
+
+    def _about(self, method) -> tuple:
+        """What every method line adds: the target elements used, the meaning of the branches' words."""
+        used = (" (target elements used: ", _listed([Math(u) for u in method.used]), ")") if method.used else ()
+        words = list(dict.fromkeys(meaning_text(meaning, self._joint, self._frame) for meaning in method.words))
+        return used + (("; branch names: " + "; ".join(words),) if words else ())
+
+    # ---------------------------------------------------------------- a step of the derivation
+
+    def _print_Subproblem(self, said):
+        if said.name in SUBPROBLEMS:
+            return self._said(SUBPROBLEMS[said.name].format(self._joint(said.joint)))
+        return self._said(said.name + (", one double root" if said.double_root else ""))
 
 
-def _math_printed(text: str, math, printer) -> str:
-    """`text` with each run of math in `math` as the printer writes it: sin(theta_5) -> s5."""
-    out, position = [], 0
-    for start, end, expression in math:
-        out += [text[position:start], printer.doprint(expression)]
-        position = end
-    return "".join(out) + text[position:]
+def _joint_symbol(angle):
+    """θk of an angle θk or θk + c."""
+    symbols = angle.free_symbols
+    return next(iter(symbols)) if len(symbols) == 1 else angle
 
 
+def _flat(pieces) -> list:
+    out = []
+    for piece in pieces:
+        if isinstance(piece, tuple):
+            out += _flat(piece)
+        elif piece is not None:
+            out.append(piece)
+    return out
 
 
-def relation(part, printer, style: str) -> str:
-    """A ("relation", lhs, operator, rhs) part in the printer's notation. An equation to zero
-    starts with a plus, as a book writes it: `px − b = 0`, not `−px + b = 0`."""
-    _, lhs, operator, rhs = part
+def _listed(items, between: str = ", ") -> tuple:
+    out: list = []
+    for item in items:
+        out += [between, item] if out else [item]
+    return tuple(out)
+
+
+def _joints(numbers) -> tuple:
+    """Joints 4, 5 and 6 (the chain's numbers, printed as the robot numbers them)."""
+    joints = [Joint(number) for number in numbers]
+    return (*_listed(joints[:-1]), " and ", joints[-1])
+
+
+class PlainSentences(SentenceWriting, StrPrinter):
+    """The sentences as the JSON gives them: expressions as SymPy writes them (`sympy.sympify`
+    reads them), relations with >=, joints and frames numbered as the robot file numbers them."""
+
+    _default_settings = {**StrPrinter._default_settings, "frame_offset": 0}
+
+    def _pieces(self, pieces) -> str:
+        out = []
+        for piece in pieces:
+            if isinstance(piece, Math):
+                out.append(str(piece.expr))
+            elif isinstance(piece, Relation):
+                out.append(f"{piece.lhs} {piece.operator} {piece.rhs}")
+            else:
+                out.append(piece)
+        return "".join(out)
+
+
+class TextSentences(SentenceWriting):
+    """For a text printer: the math in its notation, the file's decimals as it writes them."""
+
+    def _pieces(self, pieces) -> str:
+        out = []
+        with self.numbers_read_back():
+            for piece in pieces:
+                if isinstance(piece, Math):
+                    out.append(self._math(piece))
+                elif isinstance(piece, Relation):
+                    out.append(relation(piece, self, "text"))
+                else:
+                    out.append(piece)
+        return "".join(out)
+
+
+class LatexSentences(SentenceWriting):
+    """For a LaTeX printer: the math between dollars, the words through `_words` (the documents
+    set them as LaTeX text), an equation of a name and a number as one formula."""
+
+    def _words(self, text: str) -> str:
+        return text
+
+    def _pieces(self, pieces) -> str:
+        out = []
+        with self.numbers_read_back():
+            for piece in pieces:
+                if isinstance(piece, Math):
+                    out.append(f"${self._math(piece)}$")
+                elif isinstance(piece, Relation):
+                    out.append(f"${relation(piece, self, 'latex')}$")
+                else:
+                    out.append(self._words(piece))
+        return "".join(out).replace("$ = $", " = ")  # r_{32} = -1 as one formula
+
+
+def relation(part: Relation, printer, style: str) -> str:
+    """A relation in the printer's notation. An equation to zero starts with a plus, as a book
+    writes it: `px − b = 0`, not `−px + b = 0`."""
+    lhs, operator, rhs = exact(part.lhs), part.operator, exact(part.rhs)
     left = printer.doprint(lhs)
     if rhs == 0 and operator in ("=", "!=") and left[:1] in "−-":
         flipped = printer.doprint(-lhs)

@@ -16,6 +16,7 @@ from typing import Mapping
 
 from ..core.chain import Chain, plain
 from ..core.numeric import NumericChain
+from ..core.sampling import random_pose
 from ..core.vectors import cross, dot
 from .jacobian import axis_frame
 
@@ -27,16 +28,9 @@ TOLERANCE = 1e-9
 
 
 def sample_values(chain: Chain, rng: random.Random, sample: Mapping | None = None) -> dict:
-    """Joint variables uniform in (−π, π); constants from `sample` (a robot file's), else in (0.5, 1.5)."""
-    values, sample = {}, sample or {}
-    for symbol in sorted(chain.symbols, key=str):
-        if symbol in chain.joint_variables:
-            values[symbol] = rng.uniform(-math.pi, math.pi)
-        elif symbol in sample:
-            values[symbol] = float(sample[symbol])
-        else:
-            values[symbol] = rng.uniform(0.5, 1.5)
-    return values
+    """A random pose by the package's one rule (dhsym.core.sampling): joint variables uniform in
+    (−π, π), constants from `sample` (a robot file's), else in (0.5, 1.5)."""
+    return random_pose(chain, rng, sample)
 
 
 _EVALUATORS: dict = {}  # (chain, its constants' values) -> NumericChain: many poses of one arm set it up once

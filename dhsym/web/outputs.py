@@ -120,5 +120,5 @@ def _inverse(robot: Robot, free, page: Page) -> Output:
     from ..latex.ik import ik_sections
 
     solution = notebook_robot(robot).ik(free).solution  # solved once per robot read and choice of free
-    parts = section_parts(ik_sections(solution, page, headings=False))
+    parts = section_parts(ik_sections(solution, robot, page, headings=False))
     return Output(_title(robot, "inverse kinematics"), parts, latex_of(parts))

@@ -8,7 +8,8 @@ often put an arm in a singular pose, whose solutions are not isolated.
 
 >>> import dhsym
 >>> from dhsym.inverse.numeric.solver import numeric_inverse
->>> found = answer(numeric_inverse(dhsym.load("puma560")))
+>>> puma = dhsym.load("puma560")
+>>> found = answer(numeric_inverse(puma.chain, sample=puma.sample, name=puma.name))
 >>> len(found.solutions), found.among
 (8, 4)
 """

@@ -7,10 +7,10 @@ Every constant needs a number: the values given (`--set`), else the robot file's
 constant with neither is refused with the names that lack one.
 
 >>> import dhsym
->>> arm = numeric_arm(dhsym.load("planar2r"), {"a_1": 1, "a_2": 0.5})
+>>> arm = numeric_arm(dhsym.load("planar2r").chain, {"a_1": 1, "a_2": 0.5})
 >>> arm.kinds, arm.slopes, arm.frames.shape
 ('RR', (1.0, 1.0), (3, 4, 4))
->>> numeric_arm(dhsym.load("planar2r").chain, {"a_1": 1}).kinds  # a plain chain: no sample values
+>>> numeric_arm(dhsym.load("planar2r").chain, {"a_1": 1}).kinds  # no sample values given
 Traceback (most recent call last):
 dhsym.errors.UserError: the numeric inverse kinematics needs numbers: the robot has no value for a_2; give it with \
 --set a_2=… (or numbers in the table, or a sample: line in the robot file)
@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy
 import sympy
 
-from ...core.robot import as_robot
+from ...core.chain import Chain, plain
 from ...errors import UserError
 
 _TURN_PLANE = {0: (1, 2), 1: (2, 0), 2: (0, 1)}
@@ -53,13 +53,12 @@ class NumericArm:
         return numpy.array(pose(self.frames, self.kinds, values * numpy.asarray(self.slopes)))
 
 
-def numeric_arm(robot, given=None) -> NumericArm:
-    """The robot (or chain) in numbers; `given` maps constants (symbols or names) to numbers and
-    takes precedence over the robot file's sample values."""
-    robot = as_robot(robot)
-    chain = robot.chain
+def numeric_arm(chain: Chain, given=None, *, sample=None, name: str = "") -> NumericArm:
+    """The chain in numbers; `given` maps constants (symbols or names) to numbers and takes
+    precedence over `sample` (the robot file's sample values); `name`: the robot's, for messages."""
+    chain = plain(chain)
     variables = list(chain.joint_variables)
-    numbers = _numbers(robot, given or {})
+    numbers = _numbers(chain, given or {}, sample or {}, name)
     frames, kinds, slopes, current, used = [], "", [], numpy.eye(4), []
     for step in chain.steps(chain.first_frame, chain.last_frame):
         value = step.value.xreplace(numbers)
@@ -81,20 +80,19 @@ def numeric_arm(robot, given=None) -> NumericArm:
     if used != variables:  # a joint variable that moves nothing, or the rows out of order
         raise UserError("the numeric inverse kinematics needs each joint variable in its own row's step, in order")
     scale = sum(float(numpy.linalg.norm(frame[:3, 3])) for frame in frames) or 1.0
-    return NumericArm(robot.name, chain.convention, numpy.array(frames), kinds, tuple(slopes),
+    return NumericArm(name, chain.convention, numpy.array(frames), kinds, tuple(slopes),
                       tuple(v.name for v in variables), {s.name: float(v) for s, v in numbers.items()}, scale)
 
 
-def _numbers(robot, given) -> dict:
+def _numbers(chain: Chain, given, sample, name: str) -> dict:
     """{constant symbol: exact number}: the given values, else the sample values; refused when one lacks both."""
-    chain = robot.chain
     named = {getattr(key, "name", str(key)): value for key, value in given.items()}
-    sample = {s.name: v for s, v in robot.sample.items()}
+    sample = {s.name: v for s, v in sample.items()}
     constants = sorted(chain.symbols - set(chain.joint_variables), key=lambda s: s.name)
     missing = [s.name for s in constants if s.name not in named and s.name not in sample]
     if missing:
         example = " ".join(f"{name}=…" for name in missing[:3])
-        raise UserError(f"the numeric inverse kinematics needs numbers: {robot.name or 'the robot'} has no value for "
+        raise UserError(f"the numeric inverse kinematics needs numbers: {name or 'the robot'} has no value for "
                         f"{', '.join(missing)}; give {'it' if len(missing) == 1 else 'them'} with --set {example} "
                         "(or numbers in the table, or a sample: line in the robot file)")
     return {s: sympy.nsimplify(named[s.name]) if s.name in named else sample[s.name] for s in constants}

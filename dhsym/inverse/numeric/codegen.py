@@ -8,7 +8,8 @@ copied: it computes what `dhsym.inverse.numeric` computes.
 
 >>> import dhsym, numpy
 >>> from dhsym.inverse.numeric.solver import numeric_inverse
->>> ik = numeric_inverse(dhsym.load("puma560"))
+>>> puma = dhsym.load("puma560")
+>>> ik = numeric_inverse(puma.chain, sample=puma.sample, name=puma.name)
 >>> namespace = {}
 >>> exec(compile(module_text(ik), "puma_ik.py", "exec"), namespace)
 >>> T = ik.pose([0.3, -0.4, 0.5, -0.6, 0.7, -0.8])
@@ -38,21 +39,7 @@ def module_text(inverse, command: str = "") -> str:
     keywords = ", ".join(names[name] for name in inverse.free_variables)
     given = ", ".join(f"numpy.broadcast_to(numpy.asarray({names[n]}, dtype=float).reshape(-1), (len(poses),))"
                       for n in inverse.free_variables)
-    constants = ", ".join(f"{name} = {value!r}" for name, value in sorted(arm.constants.items())) or "none"
-    lines = [
-        f'"""Every solution of the inverse kinematics of {_comment(arm.name)} ({arm.convention} DH), numerically.\n',
-        (f"Made by `{_comment(command)}`." if command else "Made by dhsym.") + " No closed form is used: the loop",
-        "equation is reduced to one polynomial (Raghavan and Roth's elimination), whose roots are the",
-        "eigenvalues of a 24 x 24 matrix; each root is polished by Newton's method on the pose and kept",
-        f"when it reaches the pose within {data['tolerance']:.3g}.\n",
-        "ik(T): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by default; the result",
-        f"holds every real solution, shaped ({SIZE}, n) or (N, {SIZE}, n): each solution once, in order of its",
-        "joint values, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN after the last solution.",
-        "nearest(T, seed): the one solution nearest the joint values `seed`, by damped least squares.",
-        f"The arm's constants: {_comment(constants)}. Needs numpy only.",
-        '"""',
-        "import numpy", "", "",
-    ]
+    lines = _docstring(arm, data, command)
     for part, what in PARTS:
         lines += [f"# ---- {what} (dhsym.inverse.numeric.runtime.{part}) ----", "", _code_of(part), ""]
     lines += [
@@ -87,6 +74,25 @@ def module_text(inverse, command: str = "") -> str:
         "    return numpy.where(missed < ARM[\"tolerance\"], values, numpy.nan)", "",
     ]
     return "\n".join(lines)
+
+
+def _docstring(arm, data: dict, command: str) -> list[str]:
+    """The module's docstring and its import: what ik() and nearest() give, the arm's constants."""
+    constants = ", ".join(f"{name} = {value!r}" for name, value in sorted(arm.constants.items())) or "none"
+    return [
+        f'"""Every solution of the inverse kinematics of {_comment(arm.name)} ({arm.convention} DH), numerically.\n',
+        (f"Made by `{_comment(command)}`." if command else "Made by dhsym.") + " No closed form is used: the loop",
+        "equation is reduced to one polynomial (Raghavan and Roth's elimination), whose roots are the",
+        "eigenvalues of a 24 x 24 matrix; each root is polished by Newton's method on the pose and kept",
+        f"when it reaches the pose within {data['tolerance']:.3g}.\n",
+        "ik(T): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by default; the result",
+        f"holds every real solution, shaped ({SIZE}, n) or (N, {SIZE}, n): each solution once, in order of its",
+        "joint values, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN after the last solution.",
+        "nearest(T, seed): the one solution nearest the joint values `seed`, by damped least squares.",
+        f"The arm's constants: {_comment(constants)}. Needs numpy only.",
+        '"""',
+        "import numpy", "", "",
+    ]
 
 
 def _code_of(part: str) -> str:

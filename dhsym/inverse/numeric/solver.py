@@ -4,7 +4,8 @@ solutions over a range of a given joint's values, and the one solution nearest a
 (any arm, by damped least squares).
 
 >>> import numpy, dhsym
->>> ik = numeric_inverse(dhsym.load("puma560"))
+>>> puma = dhsym.load("puma560")
+>>> ik = numeric_inverse(puma.chain, sample=puma.sample, name=puma.name)
 >>> q = [0.3, -0.4, 0.5, -0.6, 0.7, -0.8]
 >>> solutions = ik.solutions(ik.pose(q))
 >>> len(solutions), bool(numpy.abs(solutions - q).max(axis=1).min() < 1e-9)
@@ -14,7 +15,7 @@ from __future__ import annotations
 
 import numpy
 
-from ...core.robot import as_robot
+from ...core.chain import Chain
 from ...errors import UserError
 from .arm import numeric_arm
 from .runtime.chain import nearest_amounts, pose_and_jacobian, wrapped
@@ -25,17 +26,16 @@ UNKNOWNS = 6  # a pose fixes six numbers
 SWEEP_STEPS = 72  # a turning joint swept in 5° steps
 
 
-def numeric_inverse(robot, free=(), constants=None) -> "NumericInverse":
-    """The numeric inverse kinematics of `robot` (a Robot or Chain) with the joint variables `free`
-    (symbols or names) given as parameters; `constants` maps the robot's constants (symbols or
-    names) to numbers, else the robot file's sample values are used."""
-    robot = as_robot(robot)
-    arm = numeric_arm(robot, constants)
+def numeric_inverse(chain: Chain, free=(), constants=None, *, sample=None, name: str = "") -> "NumericInverse":
+    """The numeric inverse kinematics of `chain` with the joint variables `free` (symbols or names)
+    given as parameters; `constants` maps the chain's constants (symbols or names) to numbers, else
+    `sample` (the robot file's sample values) gives them; `name`: the robot's, for messages."""
+    arm = numeric_arm(chain, constants, sample=sample, name=name)
     positions = free_positions(arm, free)
     unknowns = len(arm.kinds) - len(positions)
     if unknowns < UNKNOWNS:
         raise UserError(f"the numeric inverse kinematics lists the solutions of six unknown joints; "
-                        f"{robot.name or 'the arm'} has {unknowns}: a pose fixes six numbers, more than its "
+                        f"{name or 'the arm'} has {unknowns}: a pose fixes six numbers, more than its "
                         "joints can meet in general")
     choice = choose(arm, positions) if unknowns == UNKNOWNS else None
     return NumericInverse(arm, positions, choice)

@@ -11,7 +11,8 @@ one of them loses at some pose the other finds.
 
 >>> import dhsym
 >>> from dhsym.inverse.numeric.arm import numeric_arm
->>> choice = choose(numeric_arm(dhsym.load("puma560")))
+>>> puma = dhsym.load("puma560")
+>>> choice = choose(numeric_arm(puma.chain, sample=puma.sample))
 >>> choice.passed, len(choice.variants)
 (24, 2)
 """

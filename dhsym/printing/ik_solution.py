@@ -1,0 +1,105 @@
+"""A whole inverse-kinematics solution for people and programs: the text of `dhsym ik` (title,
+target, method, the `where` list, every branch, when branches exist, the degenerate poses, the
+legend) and the JSON contract (full cos/sin/atan2 with the robot file's names, readable by
+sympy.sympify; the sentences as plain strings).
+
+>>> import dhsym
+>>> from dhsym.inverse import solve
+>>> arm = dhsym.load("planar2r")
+>>> solution = solve(arm.chain, sample=arm.sample)
+>>> json_solution(solution, arm)["degenerate"]
+['px = 0 and py = 0: theta_1 is not determined by these equations']
+>>> print(text_solution(solution, arm).split("Degenerate:")[1].strip().splitlines()[0])
+px = 0 and py = 0: θ1 is not determined by these equations
+"""
+from __future__ import annotations
+
+from . import render
+from .ik import (
+    IKExactPrinter,
+    IKTextPrinter,
+    ik_settings,
+    solution_printer,
+    target_name,
+    target_names,
+    target_title,
+    variable_list,
+)
+from .ik_lines import assignments_text
+from .ik_sentences import PlainSentences, wrap_sentence
+from .names import GREEK_NAMES
+
+
+def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str:
+    """The whole solution of `robot` (its name, its numbering) as text that fits `width`: title,
+    target, method, definitions, each branch, when branches exist, the degenerate poses, and the
+    legend of c/s abbreviations."""
+    chain = solution.chain
+    targets = target_names(solution)
+    printer = solution_printer(solution, robot.numbering, IKTextPrinter, ascii)
+    style = "ascii" if ascii else "unicode"
+    title = f"{robot.name}: inverse kinematics  ({chain.convention}\u00a0DH)"  # "(modified DH)" kept whole
+    blocks = [render.wrap(title, width, "  ").replace("\u00a0", " ")]
+    target = [[target_name(targets[4 * r + c], style) for c in range(4)] for r in range(3)] + [["0", "0", "0", "1"]]
+    title = f"Target {target_title(chain, robot.numbering, style)}, the pose to reach (what `dhsym fk` prints):"
+    blocks.append(render.wrap(title, width, "  ") + "\n" + render.aligned_matrix(target, ascii))
+    about = [f"Method: {printer.sentence(solution.method)}."]
+    if solution.free:
+        about.append(f"Free (parameters): {variable_list(solution.free, printer)}.")
+    count = len(solution.branches)
+    about.append(f"{count} branch{'es' if count != 1 else ''}.")
+    blocks.append(render.wrap(" ".join(about), width, "  "))
+    if solution.definitions:
+        blocks.append("where\n" + assignments_text(solution.definitions, printer, width))
+    for number, branch in enumerate(solution.branches, 1):
+        heading = render.wrap(f"Branch {number}: {branch.name}", width, "  ")
+        blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
+    for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
+        if lines:
+            blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + printer.sentence(line), width, "    ")
+                                                      for line in lines))
+    legend = render.text_legend(printer, width)
+    text = "\n\n".join(blocks + ([legend] if legend else []))
+    return ascii_text(text) if ascii else text
+
+
+_ASCII = {"−": "-", "–": "-", "≥": ">=", "≤": "<=", "≠": "!=", "·": "*", "×": "x", "√": "sqrt", "±": "+-",
+          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0", "′": "'", "ʹ": "'"}
+
+
+def ascii_text(text: str) -> str:
+    """Text for --ascii: the solver's sentences may hold Greek letters, squares and signs.
+
+    >>> ascii_text("s5 = 0: only θ4 + θ6 is determined; D² ≤ 1")
+    's5 = 0: only theta4 + theta6 is determined; D^2 <= 1'
+    """
+    out = []
+    for ch in text:
+        if ch.isascii():
+            out.append(ch)
+        else:
+            out.append(_ASCII.get(ch) or GREEK_NAMES.get(ch) or "?")
+    return "".join(out)
+
+
+def json_solution(solution, robot) -> dict:
+    """The JSON contract: full forms with the robot file's names and decimals as written;
+    `sympy.sympify` reads every expression back. `robot` gives the name and the numbering."""
+    chain = solution.chain
+    settings = ik_settings(chain, solution.numbers, robot.numbering)
+    exact = IKExactPrinter({key: settings[key] for key in ("joint_variables", "offsets", "numbers", "first_joint")})
+    plain = PlainSentences({"frame_offset": robot.numbering.offset})
+    pairs = lambda items: [[name.name, exact.doprint(value)] for name, value in items]  # noqa: E731
+    return {
+        "robot": robot.name,
+        "convention": chain.convention,
+        "joint_variables": [symbol.name for symbol in solution.joint_variables],
+        "free": [symbol.name for symbol in solution.free],
+        "method": plain.sentence(solution.method),
+        "target": list(target_names(solution)),
+        "definitions": pairs(solution.definitions),
+        "solutions": [{"name": branch.name, "assignments": pairs(branch.assignments)}
+                      for branch in solution.branches],
+        "conditions": [plain.sentence(said) for said in solution.conditions],
+        "degenerate": [plain.sentence(said) for said in solution.degenerate],
+    }
