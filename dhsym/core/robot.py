@@ -129,16 +129,3 @@ class Robot:
         """Every link's mass, centre of mass and inertia, and gravity: the generic symbols
         (m_4, x_c4, I_xx4 …, numbered as the joints are printed) where the file gives none."""
         return self.masses.filled(self.chain.n, self.numbering.first_joint)
-
-
-def as_robot(chain_or_robot) -> Robot:
-    """A Robot as it is, or a plain Chain as a robot without a file (frames 0..n). Only inverse/
-    still calls it, until that side's rebuild (issue 25) lands; then it goes."""
-    if isinstance(chain_or_robot, Robot):
-        return chain_or_robot
-    return Robot(chain_or_robot)
-
-
-def as_chain(chain_or_robot) -> Chain:
-    """The plain chain (frames 0..n) of a Robot, or a Chain as it is. Only inverse/ still calls it."""
-    return chain_or_robot.chain if isinstance(chain_or_robot, Robot) else chain_or_robot

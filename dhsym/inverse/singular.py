@@ -20,7 +20,6 @@ from dataclasses import replace
 import sympy
 
 from ..core.chain import Chain
-from ..core.robot import Robot
 from ..velocity.determinant import as_written, determinant, factored, joint_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
@@ -45,7 +44,7 @@ def tie_to_jacobian(chain: Chain, derivation, sample, numbers) -> None:
             wrist_centre(chain, sample=sample) is not None:
         factors = wrist_factors(chain, numbers, sample)
     else:
-        factors = determinant(Robot(chain, sample=sample, numbers=numbers)).factors
+        factors = determinant(chain, numbers=numbers, sample=sample).factors
     for index, bases in found:
         matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
         if matched:
