@@ -75,7 +75,7 @@ def identified(robot):
     """The base parameters and the base regressor, numbered as the robot prints its joints."""
     from ..dynamics.identification import identification
 
-    return identification(robot.chain, robot.filled_masses(), robot.frame_offset + 1)
+    return identification(robot.chain, robot.filled_masses(), robot.numbering.first_joint)
 
 
 def derivation(robot, result, method: str):

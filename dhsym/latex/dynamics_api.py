@@ -105,7 +105,7 @@ class RobotDynamics:
         """The base parameters and the columns of the base regressor (dhsym.dynamics.identification)."""
         from ..dynamics.identification import identification
 
-        return identification(self.robot.chain, self.robot.filled_masses(), self.robot.frame_offset + 1)
+        return identification(self.robot.chain, self.robot.filled_masses(), self.robot.numbering.first_joint)
 
     def steps(self, method: str = "lagrange"):
         """The derivation's records: Lagrange's (dhsym.dynamics.lagrange_steps) or Craig's Newton–Euler

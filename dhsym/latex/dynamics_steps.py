@@ -98,7 +98,7 @@ def regressor_sections(robot, page: Page, printer) -> list[Section]:
     """The base parameters and the columns of the base regressor."""
     from ..dynamics.identification import identification
 
-    found = identification(robot.chain, robot.filled_masses(), robot.frame_offset + 1)
+    found = identification(robot.chain, robot.filled_masses(), robot.numbering.first_joint)
     grouped, alone = grouped_parameters(found)
     items = [paragraph(REGRESSOR["standard"], page), _rows(printer, grouped, page)]
     if alone:
