@@ -65,7 +65,7 @@ def test_generated_dynamics_equal_pinocchio(relative, tip, convention, tmp_path)
     data = model.createData()
     rng = numpy.random.default_rng(0)
     for _ in range(10):
-        q, qd, qdd = (rng.uniform(-math.pi, math.pi, robot.n) for _ in range(3))
+        q, qd, qdd = (rng.uniform(-math.pi, math.pi, robot.chain.n) for _ in range(3))
         configuration = pin.integrate(model, pin.neutral(model), q)  # a continuous joint is (cos q, sin q) there
         torque = pin.rnea(model, data, configuration, qd, qdd)
         assert numpy.allclose(namespace["tau"](q, qd, qdd), torque, rtol=0, atol=1e-9)

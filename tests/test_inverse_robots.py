@@ -16,6 +16,7 @@ from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
 
 import dhsym
 from dhsym import Robot
+from dhsym.api.robot import notebook_robot
 from dhsym.inverse.evaluate import evaluate
 from dhsym.inverse.sentences import Decoupled, LinedUp
 from dhsym.inverse.solution import TARGET_NAMES
@@ -51,6 +52,7 @@ def used_elements(solution) -> list[tuple[int, int]]:
 
 
 def check_round_trip(chain, solution, rng, trials=4, constants=None):
+    chain = notebook_robot(chain)  # a robot record (an imported or converted arm) read in its printed frames
     constants = {**{k: float(v) for k, v in chain.sample.items() if k in chain.chain.symbols}, **(constants or {})}
     # a positioning arm (three joints or fewer) reaches the elements it uses; from four joints on, the pose
     elements = used_elements(solution) if len(solution.joint_variables) < 4 else [(r, c) for r in range(3)

@@ -32,7 +32,8 @@ from dhsym.latex import document as latexdoc
 from dhsym.latex import layout as texlayout
 from dhsym.latex import width as texwidth
 from dhsym.latex.results import results_latex, table_latex
-from dhsym.printing.printers import LatexPrinter
+from dhsym.printing.printers import LatexPrinter, chain_settings
+from dhsym.printing.render import transform_title
 
 GOLDEN = Path(__file__).parent / "golden"
 OVERFULL_TOLERANCE_PT = 1.0  # TeX's own \hfuzz is 0.1 pt; 1 pt is invisible on a slide
@@ -83,9 +84,13 @@ def _notebook_displays() -> str:
                 f"paperwidth={width + 60}pt,textheight=3000pt,paperheight=3100pt]{{geometry}}\n"
                 "\\begin{document}\n")  # as tall as the 7-axis arm's elements and legend
     body = "".join(f"\\[\n{display.table(chain).latex}\n\\]\n"
-                   f"\\[\n{display.transform(chain, chain.first_frame, chain.last_frame).latex}\n\\]\n"
+                   f"\\[\n{display.matrix(chain, chain.fk(), _title(chain)).latex}\n\\]\n"
                    for chain in map(_robot, ROBOTS))
     return preamble + body + "\\end{document}\n"
+
+
+def _title(robot) -> str:
+    return transform_title(robot.first_frame, robot.last_frame, "latex")
 
 
 def _width_probe() -> str:
@@ -100,7 +105,7 @@ def _all_elements() -> list[str]:
     elements = set()
     for name in builtin_names():
         chain = load(name)
-        printer = LatexPrinter(chain.joint_variables)
+        printer = LatexPrinter(chain_settings(chain))
         for i, j in pairwise(chain.frames):
             for matrix in (chain.transform(chain.first_frame, j), chain.transform(i, j)):
                 elements.update(printer.doprint(element) for element in matrix)
@@ -171,7 +176,7 @@ def _compile_batch(folder: Path, batch: dict[str, str]) -> dict[str, tuple]:
 
 def _source(job: str) -> str:
     if job == "puma560-inverse-slides":
-        return _document(load("puma560"), "slides-steps", start="6", end="2")
+        return _document(load("puma560"), "slides-steps", start=6, end=2)  # the chain's frames
     if job == "width-probe":
         return _width_probe()
     if job == "notebook-displays":

@@ -17,7 +17,7 @@ from packages import EXAMPLE_ROBOT_DATA as ERD
 from packages import RTB_XACRO as RTB
 from readers import load_robot_file
 
-from dhsym.io.urdfimport import import_urdf
+from dhsym import import_urdf
 
 pytestmark = pytest.mark.slow  # real robots' URDFs, closed-form solutions: seconds to minutes per test
 
