@@ -168,11 +168,11 @@ def test_the_latex_snippet_sets_its_words_as_text_not_comments(by_hand):
 
 def test_the_legend_says_once_that_atan2_takes_the_sine_first(by_hand):
     text = run_dhsym("ik", "planar2r").ok()
-    said = "atan2(y, x) is the angle of the point (x, y), with y (the sine) first"
+    said = "atan2(y, x) is the angle of the point (x, y), y (the sine) first"
     assert " ".join(text.split()).count(said) == 1 and "Spong (2006) writes Atan2(x, y)." in " ".join(text.split())
     assert text.rstrip().splitlines()[-3].startswith("where c2 = cos θ2")  # with the legend, at the end
     latex = run_dhsym("ik", "planar2r", "--format", "latex").ok()
-    assert latex.count("$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, with $y$ (the sine) first") == 1
+    assert latex.count("$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, $y$ (the sine) first") == 1
     assert "Spong (2006) writes $\\mathrm{Atan2}(x, y)$" in latex
     assert latex.count("Atan2") == 1 and text.count("Atan2") == 1
 
@@ -194,7 +194,7 @@ def test_the_compiled_snippet_names_every_branch_step_and_condition(by_hand, tmp
     assert "Inverse kinematics: the problem" in words and f"{len(solution['solutions'])} branches." in words
     assert words.count("Condition: ") == len(solution["conditions"]) > 0
     assert words.count("Degenerate: ") == len(solution["degenerate"]) > 0
-    assert "is the angle of the point (x, y), with y (the sine) first" in words
+    assert "is the angle of the point (x, y), y (the sine) first" in words
 
 
 def _pdflatex(folder, job: str, text: str):

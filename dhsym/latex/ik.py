@@ -93,9 +93,13 @@ def ik_sections(solution, robot, page: Page, headings: bool | None = None) -> li
     remarks += [paragraph(f"Degenerate: {printer.sentence(said)}.", page) for said in solution.degenerate]
     if remarks:
         out.append(Section(PART, "Existence and degenerate poses", remarks))
-    out[-1].items.extend(legend_items(printer, page))
-    if uses_atan2(solution):
-        out[-1].items.append(paragraph(ATAN2_LEGEND["latex"], page))
+    legend = legend_items(printer, page)
+    if uses_atan2(solution):  # said once, with the legend (on slides, on its frame)
+        if legend:
+            legend[-1].keep_with_next = True
+        height = paragraph(ATAN2_LEGEND["unicode"], page).height  # as long as what it prints, not its markup
+        legend.append(Block(ATAN2_LEGEND["latex"], height, is_display=False))
+    out[-1].items.extend(legend)
     if page.height_pt is None if headings is None else headings:  # no frame titles: a heading says which part
         for section in out:
             section.items.insert(0, _heading(section.title, page))
