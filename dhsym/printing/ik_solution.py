@@ -67,10 +67,9 @@ def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str
 
 
 ATAN2_LEGEND = {  # the order of atan2's arguments, said once where a solution uses it
-    "unicode": "atan2(y, x) is the angle of the point (x, y), y (the sine) first, as in numpy; Spong (2006) writes "
-               "Atan2(x, y).",
-    "latex": "$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, $y$ (the sine) first, as in numpy; "
-             "Spong (2006) writes $\\mathrm{Atan2}(x, y)$.",
+    "unicode": "atan2(y, x) is the angle of the point (x, y), y (the sine) first; Spong (2006) writes Atan2(x, y).",
+    "latex": "$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, $y$ (the sine) first; Spong (2006) writes "
+             "$\\mathrm{Atan2}(x, y)$.",
 }
 
 
