@@ -170,7 +170,8 @@ def test_the_legend_says_once_that_atan2_takes_the_sine_first(by_hand):
     text = run_dhsym("ik", "planar2r").ok()
     said = "atan2(y, x) is the angle of the point (x, y), y (the sine) first"
     assert " ".join(text.split()).count(said) == 1 and "Spong (2006) writes Atan2(x, y)." in " ".join(text.split())
-    assert text.rstrip().splitlines()[-3].startswith("where c2 = cos θ2")  # with the legend, at the end
+    assert text.rstrip().splitlines()[-2:] == ["where c2 = cos θ2, s2 = sin θ2", said + "; Spong (2006) writes "
+                                                "Atan2(x, y)."]  # with the legend, at the end
     latex = run_dhsym("ik", "planar2r", "--format", "latex").ok()
     assert latex.count("$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, $y$ (the sine) first") == 1
     assert "Spong (2006) writes $\\mathrm{Atan2}(x, y)$" in latex
