@@ -1,6 +1,7 @@
 """`dhsym ik`, `dhsym latex --ik` and `chain.ik()`: what a user sees. Solutions come from the
 solver where it exists; the planar 2R is also checked on a solution written by hand
 (tests/ik_examples.py), so that every surface is tested whatever the solver finds."""
+import json
 import re
 import shutil
 import subprocess
@@ -146,10 +147,55 @@ def test_user_errors_are_one_line_and_status_2(argv, message):
 
 def test_latex_snippet_is_the_derivation(by_hand):
     _, out, _ = run_dhsym("ik", "planar2r", "--format", "latex")
-    assert "% Step 1 (law of cosines), for $\\theta_{2}$" in out
+    assert "\\noindent Step 1 (law of cosines), for $\\theta_{2}$" in out
     assert "D &= \\frac{p_{x}^{2} + p_{y}^{2} - a_{1}^{2} - a_{2}^{2}}{2 a_{1} a_{2}}" in out
     assert "\\theta_{2} &= \\mathrm{atan2}(-\\sqrt{1 - D^{2}}, D)" in out
     assert "c_{2} &= \\cos{\\theta_{2}}" in out
+
+
+def test_the_latex_snippet_sets_its_words_as_text_not_comments(by_hand):
+    """Compiled, the snippet must say which step, which branch, which condition: only its first
+    line (what it is and what it needs) is a comment."""
+    _, out, _ = run_dhsym("ik", "puma560", "--format", "latex")
+    first, *lines = out.splitlines()
+    assert first.startswith("% dhsym ik: ") and not [line for line in lines if line.lstrip().startswith("%")]
+    assert "\\par\\medskip\\noindent\\textbf{Branch 8: shoulder right, elbow up, wrist flipped}" in lines
+    assert any(line.startswith("\\noindent Step 1 (") for line in lines)
+    labels = [line.removeprefix("\\noindent ").split(":")[0] for line in lines]
+    assert "Condition" in labels and "Degenerate" in labels and "where" in labels
+    assert "\\noindent \\textbf" not in out and "\\par\n\\begin{align*}" not in out  # no empty line above
+
+
+def test_the_legend_says_once_that_atan2_takes_the_sine_first(by_hand):
+    text = run_dhsym("ik", "planar2r").ok()
+    said = "atan2(y, x) is the angle of the point (x, y), y (the sine) first"
+    assert " ".join(text.split()).count(said) == 1 and "Spong (2006) writes Atan2(x, y)." in " ".join(text.split())
+    assert text.rstrip().splitlines()[-2:] == ["where c2 = cos θ2, s2 = sin θ2", said + "; Spong (2006) writes "
+                                                "Atan2(x, y)."]  # with the legend, at the end
+    latex = run_dhsym("ik", "planar2r", "--format", "latex").ok()
+    assert latex.count("$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, $y$ (the sine) first") == 1
+    assert "Spong (2006) writes $\\mathrm{Atan2}(x, y)$" in latex
+    assert latex.count("Atan2") == 1 and text.count("Atan2") == 1
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("pdftotext") is None, reason="pdftotext (poppler-utils) is not installed")
+@pytest.mark.parametrize("command", ["ik", "latex"])
+@pytest.mark.parametrize("robot", BY_HAND)
+def test_the_compiled_snippet_names_every_branch_step_and_condition(by_hand, tmp_path, command, robot):
+    argv = ["ik", robot, "--format", "latex"] if command == "ik" else ["latex", robot, "--ik", "--document", "snippet"]
+    out = run_dhsym(*argv).ok()
+    assert _pdflatex(tmp_path, robot, HOST.format(out)) == (0, [])
+    subprocess.run(["pdftotext", f"{robot}.pdf", f"{robot}.txt"], cwd=tmp_path, check=True)
+    words = " ".join((tmp_path / f"{robot}.txt").read_text(encoding="utf-8").split())
+    solution = json.loads(run_dhsym("ik", robot, "--format", "json").ok())
+    assert all(f"Branch {number}: {branch['name']}" in words for number, branch in enumerate(solution["solutions"], 1))
+    steps = re.findall(r"Step \d+ \(", out)
+    assert steps == re.findall(r"Step \d+ \(", words) and (steps or robot == "puma560")  # the PUMA by hand has none
+    assert "Inverse kinematics: the problem" in words and f"{len(solution['solutions'])} branches." in words
+    assert words.count("Condition: ") == len(solution["conditions"]) > 0
+    assert words.count("Degenerate: ") == len(solution["degenerate"]) > 0
+    assert "is the angle of the point (x, y), y (the sine) first" in words
 
 
 def _pdflatex(folder, job: str, text: str):

@@ -165,7 +165,8 @@ def test_the_inverse_kinematics_of_the_planar_2r_and_its_drawing(open_page):
 
     page.click("#copy")
     copied = page.evaluate("navigator.clipboard.readText()")
-    assert copied.startswith("% Inverse kinematics: the problem") and "% Branch 1: elbow down" in copied
+    assert copied.startswith("\\medskip\\noindent\\textbf{Inverse kinematics: the problem}")
+    assert "\\textbf{Branch 1: elbow down}" in copied
     with page.expect_download() as download:
         page.click("#slides")
     tex = Path(download.value.path()).read_text(encoding="utf-8")

@@ -21,7 +21,8 @@ from ..core.robot import Robot
 from ..errors import UserError
 from ..io.library import ROBOTS_DIR
 from ..printing.printers import LatexPrinter, chain_settings
-from .ik import ik_sections
+from .ik import PART as IK_PART
+from .ik import ik_sections, typeset
 from .layout import PAGES, Block, Page, flat
 from .packing import pack
 from .prose import tex_prose, tex_text
@@ -114,10 +115,16 @@ def _article(robot: Robot, content: list[Section], page: Page) -> str:
 
 
 def _snippet(robot: Robot, content: list[Section], page: Page) -> str:
-    """Only the math; titles and text become comments."""
+    """Only the math; titles and text become comments, except in the inverse kinematics, whose
+    steps, branches and conditions are typeset as `dhsym ik --format latex` sets them."""
     out = [f"% dhsym latex: {_comment(robot.name)} ({robot.chain.convention} DH); needs \\usepackage{{amsmath}}",
            f"% Source: {_comment(robot.source or 'not given')}", f"% Robot file: {_comment(robot_file(robot))}"]
+    inverse = [section for section in content if section.part == IK_PART]
     for section in content:
+        if section.part == IK_PART:
+            if section is inverse[0]:  # the part's sections as one run of text and displays
+                out.append("\n" + typeset([item for part in inverse for item in part.items]).rstrip("\n"))
+            continue
         out.append(f"\n% {_comment(section.title)}")
         out.extend(block.latex if block.is_display else f"% {_comment(block.latex)}" for block in flat(section.items))
     return "\n".join(out) + "\n"

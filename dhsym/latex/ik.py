@@ -31,6 +31,7 @@ from ..printing.ik import (
     target_title,
     variable_list,
 )
+from ..printing.ik_solution import ATAN2_LEGEND, uses_atan2
 from .display import Latex
 from .layout import (
     ALIGNED_EXTRA,
@@ -92,7 +93,13 @@ def ik_sections(solution, robot, page: Page, headings: bool | None = None) -> li
     remarks += [paragraph(f"Degenerate: {printer.sentence(said)}.", page) for said in solution.degenerate]
     if remarks:
         out.append(Section(PART, "Existence and degenerate poses", remarks))
-    out[-1].items.extend(legend_items(printer, page))
+    legend = legend_items(printer, page)
+    if uses_atan2(solution):  # said once, with the legend (on slides, on its frame)
+        if legend:
+            legend[-1].keep_with_next = True
+        height = paragraph(ATAN2_LEGEND["unicode"], page).height  # as long as what it prints, not its markup
+        legend.append(Block(ATAN2_LEGEND["latex"], height, is_display=False))
+    out[-1].items.extend(legend)
     if page.height_pt is None if headings is None else headings:  # no frame titles: a heading says which part
         for section in out:
             section.items.insert(0, _heading(section.title, page))
@@ -160,7 +167,8 @@ def _equation_rows(lhs, rhs, printer, page: Page) -> list[tuple[str, float]]:
         return [row for a, b in pairs for row in _equation_rows(a, b, printer, page)]
     width = page.width - ALIGNED_EXTRA
     lines = break_lines(f"{printer.doprint(lhs)} = {printer.doprint(rhs)}", width, width - 1.0, display=True)
-    rows = [f"&{lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]
+    first = "{-}" + lines[0][1:] if lines[0].startswith("-") else lines[0]  # a sign, not a minus after the &
+    rows = [f"&{first}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]
     return [(row, row_height([row], array=False)) for row in rows]
 
 
@@ -188,14 +196,45 @@ def prose(text: str) -> str:
 
 
 def snippet(solution, robot) -> str:
-    """The math of `ik_sections` for a document with amsmath (`dhsym ik --format latex`)."""
+    """The sections of `ik_sections` for a document with amsmath (`dhsym ik --format latex`): the
+    words typeset, so that a compiled page says which step, which branch, which condition."""
     out = [f"% dhsym ik: {' '.join(robot.name.split())}; needs \\usepackage{{amsmath}}"]
-    for section in ik_sections(solution, robot, PAGES["snippet"], headings=False):  # the titles are comments
-        out.append(f"% {' '.join(section.title.split())}")
-        for item in section.items:
-            block = item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")
-            out.append(block.latex if block.is_display else f"% {' '.join(block.latex.split())}")
-    return "\n".join(out) + "\n"
+    sections = ik_sections(solution, robot, PAGES["snippet"], headings=True)
+    return "\n".join(out) + "\n" + typeset([item for section in sections for item in section.items])
+
+
+def typeset(items) -> str:
+    r"""Blocks and `Rows` as the lines of a snippet: displays as they are, rows as one align*, and
+    each paragraph of text on one line, not indented; a heading (a paragraph in bold) after a small
+    space. Text before a display runs on into it, as a display sits in its paragraph, without an
+    empty line; text after a display continues that paragraph.
+
+    >>> page = PAGES["snippet"]
+    >>> print(typeset([paragraph("\\textbf{Branch 1}", page), paragraph("where", page), display("x = 1", 10.0),
+    ...                paragraph("Step 2.", page)]), end="")
+    \medskip\noindent\textbf{Branch 1}\par
+    \noindent where
+    \[
+    x = 1
+    \]
+    Step 2.\par
+    """
+    blocks = [item if isinstance(item, Block) else aligned_display(lines_under(item.columns, 0), "align*")
+              for item in items]
+    out = []
+    for position, block in enumerate(blocks):
+        if block.is_display:
+            out.append(block.latex)
+            continue
+        text = " ".join(block.latex.split())
+        after_display = position > 0 and blocks[position - 1].is_display
+        if text.startswith("\\textbf{"):
+            text = ("\\par" if after_display else "") + "\\medskip\\noindent" + text
+        elif not after_display:  # a label, not an indented paragraph
+            text = "\\noindent " + text
+        follows = blocks[position + 1] if position + 1 < len(blocks) else None
+        out.append(text if follows is not None and follows.is_display else text + "\\par")
+    return "".join(line + "\n" for line in out)
 
 
 def notebook_display(solution, robot):

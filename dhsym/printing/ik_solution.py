@@ -14,6 +14,8 @@ px = 0 and py = 0: θ1 is not determined by these equations
 """
 from __future__ import annotations
 
+import sympy
+
 from . import render
 from .ik import (
     IKExactPrinter,
@@ -58,9 +60,23 @@ def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str
         if lines:
             blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + printer.sentence(line), width, "    ")
                                                       for line in lines))
-    legend = render.text_legend(printer, width)
+    atan2 = [render.wrap(ATAN2_LEGEND["unicode"], width, "  ")] if uses_atan2(solution) else []
+    legend = "\n".join(filter(None, [render.text_legend(printer, width), *atan2]))
     text = "\n\n".join(blocks + ([legend] if legend else []))
     return ascii_text(text) if ascii else text
+
+
+ATAN2_LEGEND = {  # the order of atan2's arguments, said once where a solution uses it
+    "unicode": "atan2(y, x) is the angle of the point (x, y), y (the sine) first; Spong (2006) writes Atan2(x, y).",
+    "latex": "$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, $y$ (the sine) first; Spong (2006) writes "
+             "$\\mathrm{Atan2}(x, y)$.",
+}
+
+
+def uses_atan2(solution) -> bool:
+    """Whether a formula of the solution (a definition or a branch's assignment) holds atan2."""
+    pairs = list(solution.definitions) + [pair for branch in solution.branches for pair in branch.assignments]
+    return any(sympy.sympify(value).has(sympy.atan2) for _, value in pairs)
 
 
 _ASCII = {"−": "-", "–": "-", "≥": ">=", "≤": "<=", "≠": "!=", "·": "*", "×": "x", "√": "sqrt", "±": "+-",

@@ -29,7 +29,7 @@ from ..latex.prose import tex_text
 from ..latex.results import results_latex, table_latex
 from ..latex.sections import CONVENTION_LATEX
 from ..printing.render import transform_title
-from .parts import heading, latex_of, paragraph_part, section_parts, snippet_parts
+from .parts import heading, item_parts, latex_of, paragraph_part, section_parts, snippet_parts
 
 SHOWS = ("table", "links", "fk", "jacobian", "ik")
 FONT_PT = 10.0  # the page's math is laid out as for 10 pt type, the size of `--format latex`
@@ -117,8 +117,8 @@ def _jacobian(robot: Robot, frame, point, page: Page) -> Output:
 
 
 def _inverse(robot: Robot, free, page: Page) -> Output:
-    from ..latex.ik import ik_sections
+    from ..latex.ik import ik_sections, typeset
 
     solution = notebook_robot(robot).ik(free).solution  # solved once per robot read and choice of free
-    parts = section_parts(ik_sections(solution, robot, page, headings=False))
-    return Output(_title(robot, "inverse kinematics"), parts, latex_of(parts))
+    items = [item for section in ik_sections(solution, robot, page, headings=True) for item in section.items]
+    return Output(_title(robot, "inverse kinematics"), item_parts(items), typeset(items))  # headings in bold

@@ -117,5 +117,5 @@ def plain_text(latex: str) -> str:
 
 def latex_of(parts) -> str:
     """The parts as a snippet for a document with amsmath: text as comments, math as displays,
-    as `dhsym ik --format latex` writes them."""
+    as `dhsym jacobian --format latex` writes them."""
     return "".join((part["latex"] if part["kind"] == "math" else f"% {part['latex']}") + "\n" for part in parts)
