@@ -41,3 +41,26 @@ def test_law_of_cosines_only_from_a_squared_distance():
     for line in out.splitlines():
         if f"({LAW})" in line:
             assert "squared" in line, line
+
+
+@pytest.mark.parametrize("robot", ["puma560", "ur5", "stanford", "planar3r", "scara_spong"])
+def test_every_intermediate_name_the_text_uses_is_defined(robot):
+    status, text, err = run_dhsym("ik", robot)
+    assert status == 0, err
+    assigned = set(re.findall(r"^ +(\S+) += ", text, re.MULTILINE))
+    solved_as_one = next((line for line in text.splitlines() if line.startswith("Angles solved as one:")), "")
+    used = set(re.findall(r"(?<![\w(])(θ\d{2,}|φ\d+|[CDK]\d*)(?![\w(])", text))
+    for name in used:
+        assert name in assigned, f"{name} is used but never assigned"
+        if name[0] in "θφ":  # a sum of angles solved as one says which sum it is
+            assert f"{name} = " in solved_as_one, f"{name} is not said to be a sum of angles"
+    assert not re.search(r"[CDK]\d+²", text)  # no name reads as a square: D2²
+
+
+def test_d_is_the_law_of_cosines_alone():
+    _, puma, _ = run_dhsym("ik", "puma560")
+    assert "C   = −r13 c1 s23 − r23 s1 s23 − r33 c23" in puma and "θ5  = atan2(√(1 − C²), C)" in puma
+    assert not re.search(r"^ +D +=", puma, re.MULTILINE)  # the PUMA's elbow is Craig's K, its wrist C
+    _, planar, _ = run_dhsym("ik", "planar2r")
+    assert "D = (px² + py² − a1² − a2²)/(2 a1 a2)" in planar  # Spong's D
+    assert "Angles solved as one: θ23 = θ2 + θ3" in puma

@@ -18,6 +18,7 @@ from . import render
 from .ik import (
     IKExactPrinter,
     IKTextPrinter,
+    angle_meanings,
     ik_settings,
     solution_printer,
     target_name,
@@ -58,6 +59,10 @@ def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str
         if lines:
             blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + printer.sentence(line), width, "    ")
                                                       for line in lines))
+    meanings = angle_meanings(solution)
+    if meanings:
+        said = ", ".join(f"{printer.doprint(name)} = {printer.doprint(value)}" for name, value in meanings)
+        blocks.append(wrap_sentence(f"Angles solved as one: {said}", width, "  "))
     legend = render.text_legend(printer, width)
     text = "\n\n".join(blocks + ([legend] if legend else []))
     return ascii_text(text) if ascii else text
