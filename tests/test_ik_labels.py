@@ -4,7 +4,11 @@ gives the cosine; a cosine read off a rotation element or a projection says so."
 import re
 
 import pytest
+import sympy
 from cli_runner import run_dhsym
+
+from dhsym.inverse.equations import Equation
+from dhsym.inverse.scan import scan
 
 COSINE = "a cos $\\theta$ = c"
 LAW = "law of cosines"
@@ -64,3 +68,16 @@ def test_d_is_the_law_of_cosines_alone():
     _, planar, _ = run_dhsym("ik", "planar2r")
     assert "D = (px² + py² − a1² − a2²)/(2 a1 a2)" in planar  # Spong's D
     assert "Angles solved as one: θ23 = θ2 + θ3" in puma
+
+
+def test_a_second_name_of_one_letter_is_primed_not_numbered():
+    # two cosines from two squared distances: D and D′ (D2 would read as D squared in 1 − D2²)
+    p, q, r, t1, t2 = sympy.symbols("p q r theta_1 theta_2", real=True)
+    found = scan([Equation(p * q + q * r + r * p, sympy.cos(t1), "position", ("x",), distance=True),
+                  Equation(p * q - q * r + r * p, sympy.cos(t2), "position", ("y",), distance=True)], [t1, t2], set())
+    names = [name.name for name, _ in found.assignments if name not in (t1, t2)]
+    assert names == ["D", "Dʹ"]
+    assert [step.subproblem.name for step in found.steps] == [LAW, LAW]
+    one = scan([Equation(p * q + q * r + r * p, sympy.cos(t1), "position", ("x",))], [t1], set())
+    assert [name.name for name, _ in one.assignments] == ["C", "theta_1"]  # not a distance: not D
+    assert one.steps[0].subproblem.name == "a cos θ = c"

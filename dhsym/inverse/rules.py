@@ -136,12 +136,11 @@ LETTERS = {"law of cosines": "D", "a cos θ + b sin θ = c": "K", "a cos θ = c"
 
 
 def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
-    """A long right-hand side gets a name, as a book names D and K; short ones stay as they are."""
+    """A long right-hand side gets a name, as a book names D and K; short ones stay as they are.
+    A second of one letter is primed, D′ (a D2 would read as D squared in 1 − D2²)."""
     if value.is_Symbol or value.is_number or length(value) <= 2:
         return value
-    taken = {str(name) for name, _ in derivation.assignments}
-    name = next(n for n in (fresh(n, derivation.reserved) for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)])
-                if n not in taken)
+    name = fresh(letter, derivation.reserved | {str(name) for name, _ in derivation.assignments})
     symbol = sympy.Symbol(name, real=True)
     derivation.assignments.append((symbol, value))
     return symbol
