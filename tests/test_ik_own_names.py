@@ -44,7 +44,7 @@ ROBOTS = {
     "length_D": planar("2R with D", a1="D", sample={"D": 0.5, "a_2": 0.4}),
     # lengths named as the target's elements
     "lengths_px_py": planar("2R with px, py", a1="px", a2="py", sample={"px": 0.5, "py": 0.4}),
-    # joints named φ1..φ3: the sum of the three angles is φ1′ (the solver's φ1 missed every pose)
+    # joints named φ1..φ3: the sum of the three angles is φ123, as θ123 is a book's (the solver's φ1 missed every pose)
     "joints_phi": planar("3R with phi", t1="phi_1", t2="phi_2", sample={"a_1": 0.5, "a_2": 0.4, "a_3": 0.2},
                          third="  - {joint: R, alpha: 0, a: a_3, d: 0, theta: phi_3}\n"),
     # names Python keeps for itself: a keyword argument `len` hid len() inside the generated ik()
@@ -98,7 +98,7 @@ def test_the_robots_names_stay_and_the_derivations_are_primed(folder):
     latex = run_dhsym("ik", str(folder / "lengths_px_py.yaml"), "--format", "latex").ok()
     assert "p_{x}'" in latex
     ascii_text = run_dhsym("ik", str(folder / "joints_phi.yaml"), "--ascii").ok()
-    assert "phi1' = atan2(r21, r11)" in ascii_text
+    assert "phi123 = atan2(r21, r11)" in ascii_text
 
 
 def test_a_python_builtin_named_constant_is_a_keyword_that_hides_nothing(folder):

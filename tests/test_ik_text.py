@@ -57,25 +57,26 @@ def test_no_relation_is_cut_between_lines(name):
 
 def test_planar3r_theta1_is_the_textbook_form():
     text = _solved("planar3r").text()
-    assert ("  θ1 = atan2((l1 + l2 c2)(py − l3 sφ1) − l2 s2(px − l3 cφ1),\n"
-            "         l2 s2(py − l3 sφ1) + (l1 + l2 c2)(px − l3 cφ1))") in text
-    assert "  θ3 = φ1 − θ1 − θ2" in text
+    assert ("  θ1 = atan2((l1 + l2 c2)(py − l3 sθ123) − l2 s2(px − l3 cθ123),\n"
+            "         l2 s2(py − l3 sθ123) + (l1 + l2 c2)(px − l3 cθ123))") in text
+    assert "  θ3 = θ123 − θ1 − θ2" in text  # θ123 = θ1 + θ2 + θ3, named as a book names θ23
 
 
 def test_a_named_angle_prints_as_c_and_s_of_its_name_and_the_legend_says_so():
     result = _solved("planar3r")
     text = result.text()
-    assert "cφ1 = cos φ1, sφ1 = sin φ1" in text and "cos φ1" not in _body(text)
+    assert "cθ123 = cos θ123, sθ123 = sin θ123" in text and "cos θ123" not in _body(text)
     latex = snippet(result.solution, result.robot)
-    assert "c_{\\phi 1} &= \\cos{\\phi_{1}}" in latex and "\\cos{\\phi_{1}})" not in latex
-    assert "cos(phi_1)" in json.dumps(result.json())  # the JSON keeps the full form
-    assert "c(phi1) = cos phi1" in result.text(ascii=True)  # ASCII labels a lettered angle as a joint's: c(phi2)
+    assert "c_{\\theta 123} &= \\cos{\\theta_{123}}" in latex and "\\cos{\\theta_{123}})" not in latex
+    assert "cos(theta_123)" in json.dumps(result.json())  # the JSON keeps the full form
+    assert "c(theta123) = cos theta123" in result.text(ascii=True)  # ASCII labels a named angle as a joint's
 
 
 def test_puma_reads_as_craig_prints_theta23_and_theta6():
     words = " ".join(_solved("puma560").text().split())
     # Craig (4.69): θ23 = atan2[(−a3 − a2 c3) pz − (c1 px + s1 py)(d4 − a2 s3), …]
-    assert "φ1 = atan2(−(d4 − a2 s3)(px c1 + py s1) − pz(a3 + a2 c3), (a3 + a2 c3)(px c1 + py s1)" in words
+    assert "θ23 = atan2(−(d4 − a2 s3)(px c1 + py s1) − pz(a3 + a2 c3), (a3 + a2 c3)(px c1 + py s1)" in words
+    assert "θ2 = θ23 − θ3" in words and "φ" not in words
     # Craig (4.83): s6 = −r11(c1 c23 s4 − s1 c4) − r21(s1 c23 s4 + c1 c4) + r31 s23 s4
     assert "θ6 = atan2(r11(s1 c4 − c1 c23 s4) + r31 s23 s4 − r21(c1 c4 + s1 c23 s4)," in words
 
@@ -107,7 +108,7 @@ def test_the_sign_of_a_bracket_is_decided_by_how_its_terms_print():
 def test_json_is_untouched_by_the_text_forms():
     data = _solved("planar3r").json()
     theta_1 = dict(data["solutions"][0]["assignments"])["theta_1"]
-    assert "cos(phi_1)" in theta_1 and "[" not in theta_1
+    assert "cos(theta_123)" in theta_1 and "[" not in theta_1
     sympy.sympify(theta_1)
 
 

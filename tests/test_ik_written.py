@@ -68,7 +68,7 @@ def test_text_latex_and_python_write_the_decimals_of_the_file(text, tmp_path_fac
 def test_the_ur5_in_numbers_reads_like_the_ur5_in_names(tmp_path_factory):
     _, result = solved(UR5_IN_NUMBERS, tmp_path_factory)
     printed = result.text(100)
-    assert "D  = (px s1 − py c1 − 0.10915)/0.0823" in printed
+    assert "C    = (px s1 − py c1 − 0.10915)/0.0823" in printed  # C: a projection, not the law of cosines' D
     assert "atan2(px − 0.0823 r13, 0.0823 r23 − py)" in printed
     assert "0.0146755714 r33" in printed  # 2 d1 d6 r33, the file's rule: a product of two decimals is a decimal
 

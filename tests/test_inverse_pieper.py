@@ -315,7 +315,7 @@ def test_the_decimal_arm_prints_no_decimal_that_its_file_did_not_write_or_fold(g
     assert "\\frac{s}{2}" in latex and "\\frac{A_{3}}{4 A_{4}}" in latex
     quartic = [lines[f"A{k}"] for k in range(5)]  # one style: 43/400 is no decimal by the file's rule, nor is 9/20
     assert not any(re.search(r"\d\.\d", line) for line in quartic) and "(9 rc zc)/20" in lines["A2"], quartic
-    assert "(s1 s2 s3)/2" in lines["D"]  # cos 60° = 1/2, not 0.5
+    assert "(s1 s2 s3)/2" in lines["C"]  # cos 60° = 1/2, not 0.5 (C: the wrist's cosine from an element)
 
 
 @pytest.mark.slow  # the named arm's algebra
@@ -336,7 +336,7 @@ def test_the_decimal_arm_has_the_shape_of_the_same_arm_written_with_names(genera
     decimal, by_name = _printed_lines(ik.text(100)), _printed_lines(named_ik.text(100))
     length = re.compile(r"\b[ad]\d\b")
     same = [name for name, line in by_name.items() if not length.search(line)]
-    assert {"p", "q", "r", "m", "w", "z", "s", "u", "θ3", "θ2", "θ1", "D", "θ4", "θ5", "θ6"} <= set(same)
+    assert {"p", "q", "r", "m", "w", "z", "s", "u", "θ3", "θ2", "θ1", "C", "θ4", "θ5", "θ6"} <= set(same)
     assert all(decimal[name] == by_name[name] for name in same), [(decimal[n], by_name[n]) for n in same]
     numbers = {f"{symbol.name[0]}{symbol.name[2:]}": decimal_text(value) for symbol, value in sample.items()}
     for name in ("f1", "f2", "g1"):  # a length alone in a term is its decimal: a2 + a3 c3 + d4 s3 is 0.5 + 0.1 c3 + …

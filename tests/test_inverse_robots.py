@@ -179,7 +179,7 @@ def test_the_puma_solution_is_no_larger_than_craigs():
         "theta_1": sympy.atan2(py, px) - sympy.atan2(d3, root(px ** 2 + py ** 2 - d3 ** 2)),
         "K": (px ** 2 + py ** 2 + pz ** 2 - a2 ** 2 - a3 ** 2 - d3 ** 2 - d4 ** 2) / (2 * a2),
         "theta_3": sympy.atan2(a3, d4) - sympy.atan2(K, root(a3 ** 2 + d4 ** 2 - K ** 2)),
-        "phi_1": sympy.atan2((-a3 - a2 * c3) * pz - (c1 * px + s1 * py) * (d4 - a2 * s3),
+        "theta_23": sympy.atan2((-a3 - a2 * c3) * pz - (c1 * px + s1 * py) * (d4 - a2 * s3),
                              (a2 * s3 - d4) * pz + (a3 + a2 * c3) * (c1 * px + s1 * py)),  # θ23
         "theta_4": sympy.atan2(-r13 * s1 + r23 * c1, -r13 * c1 * c23 - r23 * s1 * c23 + r33 * s23),
         "theta_5": sympy.atan2(-(r13 * (c1 * c23 * c4 + s1 * s4) + r23 * (s1 * c23 * c4 - c1 * s4) - r33 * s23 * c4),
@@ -189,7 +189,7 @@ def test_the_puma_solution_is_no_larger_than_craigs():
                                + r21 * ((s1 * c23 * c4 - c1 * s4) * c5 - s1 * s23 * s5)
                                - r31 * (s23 * c4 * c5 + c23 * s5)),
     }
-    for name in ("theta_1", "K", "theta_3", "phi_1"):
+    for name in ("theta_1", "K", "theta_3", "theta_23"):
         assert sympy.count_ops(mine[S(name)]) <= sympy.count_ops(craig[name]), name
     ours = sum(sympy.count_ops(value) for value in mine.values())
     assert ours <= sum(sympy.count_ops(form) for form in craig.values())

@@ -33,13 +33,14 @@ class Equation:
     """`lhs` = `rhs`: lhs from the target (moved to a frame by known or unknown first joints),
     rhs from the chain; `kind` "position" (a point) or "orientation" (a rotation element);
     `where` names the matrix element it comes from, for the derivation (a phrase: words and
-    the chain's frames)."""
+    the chain's frames); `distance`: a squared distance, where a cosine is the law of cosines'."""
 
     lhs: sympy.Expr
     rhs: sympy.Expr
     kind: str
     where: Phrase
     source: tuple = ()  # the matrix equation it is an element of (its frames): pairs are taken within one
+    distance: bool = False
 
     @cached_property
     def expr(self) -> sympy.Expr:  # built once: the search reads it in every round
@@ -99,7 +100,8 @@ def point_equations(chain: Chain, point: sympy.Matrix, point_length, local: symp
             equations.append(Equation(seen[axis], there[axis], "position",
                                       (f"{'xyz'[axis]} of the point in frame ", Frame(frame)), ("point", frame)))
         equations.append(Equation(seen_length, there_length, "position",
-                                  ("squared distance of the point from the origin of frame ", Frame(frame))))
+                                  ("squared distance of the point from the origin of frame ", Frame(frame)),
+                                  distance=True))
     return equations
 
 
@@ -174,7 +176,7 @@ def _length_equation(chain: Chain, target, pair, tip, tip_length, memo: dict, ri
     seen_length = squared_length(chain.steps(i, chain.first_frame), variables, point, inner, memo, ring)
     there_length = squared_length(chain.steps(i, j), variables, memo=memo, ring=ring)
     return Equation(seen_length, there_length, _kind(3, j == chain.last_frame),
-                    ("squared length of ", Frame(i), "T", Frame(j)), (i, j))
+                    ("squared length of ", Frame(i), "T", Frame(j)), (i, j), distance=True)
 
 
 def _kind(column: int, to_last: bool) -> str:

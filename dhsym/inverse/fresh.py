@@ -1,8 +1,8 @@
-"""The derivation's own names (the target's r11 … pz, the wrist centre x_c, D, K, φk, σk, Pieper's
+"""The derivation's own names (the target's r11 … pz, the wrist centre x_c, D, K, C, θ23, φk, σk, Pieper's
 quantities) never collide with the robot's: a name the robot uses for a length or a joint is the
 robot's, and the derivation's name gets a prime. A robot whose first link is named D gets
-D′ = (px² + py² − D² − a2²)/(2 D a2); a planar arm whose joints are φ1, φ2, φ3 names the sum of
-their angles φ1′.
+D′ = (px² + py² − D² − a2²)/(2 D a2); an arm whose own joint is φ1 solves an angle with an offset,
+θ1 + 1, as φ1′.
 
 The prime is MODIFIER LETTER PRIME (ʹ, U+02B9), a letter that Python, SymPy and dhsym's own
 parser read as part of a name: the JSON's expressions and the solver's sentences read back.

@@ -99,18 +99,18 @@ def by_one_equation(candidates, derivation, constants, memos, witness=None) -> s
     sigma = fresh_symbol(f"sigma_{len(derivation.signs) + 1}", derivation.reserved)
     slides = {name: value for name, value in derivation.assignments if value.is_polynomial(*value.free_symbols)}
     a, b, c = (algebra.shorter_with(x, slides) for x in first.form)  # the SCARA's d3 cancels from D
-    law = (b == 0 or a == 0)
+    single = (b == 0 or a == 0)  # cos θ = known (or sin θ): the law of cosines' form
+    label = _label(a, b, first.equation.distance)
     if touches(first, False, witness):
-        return _double_root(a, b, c, law, variable, first.equation.where, derivation)
+        return _double_root(a, b, c, label, variable, first.equation.where, derivation)
     shape = "A"
-    if not law and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
+    if not single and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
         a, b, c, shape = min(sp.book_variants(a, b, c, sigma),
                              key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
-    c = _named(derivation, "D" if law else "K", c)
-    derivation.steps.append(DerivationStep(a * sympy.cos(shown) + b * sympy.sin(shown), c,
-                                           Subproblem("law of cosines" if law else "a cos θ + b sin θ = c"),
+    c = _named(derivation, LETTERS[label], c)
+    derivation.steps.append(DerivationStep(a * sympy.cos(shown) + b * sympy.sin(shown), c, Subproblem(label),
                                            (variable,), first.equation.where))
-    derivation.signs.append((sigma, variable, "law" if law else "one"))
+    derivation.signs.append((sigma, variable, "law" if single else "one"))
     root = sp.existence(a, b, c)
     if root is not None:
         derivation.conditions.append(Exists(root, unknown=said))
@@ -119,24 +119,38 @@ def by_one_equation(candidates, derivation, constants, memos, witness=None) -> s
     return sp.one_equation(a, b, c, sigma, shape)
 
 
+def _label(a, b, distance: bool) -> str:
+    """The sub-problem of a cos θ + b sin θ = c: the law of cosines only where a squared distance
+    (a triangle of the arm's lengths) leaves one of cos θ, sin θ; elsewhere, as in an element of a
+    rotation (the PUMA's c5) or a projection (the UR5's θ5), a cosine or sine set equal to a known."""
+    if a != 0 and b != 0:
+        return "a cos θ + b sin θ = c"
+    if distance:
+        return "law of cosines"
+    return "a cos θ = c" if b == 0 else "a sin θ = c"
+
+
+# The name of a long known side: Spong's D for the law of cosines, Craig's K for a cos θ + b sin θ = c,
+# C (the c of a cos θ = c) from an element or a projection: D is the law of cosines' alone.
+LETTERS = {"law of cosines": "D", "a cos θ + b sin θ = c": "K", "a cos θ = c": "C", "a sin θ = c": "C"}
+
+
 def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
-    """A long right-hand side gets a name, as a book names D and K; short ones stay as they are."""
+    """A long right-hand side gets a name, as a book names D and K; short ones stay as they are.
+    A second of one letter is primed, D′ (a D2 would read as D squared in 1 − D2²)."""
     if value.is_Symbol or value.is_number or length(value) <= 2:
         return value
-    taken = {str(name) for name, _ in derivation.assignments}
-    name = next(n for n in (fresh(n, derivation.reserved) for n in [letter] + [f"{letter}_{k}" for k in range(2, 99)])
-                if n not in taken)
+    name = fresh(letter, derivation.reserved | {str(name) for name, _ in derivation.assignments})
     symbol = sympy.Symbol(name, real=True)
     derivation.assignments.append((symbol, value))
     return symbol
 
 
-def _double_root(a, b, c, law, variable, where, derivation) -> sympy.Expr:
+def _double_root(a, b, c, label, variable, where, derivation) -> sympy.Expr:
     """The one root where a² + b² = c² at every pose of the arm (see subproblems.double_root)."""
-    c = _named(derivation, "D" if law else "K", c)
+    c = _named(derivation, LETTERS[label], c)
     derivation.steps.append(DerivationStep(a * sympy.cos(variable) + b * sympy.sin(variable), c,
-                                           Subproblem("law of cosines" if law else "a cos θ + b sin θ = c",
-                                                      double_root=True),
+                                           Subproblem(label, double_root=True),
                                            (variable,), (*where, "; a² + b² = c² at every pose of the arm")))
     return sp.double_root(a, b, c)
 

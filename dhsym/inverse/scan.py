@@ -10,7 +10,6 @@ The number of rounds is the number of unknowns, and each looks at a fixed pool o
 work is bounded before it starts. Two roots are told apart by a sign symbol σ = ±1; one
 derivation serves every branch.
 
->>> import sympy
 >>> x, t = sympy.symbols("x theta_1", real=True)
 >>> from dhsym.inverse.equations import Equation
 >>> found = scan([Equation(x, sympy.cos(t), "position", "x")], [t], set())
@@ -19,7 +18,10 @@ derivation serves every branch.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
+
+import sympy
 
 from ..errors import NoClosedForm
 from . import algebra
@@ -75,7 +77,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
         if angle == variable:
             derivation.assignments.append((variable, value))
         else:
-            phi = fresh_symbol(f"phi_{len(derivation.angles) + 1}", derivation.reserved)
+            phi = fresh_symbol(angle_name(angle, len(derivation.angles) + 1), derivation.reserved)
             derivation.angles[phi] = angle
             derivation.assignments.append((phi, value))
             witness[phi] = number_at(angle, witness)
@@ -94,3 +96,20 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                 derivation.assignments.append(item)
                 pending.remove(item)
     return derivation
+
+
+def angle_name(angle, number: int) -> str:
+    """The name of a sum of joint angles as a book writes it, θ23 for θ2 + θ3 (Craig's, Spong's),
+    where every term is a joint angle numbered 1..9 with one letter; else φk (k = `number`).
+
+    >>> t1, t2, t3, t5 = sympy.symbols("theta_1 theta_2 theta_3 theta_5", real=True)
+    >>> angle_name(t2 + t3, 1), angle_name(t1 + t2 + t3, 1), angle_name(t5 + 1, 2), angle_name(t2 - t3, 1)
+    ('theta_23', 'theta_123', 'phi_2', 'phi_1')
+    """
+    terms = [_JOINT.fullmatch(term.name) if term.is_Symbol else None for term in sympy.Add.make_args(angle)]
+    if len(terms) > 1 and all(terms) and len({m.group(1) for m in terms}) == 1:
+        return f"{terms[0].group(1)}_{''.join(sorted(m.group(2) for m in terms))}"
+    return f"phi_{number}"
+
+
+_JOINT = re.compile(r"([a-z]+)_([1-9])")

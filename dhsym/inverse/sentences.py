@@ -203,6 +203,7 @@ class Subproblem:
     double_root: bool = False
 
 
-NAMES = ("a cos θ + b sin θ = c", "law of cosines", "atan2 of a pair", "sum of parallel-axis angles",
+NAMES = ("a cos θ + b sin θ = c", "law of cosines", "a cos θ = c", "a sin θ = c", "atan2 of a pair",
+         "sum of parallel-axis angles",
          "prismatic joint from a coordinate", "prismatic joint from a distance", "Pieper's distance",
          "Pieper's height", "Ferrari's quartic")

@@ -326,6 +326,28 @@ def named_angles(solution) -> tuple:
     return tuple(dict.fromkeys(name for name, _ in pairs if name not in joints and name in inside))
 
 
+def angle_meanings(solution) -> tuple:
+    """(name, the joint angles it stands for) of each angle a branch solves as one and writes a
+    joint through (θ2 = θ23 − θ3 gives θ23 = θ2 + θ3; Spong's SCARA: θ4 = θ1 + θ2 − φ1 gives
+    φ1 = θ1 + θ2 − θ4): the text defines every name it uses.
+
+    >>> import dhsym
+    >>> from dhsym.inverse import solve
+    >>> angle_meanings(solve(dhsym.load("puma560").chain))
+    ((theta_23, theta_2 + theta_3),)
+    """
+    joints = set(solution.joint_variables)
+    meanings: dict = {}
+    for branch in solution.branches:
+        names = {name for name, _ in (*solution.definitions, *branch.assignments) if name not in joints}
+        for joint, value in branch.assignments:
+            for name in sorted(names & value.free_symbols - set(meanings), key=str) if joint in joints else ():
+                slope = sympy.diff(value, name)
+                if slope in (1, -1):  # linear in the name: the joint is the name minus the other angles
+                    meanings[name] = sympy.expand((joint - (value - slope * name)) / slope)
+    return tuple(meanings.items())
+
+
 def target_title(chain: Chain, numbering: Numbering = PLAIN, style: str = "unicode") -> str:
     """⁰T₆: the transform `dhsym fk` prints by default, from base (else 0) to tool (else n), as numbered."""
     return render.transform_title(numbering.frame(chain.first_frame), numbering.frame(chain.last_frame), style)

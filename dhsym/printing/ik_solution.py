@@ -20,6 +20,7 @@ from . import render
 from .ik import (
     IKExactPrinter,
     IKTextPrinter,
+    angle_meanings,
     ik_settings,
     solution_printer,
     target_name,
@@ -60,6 +61,10 @@ def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str
         if lines:
             blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + printer.sentence(line), width, "    ")
                                                       for line in lines))
+    meanings = angle_meanings(solution)
+    if meanings:
+        said = ", ".join(f"{printer.doprint(name)} = {printer.doprint(value)}" for name, value in meanings)
+        blocks.append(wrap_sentence(f"Angles solved as one: {said}", width, "  "))
     atan2 = [render.wrap(ATAN2_LEGEND["unicode"], width, "  ")] if uses_atan2(solution) else []
     legend = "\n".join(filter(None, [render.text_legend(printer, width), *atan2]))
     text = "\n\n".join(blocks + ([legend] if legend else []))
