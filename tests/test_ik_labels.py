@@ -19,7 +19,7 @@ def _labels(robot: str) -> dict:
     status, out, err = run_dhsym("ik", robot, "--format", "latex")
     assert status == 0, err
     labels: dict = {}
-    for label, joint in re.findall(r"% Step \d+ \((.*?)\), for \$(.*?)\$", out):
+    for label, joint in re.findall(r"Step \d+ \((.*?)\), for \$(.*?)\$", out):
         labels.setdefault(joint, []).append(label)
     return labels
 
