@@ -28,6 +28,7 @@ import time
 from pathlib import Path
 
 import numpy
+from peer_venv import peer_python
 
 import dhsym
 from dhsym.api.ik import numeric_inverse_kinematics
@@ -91,20 +92,7 @@ def eaik_python(install: bool):
         return Path(sys.executable), ""
     except ImportError:
         pass
-    python = PEER_VENV / "bin" / "python"
-    if (PEER_VENV / ".ready").exists():
-        return python, ""
-    if not install:
-        return None, "not installed (run without --no-install to install it into build/peers/eaik)"
-    print(f"installing {PEER_PACKAGE} into {PEER_VENV.relative_to(ROOT)} (once) ...", flush=True)
-    try:
-        subprocess.run([sys.executable, "-m", "venv", "--clear", str(PEER_VENV)], check=True, capture_output=True)
-        subprocess.run([str(python), "-m", "pip", "install", "-q", "--disable-pip-version-check", PEER_PACKAGE],
-                       check=True, capture_output=True, timeout=1800)
-    except (subprocess.SubprocessError, OSError) as error:
-        return None, f"could not be installed: {error}"
-    (PEER_VENV / ".ready").touch()
-    return python, ""
+    return peer_python(PEER_VENV, PEER_PACKAGE, install)
 
 
 def eaik_batch(python, arm, poses):

@@ -29,6 +29,7 @@ import time
 from pathlib import Path
 
 import sympy
+from peer_venv import peer_python
 from sympy.core.cache import clear_cache
 
 import dhsym
@@ -120,27 +121,6 @@ def sympy_same_steps() -> tuple[float, float]:
     return time.process_time() - start, first_part
 
 
-def peer_python(install: bool) -> tuple[Path | None, str]:
-    """The peer venv's python, installing it when allowed; or None and the reason."""
-    python = PEER_VENV / "bin" / "python"
-    ready = PEER_VENV / ".ready"
-    if ready.exists():
-        return python, ""
-    if not install:
-        return None, "not installed (run without --no-install to install it into build/peers/rtb)"
-    print(f"installing {PEER_PACKAGE} into {PEER_VENV.relative_to(ROOT)} (once) ...", flush=True)
-    try:
-        subprocess.run([sys.executable, "-m", "venv", "--clear", str(PEER_VENV)], check=True, capture_output=True)
-        subprocess.run([str(python), "-m", "pip", "install", "-q", "--disable-pip-version-check", PEER_PACKAGE],
-                       check=True, capture_output=True, timeout=1800)
-    except (subprocess.SubprocessError, OSError) as error:
-        reason = getattr(error, "stderr", b"") or b""
-        last = reason.decode(errors="replace").strip().splitlines()[-1:] or [str(error)]
-        return None, f"could not be installed: {last[0]}"
-    ready.touch()
-    return python, ""
-
-
 def rtb_puma(python: Path, runs: int = RUNS) -> tuple[float | None, str]:
     """The least CPU time of `runs` derivations, each in a fresh process of the peer's venv."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
@@ -161,7 +141,7 @@ def main() -> None:
     install = "--no-install" not in sys.argv[1:]
     ours = dhsym_puma()
     print(f"dhsym, PUMA 560 derivation: {ours:.2f} s of CPU (least of {RUNS} cold runs)")
-    python, reason = peer_python(install)
+    python, reason = peer_python(PEER_VENV, PEER_PACKAGE, install)
     if python is not None:
         theirs, reason = rtb_puma(python)
     if python is not None and theirs is not None:
