@@ -4,10 +4,12 @@ geometry the word says (shoulder left/right, front/back, elbow up/down, lefty/ri
 forward/back, wrist flipped or not), computed here from the axes, never by dhsym's naming code."""
 import importlib.metadata
 import importlib.util
+import re
 
 import numpy as np
 import pytest
 import sympy
+from cli_runner import run_dhsym
 from ik_checks import random_joints, sample_constants
 from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
 
@@ -220,3 +222,16 @@ def test_an_imported_irb140_with_its_shoulder_offset_has_every_word(convention):
 
     chain = import_urdf(IRB140, None, "tool0", convention).robot
     _check("irb140", chain, chain.ik(), np.random.default_rng(140))
+
+
+@pytest.mark.parametrize("name", ["stanford", "cylindrical_rpp", "cylindrical_wrist", "rps_leg"])
+def test_a_slide_that_runs_backwards_is_said_and_its_branches_come_last(name):
+    # Stanford's 8 branches are 4 physical ones: the other 4 put d3 < 0. The method line says so
+    # (measured, not assumed: the slide's variable has the word's sign at every pose measured),
+    # and the branches a real arm can take are listed first.
+    out = run_dhsym("ik", name, "--width", "200").ok()
+    names = re.findall(r"^Branch \d+: (.*)$", out, re.MULTILINE)
+    half = len(names) // 2
+    assert len(names) >= 2
+    assert all("slide forward" in n for n in names[:half]) and all("slide back" in n for n in names[half:])
+    assert "where the slide runs backwards (its joint variable < 0" in out

@@ -10,14 +10,10 @@ says when it refuses a closed form: the numeric command that answers instead.
 from __future__ import annotations
 
 import json
-import re
 
 from ..errors import UserError
-from ..io.expr import parse_expression
+from .assignments import parse_assignments, target_elements
 from .messages import warn
-from .plot import parse_assignments
-
-_ELEMENT = re.compile(r"\s*(r[123][123]|p[xyz])\s*=(.*)\Z", re.DOTALL)
 
 
 def add_arguments(sub) -> None:
@@ -53,7 +49,7 @@ def run(robot, args, refusal: str = "") -> str:
     inverse = numeric_inverse_kinematics(robot, args.free, parse_assignments(robot, args.constants, "--set"))
     if args.format == "python":
         return inverse.code(command=command(args, numeric=not refusal))
-    found = answer(inverse, parse_assignments(robot, args.joints, "--q"), pose_elements(args.pose))
+    found = answer(inverse, parse_assignments(robot, args.joints, "--q"), target_elements(args.pose, "--pose"))
     if args.format == "json":
         from ..printing.ik_numeric import numeric_json
 
@@ -83,28 +79,6 @@ def command(args, numeric: bool) -> str:
     free = f" --free {' '.join(args.free)}" if args.free else ""
     suffix = (" --numeric" if numeric else "") + (" --format python" if args.format == "python" else "")
     return f"dhsym ik {args.robot}{free}{suffix}"
-
-
-def pose_elements(text) -> dict:
-    """`--pose "px=0.5, pz=0.3"`: target elements (r11 … r33, px, py, pz) to numbers.
-
-    >>> pose_elements("px = 0.5, r33=1")
-    {'px': 1/2, 'r33': 1}
-    """
-    values = {}
-    for part in filter(str.strip, (text or "").split(",")):
-        match = _ELEMENT.match(part)
-        if not match:
-            raise UserError(f"--pose {part.strip()!r}: expected ELEMENT=NUMBER, the element one of r11 … r33, px, "
-                            "py, pz")
-        try:
-            value = parse_expression(match.group(2))
-        except UserError as error:
-            raise UserError(f"--pose {part.strip()!r}: {error.message}") from None
-        if value.free_symbols or not value.is_real:
-            raise UserError(f"--pose {part.strip()!r}: the value must be a number")
-        values[match.group(1)] = value
-    return values
 
 
 def _numeric_hint(robot, args) -> str:

@@ -4,16 +4,13 @@
 """
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 from ..api.robot import notebook_robot
 from ..core.robot import Robot
 from ..errors import UserError
-from ..io.expr import parse_expression
+from .assignments import parse_assignments, target_elements
 from .options import robot_options
-
-_ASSIGNMENT = re.compile(r"\s*([^\W\d]\w*)\s*=(.*)\Z", re.DOTALL)
 
 
 def add_parsers(commands) -> None:
@@ -69,65 +66,9 @@ def _branches(robot: Robot, args, values, path) -> str:
     figure = Figure()
     FigureCanvasAgg(figure)
     constants = parse_assignments(robot, args.constants, "--set")
-    draw_branches(notebook_robot(robot), values, parse_target(args.ik), constants, args.free, figure=figure,
+    draw_branches(notebook_robot(robot), values, target_elements(args.ik, "--ik"), constants, args.free, figure=figure,
                   show_frames=not args.no_frames)
     save(figure, path, inputs=[robot.path])
     return str(path)
 
 
-def parse_target(text: str) -> dict:
-    """`--ik "px=0.5, py=0.2"`: elements of the target (r11 … pz) to numbers.
-
-    >>> parse_target("px = 0.5, py=1/5")
-    {'px': 1/2, 'py': 1/5}
-    """
-    from ..inverse.solution import TARGET_NAMES
-
-    values = {}
-    for part in filter(str.strip, text.split(",")):
-        match = _ASSIGNMENT.match(part)
-        if not match or match.group(1) not in TARGET_NAMES:
-            raise UserError(f"--ik {part.strip()!r}: expected ELEMENT=NUMBER, the element one of "
-                            f"{', '.join(TARGET_NAMES)}")
-        try:
-            value = parse_expression(match.group(2))
-        except UserError as error:
-            raise UserError(f"--ik {part.strip()!r}: {error.message}") from None
-        if value.free_symbols or not value.is_real:
-            raise UserError(f"--ik {part.strip()!r}: the value must be a number")
-        values[match.group(1)] = value
-    return values
-
-
-def parse_assignments(robot: Robot, texts, option: str) -> dict:
-    """`NAME=EXPR` texts to {name: exact value}; --q takes joint variables, --set constants.
-
-    >>> from dhsym.io.library import load
-    >>> parse_assignments(load("planar2r"), ["theta_1=30deg"], "--q")
-    {'theta_1': pi/6}
-    """
-    symbols = sorted(s.name for s in robot.chain.symbols)
-    variables = {v.name for v in robot.chain.joint_variables}
-    values = {}
-    for text in texts:
-        match = _ASSIGNMENT.match(text)
-        if not match:
-            raise UserError(f"{option} {text!r}: expected NAME=EXPR, e.g. {option} "
-                            f"{'theta_1=30deg' if option == '--q' else 'l_1=0.5'}")
-        name, expression = match.group(1), match.group(2)
-        if name not in symbols:
-            raise UserError(f"{option} {text!r}: {robot.name} has no symbol {name}; its symbols are "
-                            f"{', '.join(symbols)}")
-        wanted = option == "--q"
-        if (name in variables) != wanted:
-            kind = "a joint variable; use --q" if name in variables else "a constant; use --set"
-            raise UserError(f"{option} {text!r}: {name} is {kind}")
-        try:
-            value = parse_expression(expression)
-        except UserError as error:
-            raise UserError(f"{option} {text!r}: {error.message}") from None
-        if value.free_symbols:
-            raise UserError(f"{option} {text!r}: the value must be a number, not an expression in "
-                            f"{', '.join(sorted(map(str, value.free_symbols)))}")
-        values[name] = value
-    return values

@@ -87,12 +87,37 @@ def checked_names(solution):
         texts = _names(parts, chosen, symbols)
     meanings = []
     for k, choice in enumerate(chosen):
-        meaning = arm.meaning(choice[0], joints[k]) if choice else Meaning("root")
+        key = choice[0] if choice else "root"
+        if key == "slide" and _runs_backwards_behind(measured, choice[1], k):
+            key = "slide_signed"
+        meaning = arm.meaning(key, joints[k]) if choice else Meaning("root")
         if meaning not in meanings:
             meanings.append(meaning)
-    branches = tuple(Branch(text, branch.assignments) for text, branch in zip(texts, solution.branches))
+    branches = [Branch(text, branch.assignments) for text, branch in zip(texts, solution.branches)]
+    branches = tuple(_forward_first(branches, chosen))
     said = replace(solution.method, words=tuple(meanings)) if isinstance(solution.method, Method) else solution.method
     return replace(solution, branches=branches, method=said)
+
+
+def _runs_backwards_behind(measured, words, k) -> bool:
+    """Whether the slide's joint variable is positive on every forward branch and negative on every
+    back one, at every pose measured: then "back" means the slide runs backwards (Stanford's d3 < 0),
+    which an arm whose slide only extends cannot do."""
+    for values, word in zip(measured, words):
+        seen = [at[("variable", k)] for at in values if at.get(("variable", k)) is not None]
+        if not seen or any((v > TOLERANCE) != (word == 0) or abs(v) <= TOLERANCE for v in seen):
+            return False
+    return True
+
+
+def _forward_first(branches, chosen) -> list:
+    """The branches in order, those with a slide's "forward" before their "back" twins (a stable
+    sort), so that an arm's physical branches come first; other words keep the solver's order."""
+    for choice in chosen:
+        if choice and choice[0] == "slide":
+            order = sorted(range(len(branches)), key=lambda number: choice[1][number])
+            return [branches[number] for number in order]
+    return branches
 
 
 def _names(parts, chosen, symbols) -> list[str]:
@@ -155,6 +180,8 @@ def _measured(solution, arm, parts, joints) -> list:
     rng = random.Random(16)
     measured: list = [[] for _ in solution.branches]
     keys = [(key, k) for k, (role, _) in enumerate(parts[0]) if joints[k] for key in _candidates(role)]
+    slides = {k: chain.joint_variables[axes[0] - 1] for k, joint in enumerate(joints)
+              if joint and "slide" in _candidates(parts[0][k][0]) and (axes := arm.slide_axes(arm.sample, joint))}
     for _ in range(POSES):
         values = random_pose(chain, rng, solution.sample)
         rotation, origin = poses(chain, values)[chain.last_frame]
@@ -164,7 +191,9 @@ def _measured(solution, arm, parts, joints) -> list:
             if found is None:
                 continue
             frames = poses(chain, {**values, **zero, **{v: found[v] for v in needed}})
-            measured[number].append({(key, k): MEASURES[key].measure(arm, frames, joints[k]) for key, k in keys})
+            at = {(key, k): MEASURES[key].measure(arm, frames, joints[k]) for key, k in keys}
+            at |= {("variable", k): found.get(variable) for k, variable in slides.items()}
+            measured[number].append(at)
     return measured
 
 

@@ -26,6 +26,9 @@ DEFINITIONS = {
              "{planar_wrist}",
     "slide": "slide forward/back: along the slide (axis {slide}), the {slide_wrist} on the side of its crossing with "
              "axis {slide_from} that the axis points to, or behind",
+    "slide_signed": "slide forward/back: along the slide (axis {slide}), the {slide_wrist} on the side of its crossing "
+                    "with axis {slide_from} that the axis points to, or behind, where the slide runs backwards (its "
+                    "joint variable < 0: an arm whose slide only extends has the forward branches only)",
     "flip": "wrist not flipped/flipped: seen from the tip of axis {b}'s direction u{b}, axis {c} is turned from "
             "axis {a} counter-clockwise/clockwise (u{a} × u{c} along +u{b}/−u{b})",
 }
