@@ -207,6 +207,9 @@ def test_one_frame_by_its_printed_name_and_an_unknown_frame_is_a_user_error():
 def test_branches_drawn_with_the_last_frames():
     from dhsym.plot.branches import draw_branches
 
-    figure = draw_branches(load("planar2r"), values={"theta_2": "60deg"}, show_frames=[2], figure=Figure())
+    arm = load("planar2r")
+    figure = draw_branches(arm, values={"theta_2": "60deg"}, show_frames=[2], figure=Figure(), triad_scale=0.2)
     for ax in figure.axes:
         assert sorted(filter(None, (t.get_text() for t in ax.texts))) == ["$x_{2}$", "$y_{2}$"]
+        x2 = next(a for a in ax.get_children() if a.get_gid() == "x axis of frame 2")
+        assert np.isclose(np.linalg.norm(np.subtract(x2.xy, x2.xyann)), 0.2)
