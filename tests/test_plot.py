@@ -169,3 +169,47 @@ def test_frame_offset_renumbers_the_picture_only():
     positions = [[t.get_position() for t in sorted(ax.texts, key=lambda t: t.get_text()[1:])]
                  for ax in (renumbered, plain)]
     assert positions[0] == positions[1]  # the same picture, only the names differ
+
+
+def _tips(ax) -> dict:
+    """Each drawn axis label and the 3D point it names (the tip of its arrow)."""
+    return {t.get_text(): np.array(t.get_position_3d()) for t in ax.texts if t.get_text()}
+
+
+def test_chosen_frames_alone_show_the_wrist_flipped_twin():
+    # The PUMA's wrist-flipped twin (θ4 + π, −θ5, θ6 + π) has the same links and reaches the same
+    # frame 6; drawn with frames 5 and 6 only, frame 6 is the same and frame 5's x and z are not.
+    puma = load("puma560")
+    q = {"theta_1": 0.3, "theta_2": -0.5, "theta_3": 0.6, "theta_4": 0.5, "theta_5": 0.7, "theta_6": 0.2}
+    twin = dict(q, theta_4=0.5 + np.pi, theta_5=-0.7, theta_6=0.2 + np.pi)
+    pictures = [plot.draw(puma, values, ax=Figure(), show_frames=[5, 6]) for values in (q, twin)]
+    for ax in pictures:
+        axes = {a.get_gid() for a in ax.get_children() if " axis of frame " in (a.get_gid() or "")}
+        assert axes == {f"{letter} axis of frame {frame}" for letter in "xyz" for frame in (5, 6)}
+    links = [next(line for line in ax.lines if line.get_gid() == "links").get_data_3d() for ax in pictures]
+    assert np.allclose(links[0], links[1])
+    tips = [_tips(ax) for ax in pictures]
+    assert sorted(tips[0]) == sorted(tips[1]) == ["$x_{5}$", "$x_{6}$", "$y_{5}$", "$y_{6}$", "$z_{5}$", "$z_{6}$"]
+    assert all(np.allclose(tips[0][name], tips[1][name]) for name in ("$x_{6}$", "$y_{6}$", "$z_{6}$"))
+    assert not np.allclose(tips[0]["$x_{5}$"], tips[1]["$x_{5}$"])
+    assert not np.allclose(tips[0]["$z_{5}$"], tips[1]["$z_{5}$"])
+
+
+def test_one_frame_by_its_printed_name_and_an_unknown_frame_is_a_user_error():
+    wrist = load("spherical_wrist")  # first_frame: 3, frames printed 3..6
+    ax = plot.draw(wrist, ax=Figure(), show_frames=6)
+    assert sorted(_tips(ax)) == ["$x_{6}$", "$y_{6}$", "$z_{6}$"]
+    with pytest.raises(UserError, match="no frame 2 to draw; the frames are 3, 4, 5, 6"):
+        plot.draw(wrist, ax=Figure(), show_frames=[2])
+    assert not _tips(plot.draw(wrist, ax=Figure(), show_frames=[]))
+
+
+def test_branches_drawn_with_the_last_frames():
+    from dhsym.plot.branches import draw_branches
+
+    arm = load("planar2r")
+    figure = draw_branches(arm, values={"theta_2": "60deg"}, show_frames=[2], figure=Figure(), triad_scale=0.2)
+    for ax in figure.axes:
+        assert sorted(filter(None, (t.get_text() for t in ax.texts))) == ["$x_{2}$", "$y_{2}$"]
+        x2 = next(a for a in ax.get_children() if a.get_gid() == "x axis of frame 2")
+        assert np.isclose(np.linalg.norm(np.subtract(x2.xy, x2.xyann)), 0.2)

@@ -67,7 +67,7 @@ def branch_values(robot, pose, constants=None, free=(), values=None, solution=No
 
 
 def draw_branches(robot, values=None, target=None, constants=None, free=(), figure=None, show_frames=False,
-                  solution=None):
+                  solution=None, triad_scale=None):
     """A figure with one picture per branch of the inverse kinematics (`solution`, else solved with
     `free` kept as parameters) at the pose of `values` (with `target`'s elements replaced), side by
     side; returns the Figure. The pose's origin is marked on every picture."""
@@ -93,7 +93,7 @@ def draw_branches(robot, values=None, target=None, constants=None, free=(), figu
             ax.set_axis_off()
             continue
         shown = {**(constants or {}), **dict(zip(variables, joints[k]))}
-        _picture(ax, robot, shown, title + "\n" + _joint_values(robot.chain, joints[k]), show_frames)
+        _picture(ax, robot, shown, title + "\n" + _joint_values(robot.chain, joints[k]), show_frames, triad_scale)
         ax.scatter(*(pose[:2, 3] if planar else pose[:3, 3]), marker="*", s=140, color=TARGET_COLOUR, zorder=5)
         drawn.append(ax)
     _same_limits(drawn, planar)
@@ -102,10 +102,10 @@ def draw_branches(robot, values=None, target=None, constants=None, free=(), figu
     return figure
 
 
-def _picture(ax, robot, values: dict, title: str, show_frames: bool) -> None:
+def _picture(ax, robot, values: dict, title: str, show_frames, triad_scale) -> None:
     """One branch's picture: the arm at `values`, no legend (the joint symbols need no key on
     every picture, and it would cover the next)."""
-    draw(robot, values, ax=ax, show_frames=show_frames, title=title)
+    draw(robot, values, ax=ax, show_frames=show_frames, title=title, triad_scale=triad_scale)
     ax.title.set_fontsize(9)
     if ax.get_legend():
         ax.get_legend().remove()

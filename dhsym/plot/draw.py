@@ -45,14 +45,18 @@ def draw(robot: Robot, values=None, ax=None, planar=None, show_frames=True, tria
 
     `ax` is an Axes to draw into (a 2D Axes gives the view from above), a Figure to add one
     to, or None for a new pyplot figure. `planar` None decides from the numbers; False forces
-    3D. `frame_offset` renumbers the frames in the picture: a wrist that a lecture numbers
-    3..6 is drawn with frame_offset=3 (default: the robot's own numbering, from its file's
-    `first_frame`). Returns the Axes.
+    3D. `show_frames`: True (every frame's triad), False (none), or the frames to draw, as
+    printed (`[6]`, `["tool"]`, `[4, 5, 6]`: the tool frame alone shows the pose reached, the
+    wrist's frames show how the wrist turns). `frame_offset` renumbers the frames in the
+    picture: a wrist that a lecture numbers 3..6 is drawn with frame_offset=3 (default: the
+    robot's own numbering, from its file's `first_frame`). Returns the Axes.
 
     >>> from dhsym.io.library import load
     >>> from matplotlib.figure import Figure
     >>> draw(load("planar3r"), {"theta_2": "30deg"}, ax=Figure()).name
     'rectilinear'
+    >>> sorted(filter(None, (t.get_text() for t in draw(load("planar2r"), ax=Figure(), show_frames=[2]).texts)))
+    ['$x_{2}$', '$y_{2}$']
     """
     if title is None and robot.name:
         title = robot.name + "\n" + _joint_line(robot, values)
@@ -67,9 +71,10 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
     Each item is (robot, values, colour, label); colour and label may be left off or None.
     Every chain starts in the same world frame; its base steps place it. Where the last frames
     of two chains meet (the cut joint) a joint is drawn. With several chains, frame labels
-    carry the first letter of the chain's label (x_L1, x_R1).
+    carry the first letter of the chain's label (x_L1, x_R1). `show_frames` as for `draw`.
     """
     items = [_item(item, k) for k, item in enumerate(chains_with_values)]
+    show_frames = _frames_asked(show_frames, items, frame_offset)
     if not items:
         raise UserError("nothing to draw")
     skeletons = [skeleton(robot.chain, resolve_values(robot, values)) for robot, values, _, _ in items]
@@ -90,7 +95,8 @@ def draw_closed(chains_with_values, ax=None, planar=None, show_frames=True, tria
                                                 strict=True):
             numbering = robot.numbering if frame_offset is None else Numbering(frame_offset)
             for frame, pose in picture.poses:
-                triads.add(prefix + _frame_name(numbering.frame(frame)), pose)
+                if _wanted(numbering.frame(frame), show_frames):
+                    triads.add(prefix + _frame_name(numbering.frame(frame)), pose)
         arrows = triads.draw(ax, flat)
     _set_limits(ax, np.vstack([points] + [[a.origin, a.tip] for a in arrows]), flat, size, skeletons)
     if title:
@@ -207,6 +213,28 @@ def _draw_joints(ax, joints: list, colour: str, flat: bool, extent: float) -> No
         drawn.append(point)
         ax.plot(*_coordinates([point], flat), marker="o" if kind == "R" else "s", ms=12 + 7 * inside,
                 mfc="white", mec=colour, mew=2, ls="none", zorder=3 - 0.1 * inside, gid=f"{kind} joint")
+
+
+def _frames_asked(show_frames, items, frame_offset):
+    """True, False, or the printed frames to draw (one name alone is a list of one), each checked."""
+    if isinstance(show_frames, bool):
+        return show_frames
+    asked = [show_frames] if isinstance(show_frames, (str, int)) else list(show_frames)
+    printed = []
+    for robot, *_ in items:
+        numbering = robot.numbering if frame_offset is None else Numbering(frame_offset)
+        printed += [str(f) for f in numbering.frames(robot.chain) if str(f) not in printed]
+    for frame in asked:
+        if str(frame) not in printed:
+            raise UserError(f"no frame {frame} to draw; the frames are {', '.join(printed)}")
+    return asked
+
+
+def _wanted(printed, show_frames) -> bool:
+    """Whether the frame printed as `printed` gets a triad: `show_frames` is True or lists it."""
+    if show_frames is True:
+        return True
+    return any(str(printed) == str(frame) for frame in show_frames)
 
 
 def _frame_name(printed) -> str:
