@@ -341,6 +341,7 @@ def angle_meanings(solution) -> tuple:
     for branch in solution.branches:
         names = {name for name, _ in (*solution.definitions, *branch.assignments) if name not in joints}
         for joint, value in branch.assignments:
+            value = sympy.sympify(value)  # a solution written by hand may assign a plain 0
             for name in sorted(names & value.free_symbols - set(meanings), key=str) if joint in joints else ():
                 slope = sympy.diff(value, name)
                 if slope in (1, -1):  # linear in the name: the joint is the name minus the other angles
