@@ -137,7 +137,7 @@ def _label(a, b, distance: bool) -> str:
 LETTERS = {"law of cosines": "D", "a cos θ + b sin θ = c": "K", "a cos θ = c": "C", "a sin θ = c": "C"}
 # a cos θ + b sin θ = c from a point's coordinate: the point's offset from a plane, Spong's d of the
 # shoulder offset (the iiwa with θ3 free: yc c1 − xc s1 = d); from a rotation element, C as above.
-OFFSET_LETTERS = {"position": "d", "orientation": "C"}
+OFFSET_LETTERS = {"position": "d", "mixed": "d", "orientation": "C"}  # mixed: an inner frame's position
 
 
 def letter(label: str, equation) -> str:

@@ -96,9 +96,10 @@ def _family(members) -> Family | None:
 
     for position, first in enumerate(members[0][2]):
         rows = [branch_rows[position] for _, _, branch_rows in members]
-        pair = symbol(first[0], tuple(_oriented(row)[1] for row in rows))
-        if pair is not None:  # each branch's row in the orientation that prints alike
-            rows = [row if _oriented(row)[1] == "+" else (row[0], *row[3], None) for row in rows]
+        turned = [_oriented(row)[1] != _oriented(rows[0])[1] for row in rows]  # the pair's sign against branch 1's
+        pair = symbol(first[0], tuple("-" if turn else "+" for turn in turned))
+        if pair is not None:  # each branch's row in the orientation of branch 1's, which prints alike
+            rows = [(row[0], *row[3], None) if turn else row for row, turn in zip(rows, turned, strict=True)]
         signs = [[_sign(match) for match in _ROOT.finditer(row[1])] for row in rows]
         symbols = [symbol(first[0], tuple(branch[slot] for branch in signs)) for slot in range(len(signs[0]))]
         family.rows.append(_written(rows[0], symbols, pair))
