@@ -157,5 +157,6 @@ def test_compiled_slides_show_the_branches_once_with_their_sign_table(tmp_path, 
     assert len([title for title in titles if title.startswith("Branches")]) == frames
     assert _lone_equations(tex) == []
     if name == "puma560":
-        assert "u4 × u6 along +u5/−u5" in words and "Angles solved as one: θ23 = θ2 + θ3." in words
+        tight = words.replace(" ", "")  # pdftotext spaces out subscripts
+        assert "(u4×u6along+u5/−u5)" in tight and "Anglessolvedasone:θ23=θ2+θ3." in tight
         assert len(titles) == 9  # problem 2, derivation 3, branches 2, existence and legend 2
