@@ -122,6 +122,8 @@ def test_the_angles_solved_as_one_are_in_the_json_and_the_latex():
     assert said in _slides("planar3r")
     assert said in run_dhsym("ik", "planar3r", "--format", "latex").ok()
     assert "Angles solved as one: θ123 = θ1 + θ2 + θ3" in " ".join(run_dhsym("ik", "planar3r").ok().split())
+    slides = json.loads(run_dhsym("ik", "cylindrical_wrist", "--format", "json").ok())  # d2 = zc − d1: no angle
+    assert slides["angles_solved_as_one"] == [] and "solved as one" not in run_dhsym("ik", "cylindrical_wrist").ok()
 
 
 @pytest.mark.slow
