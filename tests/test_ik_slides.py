@@ -162,3 +162,9 @@ def test_compiled_slides_show_the_branches_once_with_their_sign_table(tmp_path, 
         tight = words.replace(" ", "")  # pdftotext spaces out subscripts
         assert "(u4×u6along+u5/−u5)" in tight and "Anglessolvedasone:θ23=θ2+θ3." in tight
         assert len(titles) == 9  # problem 2, derivation 3, branches 2, existence and legend 2
+
+
+def test_a_lone_branch_of_one_line_ends_the_frame_before_it():
+    tex = _slides("fourbar_right")  # one joint: one branch of one equation
+    assert _lone_equations(tex) == [] and not [title for title, _ in _ik_frames(tex) if title.startswith("Branch")]
+    assert "\\textbf{Branch 1: the only solution}\\par\n\\[" in dict(_ik_frames(tex))["Derivation"]

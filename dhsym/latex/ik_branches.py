@@ -171,19 +171,30 @@ def _numbers(numbers: list[int]) -> str:
 
 def merged(sections: list[Section], page: Page) -> list[Section]:
     """Slides: the intermediate quantities end the derivation's last frame where they fit it;
-    else, a single equation, they start the branches' (a frame of one equation says little)."""
+    else, a single equation, they start the branches' (a frame of one equation says little). A
+    lone branch of one line (a one-joint chain's) ends the frame before it, under its heading."""
     out: list[Section] = []
     for section in sections:
         before = out[-1] if out else None
+        lone_branch = section.title.startswith("Branch ") and _lines(section.items) == 1
         if before is not None and before.title == DEFINITIONS and section.title.startswith("Branch") and (
                 len(before.items[-1].columns[0]) == 1):
             out[-1] = Section(PART, section.title, before.items + section.items)
-        elif before is not None and section.title == DEFINITIONS and (
-                len(pack(before.items + section.items, page.height_pt)) == len(pack(before.items, page.height_pt))):
-            out[-1] = Section(PART, before.title, before.items + section.items)
+        elif before is not None and (section.title == DEFINITIONS or lone_branch):
+            items = ([heading(section.title, page)] if lone_branch else []) + section.items
+            if len(pack(before.items + items, page.height_pt)) == len(pack(before.items, page.height_pt)):
+                out[-1] = Section(PART, before.title, before.items + items)
+            else:
+                out.append(section)
         else:
             out.append(section)
     return out
+
+
+def _lines(items) -> int:
+    """The lines of aligned rows among `items`."""
+    return sum(len(element) for item in items if isinstance(item, Rows)
+               for column in item.columns for element in column)
 
 
 def heading(title: str, page: Page) -> Block:
