@@ -46,7 +46,8 @@ def check_json(text: str, chain) -> dict:
         assert set(data["joint_variables"]) - set(data["free"]) <= {name for name, _ in branch["assignments"]}
     assert all(isinstance(text, str) for text in data["conditions"] + data["degenerate"])
     assigned = {name for branch in data["solutions"] for name, _ in branch["assignments"]}
-    for name, joints in data["angles_solved_as_one"]:  # a name the branches assign, as a sum of joints
+    assigned |= {name for name, _ in data["definitions"]}
+    for name, joints in data["angles_solved_as_one"]:  # a name the solution assigns, as a sum of joints
         assert name in assigned and _names(joints) <= set(data["joint_variables"]), (name, joints)
     return data
 
