@@ -14,7 +14,7 @@ from dhsym.inverse.solve import free_variables
 from dhsym.printing.ik_sentences import PlainSentences
 
 JSON_KEYS = {"robot", "convention", "joint_variables", "free", "method", "target", "definitions", "solutions",
-             "conditions", "degenerate"}
+             "conditions", "degenerate", "angles_solved_as_one"}
 ALLOWED_FUNCTIONS = {sympy.atan2, sympy.sqrt, sympy.cos, sympy.sin, sympy.acos, sympy.asin, sympy.Abs, sympy.sign}
 
 
@@ -45,6 +45,10 @@ def check_json(text: str, chain) -> dict:
             seen.add(name)
         assert set(data["joint_variables"]) - set(data["free"]) <= {name for name, _ in branch["assignments"]}
     assert all(isinstance(text, str) for text in data["conditions"] + data["degenerate"])
+    assigned = {name for branch in data["solutions"] for name, _ in branch["assignments"]}
+    assigned |= {name for name, _ in data["definitions"]}
+    for name, joints in data["angles_solved_as_one"]:  # a name the solution assigns, as a sum of joints
+        assert name in assigned and _names(joints) <= set(data["joint_variables"]), (name, joints)
     return data
 
 

@@ -114,10 +114,11 @@ def test_json_is_untouched_by_the_text_forms():
 
 @pytest.mark.parametrize("name", ROBOTS)
 def test_every_builtin_latex_with_ik_compiles_and_fits(name, tmp_path):
-    argv = ["latex", name, "--ik", "--document", "article"] + (["--free", *FREE[name]] if name in FREE else [])
-    status, out, err = run_dhsym(*argv)
-    assert status == 0, err
-    assert _pdflatex(tmp_path, name, out) == (0, [])
+    for kind in ("article", "slides"):  # slides: the ± frames and their tables of signs too
+        argv = ["latex", name, "--ik", "--document", kind] + (["--free", *FREE[name]] if name in FREE else [])
+        status, out, err = run_dhsym(*argv)
+        assert status == 0, err
+        assert _pdflatex(tmp_path, f"{name}_{kind}", out) == (0, [])
     status, out, err = run_dhsym("ik", name, "--format", "latex", *(["--free", *FREE[name]] if name in FREE else []))
     assert status == 0, err
     assert _pdflatex(tmp_path, f"{name}_snippet", HOST.format(out)) == (0, [])

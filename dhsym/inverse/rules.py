@@ -102,12 +102,13 @@ def by_one_equation(candidates, derivation, constants, memos, witness=None) -> s
     single = (b == 0 or a == 0)  # cos θ = known (or sin θ): the law of cosines' form
     label = _label(a, b, first.equation.distance)
     if touches(first, False, witness):
-        return _double_root(a, b, c, label, variable, first.equation.where, derivation)
+        return _double_root(a, b, c, (label, letter(label, first.equation)), variable, first.equation.where,
+                            derivation)
     shape = "A"
     if not single and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
         a, b, c, shape = min(sp.book_variants(a, b, c, sigma),
                              key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
-    c = _named(derivation, LETTERS[label], c)
+    c = _named(derivation, letter(label, first.equation), c)
     derivation.steps.append(DerivationStep(a * sympy.cos(shown) + b * sympy.sin(shown), c, Subproblem(label),
                                            (variable,), first.equation.where))
     derivation.signs.append((sigma, variable, "law" if single else "one"))
@@ -130,9 +131,20 @@ def _label(a, b, distance: bool) -> str:
     return "a cos θ = c" if b == 0 else "a sin θ = c"
 
 
-# The name of a long known side: Spong's D for the law of cosines, Craig's K for a cos θ + b sin θ = c,
-# C (the c of a cos θ = c) from an element or a projection: D is the law of cosines' alone.
+# The name of a long known side: Spong's D for the law of cosines, Craig's K for a cos θ + b sin θ = c
+# from a squared distance (the PUMA's a3 c3 − d4 s3 = K), C (the c of a cos θ = c) from an element or a
+# projection: D is the law of cosines' alone, K Craig's alone.
 LETTERS = {"law of cosines": "D", "a cos θ + b sin θ = c": "K", "a cos θ = c": "C", "a sin θ = c": "C"}
+# a cos θ + b sin θ = c from a point's coordinate: the point's offset from a plane, Spong's d of the
+# shoulder offset (the iiwa with θ3 free: yc c1 − xc s1 = d); from a rotation element, C as above.
+OFFSET_LETTERS = {"position": "d", "mixed": "d", "orientation": "C"}  # mixed: an inner frame's position
+
+
+def letter(label: str, equation) -> str:
+    """The name of the known side of a `label` step from `equation`, as the books name it."""
+    if label == "a cos θ + b sin θ = c" and not equation.distance:
+        return OFFSET_LETTERS[equation.kind]
+    return LETTERS[label]
 
 
 def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
@@ -146,9 +158,11 @@ def _named(derivation, letter: str, value: sympy.Expr) -> sympy.Expr:
     return symbol
 
 
-def _double_root(a, b, c, label, variable, where, derivation) -> sympy.Expr:
-    """The one root where a² + b² = c² at every pose of the arm (see subproblems.double_root)."""
-    c = _named(derivation, LETTERS[label], c)
+def _double_root(a, b, c, labelled, variable, where, derivation) -> sympy.Expr:
+    """The one root where a² + b² = c² at every pose of the arm (see subproblems.double_root);
+    `labelled`: the step's sub-problem and the name of its known side."""
+    label, name = labelled
+    c = _named(derivation, name, c)
     derivation.steps.append(DerivationStep(a * sympy.cos(variable) + b * sympy.sin(variable), c,
                                            Subproblem(label, double_root=True),
                                            (variable,), (*where, "; a² + b² = c² at every pose of the arm")))

@@ -24,6 +24,7 @@ import sympy
 
 from ..printing.ik import (
     IKLatexPrinter,
+    angle_meanings,
     latex_name,
     solution_printer,
     target_name,
@@ -33,6 +34,7 @@ from ..printing.ik import (
 )
 from ..printing.ik_solution import ATAN2_LEGEND, uses_atan2
 from .display import Latex
+from .ik_branches import DEFINITIONS, PART, branch_sections, heading, merged, value_rows
 from .layout import (
     ALIGNED_EXTRA,
     PAGES,
@@ -44,7 +46,6 @@ from .layout import (
     bmatrix,
     break_lines,
     display,
-    element_rows,
     lines_under,
     matrix_height,
     paragraph,
@@ -52,11 +53,10 @@ from .layout import (
     stacked,
 )
 from .legend import legend_items
-from .prose import tex_prose, tex_text
+from .prose import tex_prose
 from .sections import Section
 from .width import math_width
 
-PART = "Inverse kinematics"
 _MATH_CHARACTERS = {"²": "$^{2}$", "³": "$^{3}$", "√": "$\\surd$"}  # tex_text has no text form for these
 
 
@@ -84,11 +84,15 @@ def ik_sections(solution, robot, page: Page, headings: bool | None = None) -> li
         out.append(Section(PART, "Derivation", _step_items(solution.steps, printer, page)))
     if solution.definitions:
         rows = [value_rows(latex_name(name), value, printer, page) for name, value in solution.definitions]
-        out.append(Section(PART, "Intermediate quantities",
+        out.append(Section(PART, DEFINITIONS,
                            [paragraph("Used by every branch:", page), Rows([rows])]))
-    for number, branch in enumerate(solution.branches, 1):
-        rows = [value_rows(latex_name(name), value, printer, page) for name, value in branch.assignments]
-        out.append(Section(PART, f"Branch {number}: {branch_title(branch.name)}", [Rows([rows])]))
+    out += branch_sections(solution, printer, page)
+    meanings = angle_meanings(solution)
+    if meanings:  # the names a branch solves as one, θ23 = θ2 + θ3, defined after the branches that use them
+        said = ", ".join(f"${printer.doprint(name)} = {printer.doprint(value)}$" for name, value in meanings)
+        out[-1].items.append(paragraph(f"Angles solved as one: {said}.", page))
+    if page.height_pt is not None:  # slides: no frame of a single equation
+        out = merged(out, page)
     remarks = [paragraph(f"Condition: {printer.sentence(said)}.", page) for said in solution.conditions]
     remarks += [paragraph(f"Degenerate: {printer.sentence(said)}.", page) for said in solution.degenerate]
     if remarks:
@@ -102,48 +106,8 @@ def ik_sections(solution, robot, page: Page, headings: bool | None = None) -> li
     out[-1].items.extend(legend)
     if page.height_pt is None if headings is None else headings:  # no frame titles: a heading says which part
         for section in out:
-            section.items.insert(0, _heading(section.title, page))
+            section.items.insert(0, heading(section.title, page))
     return out
-
-
-def value_rows(label: str, value, printer, page: Page) -> list[tuple[str, float]]:
-    r"""`label &= value` as lines of an aligned block; an atan2 too wide for one line breaks
-    between its arguments (each broken further if it must), not inside a bracket of the second.
-
-    >>> import dhsym
-    >>> from dhsym.printing.ik import latex_printer
-    >>> value = sympy.atan2(sum(sympy.symbols("x_1:12")), sum(sympy.symbols("y_1:12")))
-    >>> rows = value_rows("\\theta_{1}", value, latex_printer(dhsym.load("planar2r").chain), PAGES["article"])
-    >>> [row[-12:] for row, _ in rows]
-    ['{8} + x_{9},', '{8} + y_{9})']
-    """
-    rows = element_rows(label, printer.doprint(value), page)
-    if len(rows) == 1 or not isinstance(value, sympy.atan2):
-        return rows
-    y, x = (printer.doprint(argument) for argument in value.args)
-    split = element_rows(label, f"\\mathrm{{atan2}}({y},", page)
-    width = page.width - math_width(label + " =") - ALIGNED_EXTRA - 1.0
-    lines = break_lines(f"{x})", width, width, display=True)
-    split += [(row, row_height([row], array=False))
-              for row in [f"&\\quad {lines[0]}"] + [f"&\\quad {{}}{line}" for line in lines[1:]]]
-    return split if len(split) <= len(rows) else rows
-
-
-def branch_title(name: str) -> str:
-    r"""A branch's name as LaTeX text, a root's sign as math.
-
-    >>> branch_title("shoulder +√, elbow −√, wrist flipped")
-    'shoulder $+\\surd$, elbow $-\\surd$, wrist flipped'
-    """
-    pieces = re.split(r"([+−]√)", name)
-    return "".join(f"${'+' if piece[0] == '+' else '-'}\\surd$" if position % 2 else tex_text(piece)
-                   for position, piece in enumerate(pieces))
-
-
-def _heading(title: str, page: Page) -> Block:
-    block = paragraph(f"\\textbf{{{title}}}", page)
-    block.keep_with_next = True
-    return block
 
 
 def _step_items(steps, printer, page: Page) -> list:
@@ -155,6 +119,8 @@ def _step_items(steps, printer, page: Page) -> list:
         text = paragraph(f"Step {number} ({printer.sentence(step.subproblem)}){solves}{note}.", page)
         text.keep_with_next = True
         items += [text, Rows([[_equation_rows(step.lhs, step.rhs, printer, page)]])]
+    if len(steps) > 1:  # the last step never alone on a frame: the one before goes with it if it must
+        items[-3].keep_with_next = True
     return items
 
 
@@ -185,9 +151,29 @@ def prose(text: str) -> str:
 
     >>> prose("D² ≤ 1")
     'D$^{2}$ $\\\\leq$ 1'
+    >>> prose("(u4 × u6 along −u5)")
+    '($u_{4} \\\\times u_{6}$ along $-u_{5}$)'
     """
+    text, out, position = str(text), [], 0
+    for match in _AXIS_NAMES.finditer(text):  # an axis's direction or a frame's axis, as math
+        out += [_characters(text[position:match.start()]), f"${_axis_math(match.group(0))}$"]
+        position = match.end()
+    return "".join(out) + _characters(text[position:])
+
+
+_AXIS_NAMES = re.compile(r"(?<![\w+−])[+−]?[uxyz]\d{1,2}(?:\s×\s[+−]?[uxyz]\d{1,2})*(?!\w)")  # u5, +z0, u4 × u6
+
+
+def _axis_math(text: str) -> str:
+    """u4 × u6 as math: u_{4} \\times u_{6}."""
+    text = re.sub(r"([uxyz])(\d+)", r"\1_{\2}", text)
+    return text.replace("×", "\\times").replace("−", "-")
+
+
+def _characters(text: str) -> str:
+    """Text with its squares and roots as math (`tex_prose` for the rest)."""
     pieces = [""]
-    for character in str(text):
+    for character in text:
         if character in _MATH_CHARACTERS:
             pieces += [_MATH_CHARACTERS[character], ""]
         else:

@@ -336,15 +336,17 @@ def angle_meanings(solution) -> tuple:
     >>> angle_meanings(solve(dhsym.load("puma560").chain))
     ((theta_23, theta_2 + theta_3),)
     """
-    joints = set(solution.joint_variables)
+    angles = {row.variable for row in solution.chain.rows if row.joint == "R"}  # a slide's sum (z_c = d1 + d2) is none
     meanings: dict = {}
     for branch in solution.branches:
-        names = {name for name, _ in (*solution.definitions, *branch.assignments) if name not in joints}
+        names = {name for name, _ in (*solution.definitions, *branch.assignments)} - set(solution.joint_variables)
         for joint, value in branch.assignments:
-            for name in sorted(names & value.free_symbols - set(meanings), key=str) if joint in joints else ():
+            value = sympy.sympify(value)  # a solution written by hand may assign a plain 0
+            for name in sorted(names & value.free_symbols - set(meanings), key=str) if joint in angles else ():
                 slope = sympy.diff(value, name)
-                if slope in (1, -1):  # linear in the name: the joint is the name minus the other angles
-                    meanings[name] = sympy.expand((joint - (value - slope * name)) / slope)
+                meaning = sympy.expand((joint - (value - slope * name)) / slope) if slope in (1, -1) else None
+                if meaning is not None and meaning.free_symbols <= angles:  # the joint is the name less other angles
+                    meanings[name] = meaning
     return tuple(meanings.items())
 
 

@@ -9,6 +9,8 @@ sympy.sympify; the sentences as plain strings).
 >>> solution = solve(arm.chain, sample=arm.sample)
 >>> json_solution(solution, arm)["degenerate"]
 ['px = 0 and py = 0: theta_1 is not determined by these equations']
+>>> json_solution(solve(dhsym.load("puma560").chain), dhsym.load("puma560"))["angles_solved_as_one"]
+[['theta_23', 'theta_2 + theta_3']]
 >>> print(text_solution(solution, arm).split("Degenerate:")[1].strip().splitlines()[0])
 px = 0 and py = 0: θ1 is not determined by these equations
 """
@@ -123,4 +125,5 @@ def json_solution(solution, robot) -> dict:
                       for branch in solution.branches],
         "conditions": [plain.sentence(said) for said in solution.conditions],
         "degenerate": [plain.sentence(said) for said in solution.degenerate],
+        "angles_solved_as_one": pairs(angle_meanings(solution)),
     }
