@@ -124,6 +124,20 @@ def test_the_generated_code_finds_every_real_root_that_numpy_roots_finds():
     assert np.isfinite(found[:300]).all()  # four real roots: four branches
 
 
+def test_one_pose_in_plain_floats_gives_the_batch_values_of_the_quartic():
+    """One pose takes the module's `math`/`cmath` path (called here directly: it raises where ik()
+    would fall back to numpy); a root that is not real is NaN there too."""
+    ik = _quartic_module()
+    one_pose = ik.__globals__["one_pose"]
+    rng = np.random.default_rng(27)
+    poses = _poses(np.vstack([rng.normal(size=(40, 5)), [[1, 0, -5, 0, 4], [1, -10, 35, -50, 24]]]))
+    batch = ik(poses)
+    alone = np.array([one_pose(pose) for pose in poses])
+    assert np.array_equal(np.isnan(alone), np.isnan(batch)) and np.isnan(batch).any() and np.isfinite(batch).any()
+    assert np.allclose(alone, batch, atol=1e-9, equal_nan=True)
+    assert np.array_equal(np.array([ik(pose) for pose in poses]), alone, equal_nan=True)
+
+
 TWISTS = [sympy.pi / 3, sympy.pi / 4, -sympy.pi / 3, 2 * sympy.pi / 3, -sympy.pi / 6]
 
 

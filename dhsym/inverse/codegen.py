@@ -33,33 +33,25 @@ from sympy.printing.numpy import NumPyPrinter
 
 from ..core.numbers import decimal_text
 from .fresh import PRIME
+from .onepose import HELPERS, REAL_ANGLE, MathCode, Spelling, function_text
 from .quartic import Complex
 
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when its imaginary part is this small
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
-             "angles", "elements", "missing", "k", "real_angle", "IMAGINARY"}  # the module's own names
+             "angles", "elements", "missing", "k", "real_angle", "IMAGINARY", "math", "cmath", "one_pose",
+             "root_one", "real_angle_one", "absent", "NUMBER"}  # the module's own names
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
-class NumpyCode(NumPyPrinter):
+class NumpyCode(Spelling, NumPyPrinter):
     """numpy.cos, numpy.sqrt, …; names made safe for Python (`names`: symbol name → Python name),
     a Dummy is a variable of the module's own, named already; decimals as the robot file wrote them."""
 
     def __init__(self, names: dict, numbers):
         super().__init__({"fully_qualified_modules": True})
         self.names, self.numbers = names, numbers
-
-    def _print_Symbol(self, expr):
-        return self.names.get(expr.name, expr.name)
-
-    def _print_Dummy(self, expr):
-        return expr.name
-
-    def _print_Rational(self, expr):
-        decimal = self.numbers.decimal(expr, alone=True) if self.numbers else None
-        return decimal if decimal else f"{expr.p}/{expr.q}"
 
 
 class _NumpyCode(NumpyCode):
@@ -85,9 +77,6 @@ class _NumpyCode(NumpyCode):
         if self.casting:
             return f"numpy.arccos({self._print(expr.args[0])} + 0j)"
         return super()._print_acos(expr)
-
-    def _print_Written(self, expr):  # a number as the robot file wrote it (dhsym.inverse.written)
-        return expr.name
 
     def _print_Pow(self, expr, rational=False):
         if expr.exp == sympy.Rational(1, 2) and self.casting:  # complex on purpose: the root of a negative number
@@ -140,26 +129,31 @@ def module_text(solution, name: str = "", command: str = "") -> str:
     keywords = _keywords(solution, names, constants)
     kinds = {row.variable: row.joint for row in chain.rows}
     revolute = tuple(k for k, joint in enumerate(joints) if kinds.get(joint) == "R")
-    body = _body(solution, names, code)
+    statements, columns = _computation(solution, names, code)
+    targets = _targets(solution, names)
+    parameters = [keyword.split("=")[0] for keyword in keywords]
+    one = function_text(statements, columns, revolute, parameters, MathCode(names, solution.numbers, code.complex),
+                        targets)
+    body = _body(solution, names, code, statements, columns, targets)
     lines = [
-        f'"""Closed-form inverse kinematics of {comment_text(name)} ({chain.convention} DH).\n',
-        (f"Made by `{comment_text(command)}`.\n" if command else "Made by dhsym.\n"),
-        "ik(T, **constants): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by",
-        "default; the result holds every branch's joint values, shaped (B, n) or (N, B, n): branches in",
-        "the order of BRANCHES, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN where a",
-        "branch does not exist. Needs numpy only. A value that branches share is computed once and named",
-        'in the first branch that needs it (theta_1, theta_1_2 for the other root, ...).\n"""',
-        "import numpy", "",
+        *_docstring(name, command, chain.convention, bool(one)),
+        *(["import cmath"] if one and code.complex else []), *(["import math"] if one else []), "import numpy", "",
         f"BRANCHES = {tuple(branch.name for branch in solution.branches)!r}",
         f"JOINTS = {tuple(j.name for j in joints)!r}",
         f"REVOLUTE = {revolute!r}  # the positions of the revolute joints in JOINTS",
-        f"ROUNDING = {ROUNDING!r}  # a square root of a number this close below 0 is a root of 0", "", "",
+        f"ROUNDING = {ROUNDING!r}  # a square root of a number this close below 0 is a root of 0",
+        *(["NUMBER = (int, float)  # constants of these types let one pose take the plain-float path"] if one else []),
+        "", "",
         "def root(x):",
         "    return numpy.sqrt(numpy.where((x < 0) & (x > -ROUNDING), 0.0, x))", "", "",
+        *(HELPERS if one else []),
         *(_REAL_ANGLE if code.complex else []),
+        *(REAL_ANGLE if one and code.complex else []),
+        *one,
         f"def ik(T, *, {', '.join(keywords)}):" if keywords else "def ik(T):",
         '    """Every branch\'s joint values for the pose(s) T; see the module\'s docstring."""',
         "    T = numpy.asarray(T, dtype=float)",
+        *(_dispatch(parameters) if one else []),
         "    if T.ndim not in (2, 3) or T.shape[-2:] != (4, 4):",
         '        raise ValueError(f"T must be one pose (4, 4) or many (N, 4, 4), not an array of shape {T.shape}")',
         "    poses = T.reshape(-1, 4, 4)",
@@ -177,6 +171,20 @@ def module_text(solution, name: str = "", command: str = "") -> str:
     return "\n".join(lines)
 
 
+def _docstring(name: str, command: str, convention: str, one: bool) -> list[str]:
+    """The generated module's docstring: what ik() takes and returns."""
+    return [f'"""Closed-form inverse kinematics of {comment_text(name)} ({convention} DH).\n',
+            (f"Made by `{comment_text(command)}`.\n" if command else "Made by dhsym.\n"),
+            "ik(T, **constants): T is one pose (4, 4) or many (N, 4, 4), the transform `dhsym fk` prints by",
+            "default; the result holds every branch's joint values, shaped (B, n) or (N, B, n): branches in",
+            "the order of BRANCHES, joints in the order of JOINTS, revolute angles in [-pi, pi), NaN where a",
+            "branch does not exist. Needs numpy only. A value that branches share is computed once and named",
+            "in the first branch that needs it (theta_1, theta_1_2 for the other root, ...).",
+            *(["One pose, with plain numbers for the constants, is worked out in plain floats (one_pose, with",
+               "math: faster for one pose), many poses with numpy; both give the same values."] if one else []),
+            '"""']
+
+
 def _keywords(solution, names: dict, constants) -> list[str]:
     """ik()'s keyword arguments: the constants with the file's sample values as defaults, then those
     without, then the --free joint variables."""
@@ -186,17 +194,49 @@ def _keywords(solution, names: dict, constants) -> list[str]:
     return keywords + [names[s.name] for s in solution.free]
 
 
-def _body(solution, names: dict, code) -> list[str]:
-    """ik()'s middle: the target's elements it reads, the result array, every branch's values."""
+def _targets(solution, names: dict) -> list[tuple[int, str]]:
+    """(index among the pose's elements, Python name) of each target element the solution reads."""
     used = set().union(*(value.free_symbols for _, value in solution.definitions),
                        *(value.free_symbols for branch in solution.branches for _, value in branch.assignments))
     held = {symbol.name for symbol in used}
-    elements = [(k, element.name) for k, element in enumerate(solution.target_symbols) if element.name in held]
-    body = [f"    {names[name]} = elements[{k}]" for k, name in elements]
+    return [(k, names[element.name]) for k, element in enumerate(solution.target_symbols) if element.name in held]
+
+
+def _dispatch(parameters) -> list[str]:
+    """ik()'s first lines: one pose of plain numbers goes to one_pose(), unless plain floats raise."""
+    numbers = "".join(f" and isinstance({name}, NUMBER)" for name in parameters)
+    call = ", ".join(["T", *parameters])
+    return [f"    if T.shape == (4, 4){numbers}:",
+            "        try:",
+            f"            return one_pose({call})",
+            "        except (ArithmeticError, ValueError, TypeError):  # a division by 0, ...: numpy's NaN below",
+            "            pass"]
+
+
+def _body(solution, names: dict, code, statements, columns, targets) -> list[str]:
+    """ik()'s middle: the target's elements it reads, the result array, every branch's values."""
+    body = [f"    {name} = elements[{k}]" for k, name in targets]
     body.append(f"    result = numpy.empty(({len(solution.branches)}, {len(solution.joint_variables)}, len(poses)))"
                 "  # each value's poses side by side: faster")
     body.append('    with numpy.errstate(invalid="ignore", divide="ignore", over="ignore"):')
-    return body + ["        " + line for line in _computation(solution, names, code)]
+    return body + ["        " + line for line in _numpy_lines(statements, columns, code)]
+
+
+def _numpy_lines(statements, columns, code) -> list[str]:
+    """The batch path's computation: each statement in numpy, then each branch's values put in result."""
+    out = []
+    for comment, symbol, expression, casting in statements:
+        if comment is not None:
+            out.append(f"# {comment}")
+            continue
+        code.casting = casting
+        out.append(f"{code.doprint(symbol)} = {code.doprint(expression)}")
+    code.casting = False
+    for number, values in enumerate(columns):
+        for k, value in enumerate(values):
+            text = "numpy.nan" if value is None else code.doprint(value)
+            out.append(f"result[{number}, {k}] = {text}")
+    return out
 
 
 _REAL_ANGLE = [
@@ -227,10 +267,11 @@ def _names(solution) -> tuple[dict, list]:
     return names, constants
 
 
-def _computation(solution, names: dict, code) -> list[str]:
-    """The lines that compute every branch: the definitions, then each branch's assignments, a value
-    that an earlier branch computed already (the same expression of the same earlier values) taken
-    from it, and sub-expressions used more than once (cos θ1, √(1 − D²)) computed once."""
+def _computation(solution, names: dict, code) -> tuple[list, list]:
+    """The statements that compute every branch (see _shared_subexpressions) and each branch's
+    values: the definitions, then each branch's assignments, a value that an earlier branch
+    computed already (the same expression of the same earlier values) taken from it, and
+    sub-expressions used more than once (cos θ1, √(1 − D²)) computed once."""
     taken = set(names.values())
     variable = {}  # the value's expression, in the variables computed before it -> its variable
     lines = []  # (comment, None, None) or (None, variable, expression)
@@ -265,17 +306,13 @@ def _computation(solution, names: dict, code) -> list[str]:
             known[name] = compute(name, value, known)
         columns.append([known.get(joint) if joint in known else (joint if joint in solution.free else None)
                         for joint in solution.joint_variables])
-    out = _shared_subexpressions(lines, taken, code)
-    for number, values in enumerate(columns):
-        for k, value in enumerate(values):
-            text = "numpy.nan" if value is None else code.doprint(value)
-            out.append(f"result[{number}, {k}] = {text}")
-    return out
+    return _shared_subexpressions(lines, taken, code), columns
 
 
-def _shared_subexpressions(lines, taken: set, code) -> list[str]:
-    """The lines as Python, each sub-expression used more than once computed once, just before the
-    first line that needs it; cos and sin of a value are named after it (cos_theta_1)."""
+def _shared_subexpressions(lines, taken: set, code) -> list[tuple]:
+    """The lines as statements (comment, None, None, False) or (None, variable, expression, whether
+    it is computed in complex numbers), each sub-expression used more than once computed once,
+    just before the first line that needs it; cos and sin of a value are named after it (cos_theta_1)."""
     expressions = [expression for comment, _, expression in lines if comment is None]
     replacements, reduced = sympy.cse(expressions, symbols=_temporaries(taken), order="none")
     renamed = {}
@@ -297,17 +334,15 @@ def _shared_subexpressions(lines, taken: set, code) -> list[str]:
                 emit(value)
                 if code.is_complex(value):
                     code.complex.add(symbol)
-                out.append(f"{code.doprint(symbol)} = {code.doprint(value)}")
+                out.append((None, symbol, value, False))
 
     for comment, symbol, _ in lines:
         if comment is not None:
-            out.append(f"# {comment}")
+            out.append((comment, None, None, False))
             continue
         expression = next(reduced)
         emit(expression)
-        code.casting = symbol in code.complex
-        out.append(f"{code.doprint(symbol)} = {code.doprint(expression)}")
-        code.casting = False
+        out.append((None, symbol, expression, symbol in code.complex))
     return out
 
 
