@@ -9,7 +9,8 @@
 // dhsym), both byte-compiled; MODULES a file naming, one a line, the modules the page's outputs
 // import on first use, imported here too. Nothing but imports runs: no result is worked out ahead.
 // Writes to OUT:
-//   python.snapshot.gzip    the memory, gzip-compressed (the page inflates it with DecompressionStream)
+//   python.snapshot.gzip    the memory without its pages of zeros, gzip-compressed (the page inflates
+//                           it with DecompressionStream and puts the pages back in place)
 //   python_stdlib.zip       the standard library's modules that were not imported
 //   site-packages.zip       the same for the packages
 // A module in the saved memory needs no file; what is left in the zips is imported from them on first
@@ -85,6 +86,47 @@ function withoutEntries(zip, drop) {
   return Buffer.concat([...locals, ...entries, tail]);
 }
 
+// The memory without its pages of zeros (a third of it: the heap's untouched tops), which the page
+// need not inflate: a header of little-endian 32-bit words [bytes in all, stretches, then the start
+// and length of each stretch of non-zero pages], then those stretches' bytes one after another
+// (web/worker.js puts them back in place in memory that starts as zeros).
+const PAGE = 4096;
+
+function withoutZeroPages(memory) {
+  const stretches = [];
+  for (let start = 0; start < memory.length; start += PAGE) {
+    const page = memory.subarray(start, Math.min(start + PAGE, memory.length));
+    if (page.every((byte) => byte === 0)) continue;
+    const last = stretches.at(-1);
+    if (last && last[0] + last[1] === start) last[1] += page.length;
+    else stretches.push([start, page.length]);
+  }
+  const header = new Uint32Array([memory.length, stretches.length, ...stretches.flat()]);
+  const parts = stretches.map(([start, length]) => memory.subarray(start, start + length));
+  return Buffer.concat([Buffer.from(header.buffer), ...parts]);
+}
+
+// The randomness that the runtime asks for while it starts and imports (the C library's random
+// state, the random module's seed) drawn from a fixed seed, and the wall clock (the files' times,
+// which the import caches keep) stopped at a fixed date, so that each build saves the same memory.
+const BUILD_DATE = Date.UTC(2020, 0, 1);
+
+function reproducible() {
+  let seed = 0x2545f491;
+  const next = () => { // xorshift32
+    seed ^= seed << 13;
+    seed ^= seed >>> 17;
+    seed ^= seed << 5;
+    return seed >>> 0;
+  };
+  require("node:crypto").randomFillSync = (view) => {
+    const bytes = new Uint8Array(view.buffer, view.byteOffset, view.byteLength);
+    for (let i = 0; i < bytes.length; i++) bytes[i] = next() & 0xff;
+    return view;
+  };
+  Date.now = () => BUILD_DATE;
+}
+
 async function main() {
   const [stdlib, site, modules, out] = process.argv.slice(2);
   if (!out) {
@@ -93,8 +135,10 @@ async function main() {
   }
   const indexURL = path.dirname(require.resolve("pyodide/package.json")) + path.sep;
   const siteBytes = fs.readFileSync(site);
+  reproducible();
   const python = await loadPyodide({
     indexURL, stdLibURL: path.resolve(stdlib), _makeSnapshot: true, stdout: () => {}, stderr: (line) => console.error(line),
+    env: { PYTHONHASHSEED: "0" }, // the same dicts and sets, laid out the same, in each build's saved memory
     fsInit: async (FS) => FS.writeFile(SITE, siteBytes),
   });
   const names = fs.readFileSync(modules, "utf8").split("\n").filter(Boolean);
@@ -112,7 +156,7 @@ async function main() {
   }
   python.runPython(FORGET_ZIPS);
   const memory = python.makeMemorySnapshot();
-  fs.writeFileSync(path.join(out, "python.snapshot.gzip"), zlib.gzipSync(memory, { level: 9 }));
+  fs.writeFileSync(path.join(out, "python.snapshot.gzip"), zlib.gzipSync(withoutZeroPages(memory), { level: 9 }));
   const count = python.runPython("import sys\nlen(sys.modules)");
   console.log(JSON.stringify({ modules: count, "left out of the zips": left, memory: memory.length }));
 }

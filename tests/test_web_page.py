@@ -203,13 +203,18 @@ def test_a_page_opened_as_a_file_says_how_to_serve_it(browser):
 
 
 # The page's Python as web/worker.js starts it, here in node with the same runtime: the saved state
-# restored, the zips written where it expects them.
+# restored (its non-zero stretches put in place), the zips written where it expects them.
 RESTORE = r"""
 const fs = require("fs"), zlib = require("zlib"), path = require("path");
 const { loadPyodide } = require("pyodide");
 const built = path.join(process.argv[1], "pyodide");
 async function main() {
-  const state = zlib.gunzipSync(fs.readFileSync(path.join(built, "python.snapshot.gzip")));
+  const packed = zlib.gunzipSync(fs.readFileSync(path.join(built, "python.snapshot.gzip")));
+  const word = (index) => packed.readUInt32LE(4 * index); // [bytes, stretches, (start, length)...]
+  const state = new Uint8Array(word(0));
+  for (let i = 0, at = 8 + 8 * word(1); i < word(1); at += word(3 + 2 * i), i++) {
+    state.set(packed.subarray(at, at + word(3 + 2 * i)), word(2 + 2 * i));
+  }
   const memory = state.length - new Uint32Array(state.buffer, state.byteOffset, 4)[1];
   const runtime = path.dirname(require.resolve("pyodide/package.json"));
   const create = (await import(path.join(runtime, "pyodide.asm.mjs"))).default;

@@ -62,15 +62,28 @@ export async function refresh() {
 // MathJax, with its stylesheet for the SVG it makes (typeset piece by piece, the page adds it itself).
 let mathStyles = null;
 
-// MathJax's first formulas set up its parser, its fonts and the code of each construct: done with
-// formulas like the results' while Python loads, not once the first result is in.
-const WARM_UP = ["{}^{0}T_{1} = \\begin{bmatrix} c_{1} & -s_{1} & 0 & a_{1} c_{1} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
-  "\\begin{align*} r_{11} &= c_{1}[c_{23}(c_{4} c_{5} - s_{4})] - s_{1} & c_{1} &= \\cos{\\theta_{1}} \\end{align*}"];
+// MathJax's first formulas set up its parser, its fonts and the code of each construct, and its code
+// runs faster once the browser has compiled it for speed (after a few runs): done while Python loads,
+// with formulas like the results' (a matrix, sums of products in brackets, definitions), each in a
+// task of its own, and no more once the first answer is in.
+const WARM_UP = [
+  "{}^{0}T_{1} = \\begin{bmatrix} c_{1} & -s_{1} & 0 & a_{1} c_{1} \\\\ s_{1} & c_{1} & 0 & a_{1} s_{1} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
+  "\\begin{align*} r_{11} &= c_{1}[c_{23}(c_{4} c_{5} c_{6} - s_{4} s_{6}) - s_{23} s_{5} c_{6}] + s_{1}(c_{4} s_{6}) \\\\ " +
+    "p_{x} &= -a_{2} c_{1} c_{2} + d_{4} s_{23} \\end{align*}",
+  "\\begin{align*} c_{1} &= \\cos{\\theta_{1}} & s_{23} &= \\sin(\\theta_{2} + \\theta_{3}) \\end{align*}",
+];
+const WARM_UP_ROUNDS = 3;
 
 export async function warmUpMath() {
   await mathReady();
-  for (const tex of WARM_UP) MathJax.tex2svg(tex, { display: true });
   mathEm();
+  for (let round = 0; round < WARM_UP_ROUNDS; round++) {
+    for (const tex of WARM_UP) {
+      if (state.latex) return; // a result is being typeset: the warm-up is over
+      MathJax.tex2svg(tex, { display: true });
+      await new Promise((resolve) => setTimeout(resolve));
+    }
+  }
 }
 
 async function mathReady() {

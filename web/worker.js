@@ -51,6 +51,50 @@ async function inflated(name) {
   return bytes;
 }
 
+// The saved memory, as the build wrote it (scripts/snapshot-python.js): its non-zero stretches, put
+// in place as they are inflated, in memory that starts as zeros. First a header of little-endian
+// 32-bit words: [bytes in all, stretches, then the start and length of each stretch].
+async function savedMemory() {
+  const reader = (await inflating("python.snapshot")).getReader();
+  let head = new Uint8Array(0);
+  let memory = null;
+  let stretches = [];
+  let [stretch, done] = [0, 0]; // the stretch being filled, and its bytes filled so far
+  for (let read = await reader.read(); !read.done; read = await reader.read()) {
+    let chunk = read.value;
+    if (!memory) {
+      head = joined(head, chunk);
+      const words = head.length >= 8 ? 2 + 2 * wordAt(head, 1) : Infinity;
+      if (head.length < 4 * words) continue;
+      memory = new Uint8Array(wordAt(head, 0));
+      stretches = Array.from({ length: words - 2 }, (_, i) => wordAt(head, 2 + i));
+      chunk = head.subarray(4 * words);
+    }
+    while (chunk.length) {
+      if (stretch === stretches.length / 2) throw new Error(CUT);
+      const [start, length] = [stretches[2 * stretch], stretches[2 * stretch + 1]];
+      const taken = Math.min(length - done, chunk.length);
+      memory.set(chunk.subarray(0, taken), start + done);
+      chunk = chunk.subarray(taken);
+      done += taken;
+      if (done === length) [stretch, done] = [stretch + 1, 0];
+    }
+  }
+  if (!memory || stretch !== stretches.length / 2) throw new Error(CUT);
+  mark("python.snapshot inflated");
+  return memory;
+}
+
+const CUT = "pyodide/python.snapshot.gzip is not the saved memory this page was built with; build the page again";
+const wordAt = (bytes, index) => new DataView(bytes.buffer, bytes.byteOffset).getUint32(4 * index, true);
+
+function joined(first, second) {
+  const both = new Uint8Array(first.length + second.length);
+  both.set(first);
+  both.set(second, first.length);
+  return both;
+}
+
 // Pyodide's runtime: the WebAssembly compiled as it arrives, and its JavaScript as a module.
 async function compiledRuntime() {
   const headers = { "Content-Type": "application/wasm" };
@@ -75,7 +119,7 @@ async function start() {
   // Everything at once: the state, the runtime (compiled as it arrives), the packages, and Pyodide's
   // JavaScript, which Python's start needs only after them.
   const manifest = realFetch("build.json").then((r) => r.json());
-  const state = inflated("python.snapshot").then((bytes) => new Uint8Array(bytes));
+  const state = savedMemory();
   const site = fetch("pyodide/site-packages.zip").then((r) => r.arrayBuffer());
   const restore = useCompiledRuntime(compiledRuntime(), prefetched(["python_stdlib.zip", "pyodide-lock.json"]));
   const [{ loadPyodide }, createPyodideModule] = await Promise.all([import("./pyodide/pyodide.mjs"), runtimeScript()]);
