@@ -19,7 +19,7 @@ import math
 import sympy
 
 from ..core.size import tree_size
-from .tape import cost
+from .tape import operation_count
 
 MAX_TERMS = 20_000  # of all the printed elements, multiplied out; past this they are not written out
 
@@ -40,12 +40,13 @@ def compact(expr: sympy.Expr, masses=(), memo: dict | None = None, multiplied: b
     if symbols:
         by_mass = sympy.collect(summed, symbols, evaluate=False)
         candidates.append(sympy.Add(*[key * grouped(value) for key, value in by_mass.items()]))
-    return min(candidates, key=_cost)
+    counted: dict = {}  # the candidates share their products of cos/sin: counted once
+    return min(candidates, key=lambda candidate: _cost(candidate, counted))
 
 
-def _cost(expr: sympy.Expr) -> tuple:
+def _cost(expr: sympy.Expr, memo: dict) -> tuple:
     """Operations as code counts them, then the size of the tree: a fast stand-in for count_ops."""
-    return cost(expr).total, tree_size(expr)
+    return operation_count(expr, memo), tree_size(expr)
 
 
 def sum_formulas(expr: sympy.Expr, memo: dict | None = None) -> sympy.Expr:
@@ -86,6 +87,16 @@ def _multiset(factors) -> frozenset:
     return frozenset(counted.items())
 
 
+def _joined(multiset: frozenset, factors: list) -> frozenset:
+    """The multiset of a product's factors with `factors` multiplied in (each to the power 1),
+    counted without building the product."""
+    counted = dict(multiset)
+    for factor in factors:
+        if not factor.is_Number:  # a sum formula that came out a number (cos(π/2 + x) − …) leaves no factor
+            counted[factor] = counted.get(factor, 0) + 1
+    return frozenset(counted.items())
+
+
 def _combine(terms: dict, key: frozenset) -> bool:
     """Merge the term `key` with a partner by a sum formula, if it has one."""
     number = terms[key]
@@ -97,7 +108,7 @@ def _combine(terms: dict, key: frozenset) -> bool:
         if a == b:
             continue
         rest = key - {(first, 1), (second, 1)}
-        partner = _multiset([f ** k for f, k in rest] + [swap[type(first)](a), swap[type(second)](b)])
+        partner = _joined(rest, [swap[type(first)](a), swap[type(second)](b)])
         other = terms.get(partner)
         if other is None or abs(other) != abs(number):
             continue
@@ -112,7 +123,7 @@ def _combine(terms: dict, key: frozenset) -> bool:
             merged = sympy.sin(a + b) if same else -sympy.sin(a - b)
         del terms[key], terms[partner]
         coefficient, factor = (number * merged).as_coeff_Mul()
-        joined = _multiset([f ** k for f, k in rest] + [factor])
+        joined = _joined(rest, [factor])
         terms[joined] = terms.get(joined, 0) + coefficient
         if terms[joined] == 0:
             del terms[joined]
