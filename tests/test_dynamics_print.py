@@ -10,6 +10,7 @@ import pytest
 import sympy
 from cli_runner import run_dhsym
 
+from dhsym.api.dynamics import robot_dynamics
 from dhsym.core.inertia import tensor
 from dhsym.core.verify import check
 from dhsym.dynamics.craig_steps import newton_euler_steps
@@ -18,7 +19,6 @@ from dhsym.dynamics.lagrange_steps import lagrange_steps
 from dhsym.dynamics.model import about_origin
 from dhsym.io.library import load
 from dhsym.io.robotfile import load_robot_text
-from dhsym.latex.dynamics_api import robot_dynamics
 
 q1, q2, l1, lc1, lc2, m1, m2, I1, I2, g = sympy.symbols("q_1 q_2 l_1 l_c1 l_c2 m_1 m_2 I_1 I_2 g", real=True)
 c2, s2 = sympy.cos(q2), sympy.sin(q2)
