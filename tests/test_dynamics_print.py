@@ -255,3 +255,16 @@ def test_the_notebook_object_takes_the_first_links_and_shows_elements_by_name():
         elbow.show("d33")
     with pytest.raises(UserError, match="to=3: the last frame whose link moves is one of 1..2"):
         dhsym.equations_of_motion(load("spong_elbow"), to=3)
+
+
+def test_the_puma_prints_its_christoffel_symbols_in_c_s_notation():
+    robot = load("puma560_akb")
+    result = derive(robot.chain, robot.filled_masses())
+    printed = [*result.M, *result.g, *result.christoffel.values()]
+    angles = {f.args[0] for value in printed for f in value.atoms(sympy.sin, sympy.cos)}
+    assert all(term.as_coeff_Mul()[0] in (1, -1) for angle in angles for term in sympy.Add.make_args(angle)
+               if term.free_symbols), angles  # no sin(2θ2 + θ3): c2 s23 + s2 c23 as the book writes it
+    program, symbols, _ = printed_terms(robot.chain, robot.filled_masses())
+    for key in [(1, 2, 1), (1, 1, 2)]:
+        verdict = check(result.christoffel[key], program.tape.expanded(symbols[key]))
+        assert verdict and verdict.algebraic, key

@@ -75,7 +75,7 @@ def sum_formulas(expr: sympy.Expr, memo: dict | None = None) -> sympy.Expr:
         for key in list(terms):
             if key in terms and _combine(terms, key):
                 changed = True
-    return sympy.Add(*[number * sympy.Mul(*[f ** k for f, k in key]) for key, number in terms.items()])
+    return sympy.Add(*[sympy.Mul(number, *[f ** k for f, k in key]) for key, number in terms.items()])
 
 
 def _multiset(factors) -> frozenset:
@@ -121,6 +121,8 @@ def _combine(terms: dict, key: frozenset) -> bool:
             merged = sympy.sin(a + b) if same else sympy.sin(a - b)
         else:  # cos a sin b ± sin a cos b
             merged = sympy.sin(a + b) if same else -sympy.sin(a - b)
+        if not all(_signed_sum(f.args[0]) for f in merged.atoms(sympy.cos, sympy.sin)):
+            continue  # c2 s23 + s2 c23 stays: sin(2θ2 + θ3) has no c/s abbreviation
         del terms[key], terms[partner]
         coefficient, factor = (number * merged).as_coeff_Mul()
         joined = _joined(rest, [factor])
@@ -129,6 +131,12 @@ def _combine(terms: dict, key: frozenset) -> bool:
             del terms[joined]
         return True
     return False
+
+
+def _signed_sum(angle: sympy.Expr) -> bool:
+    """Whether `angle` is a sum of angles each taken once, ±θ1 ± θ2 … (and a constant): what
+    c/s notation writes as c12, s2-3; 2θ2 + θ3 it cannot."""
+    return all(term.as_coeff_Mul()[0] in (1, -1) for term in sympy.Add.make_args(angle) if term.free_symbols)
 
 
 def _split(term: sympy.Expr) -> tuple:
