@@ -163,10 +163,11 @@ def _pythagoras(polynomial, pairs, gens):
 def _reduce(polynomial, square: int, other: int, gens):
     """x² → 1 − y² in every term (x the generator at `square`, y at `other`), on the dictionary of
     terms: (1 − y²)ᵏ by the binomial theorem."""
-    if all(monomial[square] < 2 for monomial in polynomial):
+    changed = [(monomial, coefficient) for monomial, coefficient in polynomial.items() if monomial[square] >= 2]
+    if not changed:
         return polynomial
-    out: dict = {}
-    for monomial, coefficient in polynomial.items():
+    out = {monomial: coefficient for monomial, coefficient in polynomial.items() if monomial[square] < 2}
+    for monomial, coefficient in changed:
         power = monomial[square]
         kept = list(monomial)
         kept[square] = power % 2
