@@ -18,6 +18,8 @@ dhsym's times are the best of three cold runs (SymPy's cache emptied). Run with 
 """
 from __future__ import annotations
 
+import gc
+import resource
 import subprocess
 import sys
 import time
@@ -57,13 +59,20 @@ def best_of(runs: int, function):
     return min(results, key=lambda pair: pair[0])
 
 
-def import_sympy_seconds() -> float:
-    """`import sympy` in a fresh interpreter, less the interpreter's own start-up: best of three."""
-    def run(code: str) -> float:
-        start = time.perf_counter()
+def import_sympy_seconds() -> tuple[float, float]:
+    """`import sympy` in a fresh interpreter, less the interpreter's own start-up: best of three,
+    (wall-clock seconds, CPU seconds). On a loaded machine the CPU time is the steadier figure."""
+    def run(code: str) -> tuple[float, float]:
+        cpu, start = _children_cpu(), time.perf_counter()
         subprocess.run([sys.executable, "-c", code], check=True)
-        return time.perf_counter() - start
-    return min(run("import sympy") - run("pass") for _ in range(3))
+        return time.perf_counter() - start, _children_cpu() - cpu
+    pairs = [(run("import sympy"), run("pass")) for _ in range(3)]
+    return min(a[0] - b[0] for a, b in pairs), min(a[1] - b[1] for a, b in pairs)
+
+
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 def symbolic_puma(parameters: str):
@@ -136,13 +145,23 @@ def numeric_puma() -> tuple:
     return chain, MassModel(links, (0, 0, -r("9.81")))
 
 
-def report_numeric(import_seconds: float) -> None:
+def report_numeric(import_seconds: tuple[float, float]) -> None:
     chain, masses = numeric_puma()
+    gc.freeze()  # as the dhsym process does after its imports (dhsym/cli/__main__.py)
     seconds, result = best_of(3, lambda: derive(chain, masses))
+    cpu = min(_cpu_seconds(lambda: derive(chain, masses)) for _ in range(3))
     size = sum(sympy.count_ops(x) for x in [*result.M, *result.C, *result.g])
     print("\nPUMA 560 with numeric parameters: M, C, g and Christoffel symbols in textbook form")
-    print(f"dhsym {seconds:.3f} s, `import sympy` {import_seconds:.3f} s: ratio {seconds / import_seconds:.2f}"
+    print(f"dhsym {seconds:.3f} s, `import sympy` {import_seconds[0]:.3f} s: ratio {seconds / import_seconds[0]:.2f}"
           f"  ({size} operations in M, C, g; {len(result.christoffel)} Christoffel symbols not zero)")
+    print(f"CPU time: dhsym {cpu:.3f} s, `import sympy` {import_seconds[1]:.3f} s: ratio {cpu / import_seconds[1]:.2f}")
+
+
+def _cpu_seconds(function) -> float:
+    clear_cache()
+    start = time.process_time()
+    function()
+    return time.process_time() - start
 
 
 def report_code() -> None:

@@ -2,6 +2,7 @@
 robot's own frames, Newton–Euler and composite bodies in the joint frames) equal on every built-in
 arm and on random ones, the properties a student checks (M symmetric and positive definite,
 Ṁ − 2C skew-symmetric), the generated module, and the refusal of results too large to print."""
+import inspect
 from pathlib import Path
 
 import mpmath
@@ -203,6 +204,17 @@ def test_the_code_computes_many_states_at_once_as_one_by_one():
     assert numpy.allclose(many, [namespace["tau"](*state) for state in zip(q, qd, qdd)])
     with pytest.raises(ValueError, match=r"expected states of shape \(2,\)"):
         namespace["g"]([1.0, 2.0, 3.0])
+
+
+def test_the_code_makes_only_its_functions_and_joints_public():
+    robot = load_robot_file(SPONG)
+    namespace: dict = {}
+    exec(compile(module_text(dynamics_program(robot.chain, robot.filled_masses()), robot.name, robot.sample),
+                 "spong.py", "exec"), namespace)
+    public = {name for name, value in namespace.items() if not name.startswith("_") and not inspect.ismodule(value)}
+    assert public == {"JOINTS", "M", "C", "g", "tau", "qdd"} == set(namespace["__all__"])
+    q, qd = [0.3, -0.7], [1.1, 0.4]
+    assert numpy.allclose(namespace["qdd"](q, qd, namespace["tau"](q, qd, [0.5, -2.0])), [0.5, -2.0])
 
 
 def test_a_chain_too_large_to_print_is_refused_before_it_is_written_out():

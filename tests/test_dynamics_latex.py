@@ -9,8 +9,8 @@ import subprocess
 import pytest
 from cli_runner import run_dhsym
 
+from dhsym.api.dynamics import robot_dynamics
 from dhsym.io.library import load
-from dhsym.latex.dynamics_api import robot_dynamics
 from dhsym.latex.layout import PAGES
 
 pytestmark = [pytest.mark.slow,
@@ -75,3 +75,11 @@ def test_the_slides_keep_everything_inside_the_page(tmp_path):
         assert ink.any(), f"{image.name} is blank"
         assert not ink[:, width - width // 40:].any(), f"{image.name}: something touches the right edge"
         assert not ink[height - height // 25:, : width - width // 8].any(), f"{image.name}: runs off the bottom"
+
+
+def test_the_article_heads_each_result_and_step():
+    text = run_dhsym(*DOCUMENTS["elbow-article"]).ok()
+    headings = re.findall(r"\\subsubsection\*\{(.*)\}", text)
+    assert headings[:3] == ["Lagrange: link 1", "Lagrange: link 2", "Lagrange: the derivatives of $M$"]
+    assert {"Inertia matrix $M(q)$", "Christoffel symbols $c_{ijk}$", "Gravity vector $g(q)$"} <= set(headings)
+    assert text.index("\\subsection*{Dynamics}") < text.index("\\subsubsection*{Inertia matrix $M(q)$}")

@@ -10,6 +10,7 @@ import pytest
 import sympy
 from cli_runner import run_dhsym
 
+from dhsym.api.dynamics import robot_dynamics
 from dhsym.core.inertia import tensor
 from dhsym.core.verify import check
 from dhsym.dynamics.craig_steps import newton_euler_steps
@@ -18,7 +19,6 @@ from dhsym.dynamics.lagrange_steps import lagrange_steps
 from dhsym.dynamics.model import about_origin
 from dhsym.io.library import load
 from dhsym.io.robotfile import load_robot_text
-from dhsym.latex.dynamics_api import robot_dynamics
 
 q1, q2, l1, lc1, lc2, m1, m2, I1, I2, g = sympy.symbols("q_1 q_2 l_1 l_c1 l_c2 m_1 m_2 I_1 I_2 g", real=True)
 c2, s2 = sympy.cos(q2), sympy.sin(q2)
@@ -255,3 +255,16 @@ def test_the_notebook_object_takes_the_first_links_and_shows_elements_by_name():
         elbow.show("d33")
     with pytest.raises(UserError, match="to=3: the last frame whose link moves is one of 1..2"):
         dhsym.equations_of_motion(load("spong_elbow"), to=3)
+
+
+def test_the_puma_prints_its_christoffel_symbols_in_c_s_notation():
+    robot = load("puma560_akb")
+    result = derive(robot.chain, robot.filled_masses())
+    printed = [*result.M, *result.g, *result.christoffel.values()]
+    angles = {f.args[0] for value in printed for f in value.atoms(sympy.sin, sympy.cos)}
+    assert all(term.as_coeff_Mul()[0] in (1, -1) for angle in angles for term in sympy.Add.make_args(angle)
+               if term.free_symbols), angles  # no sin(2θ2 + θ3): c2 s23 + s2 c23 as the book writes it
+    program, symbols, _ = printed_terms(robot.chain, robot.filled_masses())
+    for key in [(1, 2, 1), (1, 1, 2)]:
+        verdict = check(result.christoffel[key], program.tape.expanded(symbols[key]))
+        assert verdict and verdict.algebraic, key

@@ -185,14 +185,14 @@ class Robot(record.Robot):
         return self._solved[key]
 
     def dynamics(self, to: Frame | None = None):
-        """The equations of motion τ = M q̈ + C q̇ + g (dhsym.latex.dynamics_api): `.M`, `.C`, `.g`,
+        """The equations of motion τ = M q̈ + C q̇ + g (dhsym.api.dynamics): `.M`, `.C`, `.g`,
         `.tau(...)`, `.latex()` …; of the links up to frame `to` (as printed) only.
 
         >>> import dhsym
         >>> dhsym.load("spong_elbow").dynamics().M[1, 1]
         I_2 + l_c2**2*m_2
         """
-        from ..latex.dynamics_api import robot_dynamics
+        from .dynamics import robot_dynamics
 
         return robot_dynamics(self, to)
 

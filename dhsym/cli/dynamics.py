@@ -16,7 +16,7 @@ from __future__ import annotations
 import json
 
 from ..dynamics.derive import MAX_TERMS, TooLargeToPrint, derive, printed_terms
-from ..dynamics.equations import first_links as links_up_to
+from ..dynamics.equations import links_to_frame
 from ..errors import UserError
 from .options import format_options, robot_options
 
@@ -94,12 +94,8 @@ def first_links(robot, end):
     number of the chain's frame 0) only; all of it when None."""
     if end is None:
         return robot
-    offset = robot.frame_offset
-    last = _whole_number(end) - offset
-    if not 0 < last <= robot.chain.n:
-        raise UserError(f"--to names the last frame whose link moves, one of {offset + 1}..{offset + robot.chain.n}; "
-                        f"not {end}")
-    return links_up_to(robot, last)
+    return links_to_frame(robot, _whole_number(end), lambda first, last: "--to names the last frame whose link "
+                          f"moves, one of {first}..{last}; not {end}")
 
 
 def _whole_number(text: str) -> int:
@@ -123,10 +119,10 @@ def refusal(robot, error: TooLargeToPrint, command: str = "") -> UserError:
     `dhsym dynamics` command line that takes those options, when it is not the command at hand."""
     fits = None
     for k in range(1, robot.chain.n):
-        part = first_links(robot, str(k + robot.frame_offset))
+        part = first_links(robot, str(robot.numbering.frame(k)))
         if printed_terms(part.chain, part.filled_masses())[2] > MAX_TERMS:
             break
-        fits = k + robot.frame_offset
+        fits = robot.numbering.frame(k)
     prefix = f"{command} " if command else ""
     advice = [f"{prefix}--to {fits} (the links up to frame {fits})"] if fits is not None else []
     advice += ["numbers for the links' masses, centres of mass and inertias in the robot file (mass:, com:, "

@@ -19,6 +19,8 @@ order of the program, so that common sub-expressions are shared as they were fou
 >>> exec(compile(code, "pendulum_dynamics.py", "exec"), namespace)
 >>> namespace["tau"]([0.0], [0.0], [1.0]).round(4).tolist(), namespace["g"]([[0.0], [1.5707963]]).round(4).tolist()
 ([21.62], [[19.62], [0.0]])
+>>> namespace["__all__"]
+['JOINTS', 'M', 'C', 'g', 'tau', 'qdd']
 """
 from __future__ import annotations
 
@@ -27,7 +29,8 @@ import sympy
 from ..inverse.codegen import NumpyCode, comment_text, default_text, python_names
 from .program import Program
 
-INTERNAL = {"numpy", "q", "qd", "qdd", "tau", "tau_", "result", "single", "states", "bias", "JOINTS", "M"}  # in bodies
+INTERNAL = {"numpy", "q", "qd", "qdd", "tau", "_tau", "result", "single", "_states", "bias", "JOINTS", "M"}  # in bodies
+PUBLIC = ("JOINTS", "M", "C", "g", "tau", "qdd")  # the module's __all__; its helpers start with _
 SIGNATURES = {"M": ("q",), "C": ("q", "qd"), "g": ("q",), "tau": ("q", "qd", "qdd")}
 WHAT = {"M": "the mass matrix M(q), shaped (n, n) or (N, n, n)",
         "C": "the Coriolis and centrifugal matrix C(q, qd) (Christoffel form), shaped (n, n) or (N, n, n)",
@@ -73,8 +76,9 @@ def module_text(program: Program, name: str, sample: dict, numbers=None, command
              "Each function takes one state, arrays of shape (n,), or many, shaped (N, n); joints in the order",
              "of JOINTS (their values as the robot file's joint variables: theta_i or d_i, offsets included), SI",
              'units as the robot file gives them. The constants are keyword arguments. Needs numpy only.\n"""',
-             "import numpy", "", f"JOINTS = {tuple(v.name for v in program.variables)!r}", "", "",
-             "def states(x):", "    x = numpy.asarray(x, dtype=float)",
+             "import numpy", "", f"__all__ = {list(PUBLIC)!r}", "",
+             f"JOINTS = {tuple(v.name for v in program.variables)!r}", "", "",
+             "def _states(x):", "    x = numpy.asarray(x, dtype=float)",
              f"    if x.shape[-1:] != ({n},) or x.ndim > 2:",
              f'        raise ValueError(f"expected states of shape ({n},) or (N, {n}), not {{x.shape}}")',
              f"    return x.reshape(-1, {n}), x.ndim == 1", ""]
@@ -84,11 +88,11 @@ def module_text(program: Program, name: str, sample: dict, numbers=None, command
     forwarded = "".join(f", {names[s.name]}={names[s.name]}" for s in constants)
     lines += ["", "", f"def qdd(q, qd, tau{', *, ' + signature if signature else ''}):",
               '    """The joint accelerations that the torques tau give (forward dynamics), shaped like tau."""',
-              "    q, single = states(q)",
-              "    qd, tau = states(qd)[0], states(tau)[0]",
-              f"    bias = tau_(q, qd, numpy.zeros_like(q){forwarded})",
+              "    q, single = _states(q)",
+              "    qd, tau = _states(qd)[0], _states(tau)[0]",
+              f"    bias = _tau(q, qd, numpy.zeros_like(q){forwarded})",
               f"    result = numpy.linalg.solve(M(q{forwarded}), (tau - bias)[..., None])[..., 0]",
-              "    return result[0] if single else result", "", "", "tau_ = tau  # qdd's own name for it", ""]
+              "    return result[0] if single else result", "", "", "_tau = tau  # qdd's argument tau hides it", ""]
     return "\n".join(lines)
 
 
@@ -96,11 +100,11 @@ def _function(program: Program, function: str, names: dict, renamed: dict, code,
     matrix = program.outputs[function]
     inputs = SIGNATURES[function]
     lines = [f"def {function}({', '.join(inputs)}{', *, ' + signature if signature else ''}):",
-             f'    """{WHAT[function]}."""', "    q, single = states(q)"]
+             f'    """{WHAT[function]}."""', "    q, single = _states(q)"]
     symbols = {"q": program.variables, "qd": program.rates, "qdd": program.accelerations}
     for argument in inputs:
         if argument != "q":
-            lines.append(f"    {argument} = states({argument})[0]")
+            lines.append(f"    {argument} = _states({argument})[0]")
         unpacked = ", ".join(names[s.name] for s in symbols[argument])
         lines.append(f"    {unpacked}{',' if len(symbols[argument]) == 1 else ''} = {argument}.T")
     square = function in ("M", "C")

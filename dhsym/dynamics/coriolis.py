@@ -59,8 +59,10 @@ def christoffel_symbols(tape: Tape, model, M: sympy.Matrix) -> dict:
     for i in range(n):
         for j in range(n):
             for k in range(n):
-                value = (derivatives.get(i, zero)[k, j] + derivatives.get(j, zero)[k, i]
-                         - derivatives.get(k, zero)[i, j]) / 2
+                parts = (derivatives.get(i, zero)[k, j], derivatives.get(j, zero)[k, i], derivatives.get(k, zero)[i, j])
+                if not any(parts):  # most are zero: skip building them
+                    continue
+                value = (parts[0] + parts[1] - parts[2]) / 2
                 if value != 0:
                     symbols[i + 1, j + 1, k + 1] = tape.name(value)
     return symbols

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from ..errors import UserError
 from .derive import Dynamics
 
 
@@ -153,9 +154,26 @@ def first_links(robot, last: int):
     from ..core.chain import Chain
     from ..core.inertia import MassModel
 
-    chain, masses, offset = robot.chain, robot.masses, robot.frame_offset
+    chain, masses, numbering = robot.chain, robot.masses, robot.numbering
     kept = MassModel(masses.links[:last], masses.gravity, masses.numbers)
     part = Chain(chain.rows[:last], chain.convention, chain.base)
-    symbols = part.symbols | kept.symbols(last, offset + 1)
+    symbols = part.symbols | kept.symbols(last, numbering.first_joint)
     return robot.replace(chain=part, masses=kept, sample={s: v for s, v in robot.sample.items() if s in symbols},
-                         name=f"{robot.name}, to frame {last + offset}")
+                         name=f"{robot.name}, to frame {numbering.frame(last)}")
+
+
+def links_to_frame(robot, frame: int, refused):
+    """`first_links` up to the robot's frame `frame` as it prints its frames (robot.numbering: a
+    wrist whose frames are 3..6 moves frames 4..6); else the UserError `refused(first, last)` says,
+    given the first and last frame that a link moves.
+
+    >>> import dhsym
+    >>> wrist = dhsym.load("puma560").replace(frame_offset=3)
+    >>> links_to_frame(wrist, 5, lambda first, last: f"{first}..{last}").chain.n
+    2
+    """
+    numbering, chain = robot.numbering, robot.chain
+    moved = numbering.joints(chain)  # frame k moves with joint k
+    if isinstance(frame, bool) or frame not in moved:
+        raise UserError(refused(moved[0], moved[-1]))
+    return first_links(robot, numbering.chain_frame(frame, chain))

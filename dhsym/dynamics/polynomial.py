@@ -60,8 +60,9 @@ def multiplied_out(tape, values, sums: dict | None = None) -> list:
     some angles through others."""
     values = [sympy.sympify(v) for v in values]
     sums = sums or {}
-    atoms, opaque = _generators(tape, values, sums)
-    domain = QQ if all(_rational(n) for n in _numbers(tape, values)) else EX
+    written_out = [*values, *(tape.definitions[s] for s in tape.used(values))]
+    atoms, opaque = _generators(written_out, tape, sums)
+    domain = QQ if all(_rational(n) for n in _numbers(written_out)) else EX
     placeholders = [sympy.Dummy(f"x{k}") for k in range(len(atoms))]
     polynomials, *gens = ring(placeholders, domain)
     position = {atom: k for k, atom in enumerate(atoms)}
@@ -89,7 +90,8 @@ def multiplied_out(tape, values, sums: dict | None = None) -> list:
 
     undo = {placeholder: expr for expr, placeholder in opaque.items()}
     written = [undo.get(atom, atom) for atom in atoms]
-    return [_as_expr(_pythagoras(convert(value), atoms, gens, position), written, domain) for value in values]
+    pairs = [(position[a], position[sympy.cos(a.args[0])]) for a in atoms if isinstance(a, sympy.sin)]
+    return [_as_expr(_pythagoras(convert(value), pairs, gens), written, domain) for value in values]
 
 
 def _as_expr(polynomial, atoms: list, domain) -> sympy.Expr:
@@ -102,11 +104,11 @@ def _as_expr(polynomial, atoms: list, domain) -> sympy.Expr:
 
 
 
-def _generators(tape, values, sums: dict) -> tuple:
+def _generators(written_out: list, tape, sums: dict) -> tuple:
     """(the generators: the robot's symbols, cos and sin of each angle, placeholders of the opaque
-    parts; {opaque part: its placeholder})."""
+    parts; {opaque part: its placeholder}) of the values and the definitions they use, `written_out`."""
     atoms, opaque = set(), {}
-    waiting = [*values, *(tape.definitions[s] for s in tape.used(values))]
+    waiting = list(written_out)
     while waiting:
         expr = waiting.pop()
         if expr in sums:
@@ -127,11 +129,10 @@ def _generators(tape, values, sums: dict) -> tuple:
     return sorted(atoms, key=sympy.default_sort_key), opaque
 
 
-def _numbers(tape, values) -> set:
+def _numbers(written_out: list) -> set:
     found = set()
-    for expr in [*values, *(tape.definitions[s] for s in tape.used(values))]:
-        found |= {a for a in expr.atoms(sympy.Number)}
-        found |= {p for p in expr.atoms(sympy.Pow) if p.base.is_Number and p.is_number}
+    for expr in written_out:
+        found |= {a for a in expr.atoms(sympy.Number, sympy.Pow) if a.is_Number or a.base.is_Number and a.is_number}
     return found
 
 
@@ -139,11 +140,10 @@ def _rational(number) -> bool:
     return number.is_Rational
 
 
-def _pythagoras(polynomial, atoms, gens, position):
+def _pythagoras(polynomial, pairs, gens):
     """sin² = 1 − cos² or cos² = 1 − sin², angle by angle, whichever gives fewer terms, over and over
     while the terms get fewer (one angle's rewriting can open another's: s2²(s4² + c4² − 1) is 0
     only once s2² is left alone)."""
-    pairs = [(position[a], position[sympy.cos(a.args[0])]) for a in atoms if isinstance(a, sympy.sin)]
     shorter = True
     while shorter and polynomial:
         shorter = False
@@ -163,10 +163,11 @@ def _pythagoras(polynomial, atoms, gens, position):
 def _reduce(polynomial, square: int, other: int, gens):
     """x² → 1 − y² in every term (x the generator at `square`, y at `other`), on the dictionary of
     terms: (1 − y²)ᵏ by the binomial theorem."""
-    if all(monomial[square] < 2 for monomial in polynomial):
+    changed = [(monomial, coefficient) for monomial, coefficient in polynomial.items() if monomial[square] >= 2]
+    if not changed:
         return polynomial
-    out: dict = {}
-    for monomial, coefficient in polynomial.items():
+    out = {monomial: coefficient for monomial, coefficient in polynomial.items() if monomial[square] < 2}
+    for monomial, coefficient in changed:
         power = monomial[square]
         kept = list(monomial)
         kept[square] = power % 2
@@ -174,10 +175,13 @@ def _reduce(polynomial, square: int, other: int, gens):
         for k in range(power // 2 + 1):
             kept[other] = base + 2 * k
             key = tuple(kept)
-            value = out.get(key, 0) + coefficient * math.comb(power // 2, k) * (-1) ** k
-            if value:
-                out[key] = value
+            factor = math.comb(power // 2, k) * (-1) ** k
+            value = coefficient if factor == 1 else coefficient * factor  # rationals are slow: skip × 1 and 0 +
+            known = out.get(key)
+            total = value if known is None else known + value
+            if total:
+                out[key] = total
             else:
-                out.pop(key, None)
+                del out[key]
     return polynomial.ring(out)
 

@@ -19,7 +19,7 @@ import math
 import sympy
 
 from ..core.size import tree_size
-from .tape import cost
+from .tape import operation_count
 
 MAX_TERMS = 20_000  # of all the printed elements, multiplied out; past this they are not written out
 
@@ -40,12 +40,13 @@ def compact(expr: sympy.Expr, masses=(), memo: dict | None = None, multiplied: b
     if symbols:
         by_mass = sympy.collect(summed, symbols, evaluate=False)
         candidates.append(sympy.Add(*[key * grouped(value) for key, value in by_mass.items()]))
-    return min(candidates, key=_cost)
+    counted: dict = {}  # the candidates share their products of cos/sin: counted once
+    return min(candidates, key=lambda candidate: _cost(candidate, counted))
 
 
-def _cost(expr: sympy.Expr) -> tuple:
+def _cost(expr: sympy.Expr, memo: dict) -> tuple:
     """Operations as code counts them, then the size of the tree: a fast stand-in for count_ops."""
-    return cost(expr).total, tree_size(expr)
+    return operation_count(expr, memo), tree_size(expr)
 
 
 def sum_formulas(expr: sympy.Expr, memo: dict | None = None) -> sympy.Expr:
@@ -74,7 +75,7 @@ def sum_formulas(expr: sympy.Expr, memo: dict | None = None) -> sympy.Expr:
         for key in list(terms):
             if key in terms and _combine(terms, key):
                 changed = True
-    return sympy.Add(*[number * sympy.Mul(*[f ** k for f, k in key]) for key, number in terms.items()])
+    return sympy.Add(*[sympy.Mul(number, *[f ** k for f, k in key]) for key, number in terms.items()])
 
 
 def _multiset(factors) -> frozenset:
@@ -83,6 +84,16 @@ def _multiset(factors) -> frozenset:
     for factor in factors:
         base, power = (factor.base, factor.exp) if factor.is_Pow and factor.exp.is_Integer else (factor, 1)
         counted[base] = counted.get(base, 0) + power
+    return frozenset(counted.items())
+
+
+def _joined(multiset: frozenset, factors: list) -> frozenset:
+    """The multiset of a product's factors with `factors` multiplied in (each to the power 1),
+    counted without building the product."""
+    counted = dict(multiset)
+    for factor in factors:
+        if not factor.is_Number:  # a sum formula that came out a number (cos(π/2 + x) − …) leaves no factor
+            counted[factor] = counted.get(factor, 0) + 1
     return frozenset(counted.items())
 
 
@@ -97,7 +108,7 @@ def _combine(terms: dict, key: frozenset) -> bool:
         if a == b:
             continue
         rest = key - {(first, 1), (second, 1)}
-        partner = _multiset([f ** k for f, k in rest] + [swap[type(first)](a), swap[type(second)](b)])
+        partner = _joined(rest, [swap[type(first)](a), swap[type(second)](b)])
         other = terms.get(partner)
         if other is None or abs(other) != abs(number):
             continue
@@ -110,14 +121,22 @@ def _combine(terms: dict, key: frozenset) -> bool:
             merged = sympy.sin(a + b) if same else sympy.sin(a - b)
         else:  # cos a sin b ± sin a cos b
             merged = sympy.sin(a + b) if same else -sympy.sin(a - b)
+        if not all(_signed_sum(f.args[0]) for f in merged.atoms(sympy.cos, sympy.sin)):
+            continue  # c2 s23 + s2 c23 stays: sin(2θ2 + θ3) has no c/s abbreviation
         del terms[key], terms[partner]
         coefficient, factor = (number * merged).as_coeff_Mul()
-        joined = _multiset([f ** k for f, k in rest] + [factor])
+        joined = _joined(rest, [factor])
         terms[joined] = terms.get(joined, 0) + coefficient
         if terms[joined] == 0:
             del terms[joined]
         return True
     return False
+
+
+def _signed_sum(angle: sympy.Expr) -> bool:
+    """Whether `angle` is a sum of angles each taken once, ±θ1 ± θ2 … (and a constant): what
+    c/s notation writes as c12, s2-3; 2θ2 + θ3 it cannot."""
+    return all(term.as_coeff_Mul()[0] in (1, -1) for term in sympy.Add.make_args(angle) if term.free_symbols)
 
 
 def _split(term: sympy.Expr) -> tuple:

@@ -109,6 +109,8 @@ def _article(robot: Robot, content: list[Section], page: Page) -> str:
         if section.part != part:
             part = section.part
             out.append(f"\\subsection*{{{part}}}\n")
+        if section.headed:
+            out.append(f"\\subsubsection*{{{section.title}}}\n")
         out.extend([_join(flat(section.items)), ""])
     out.append("\\end{document}\n")
     return "\n".join(out)

@@ -16,6 +16,7 @@ Laid out by the one rule of the documents: every element is a line of ``aligned`
 """
 from __future__ import annotations
 
+import dataclasses
 import re
 
 import sympy
@@ -122,7 +123,7 @@ def all_sections(robot, result, page: Page, method: str = "lagrange", steps: boo
 
         out += regressor_sections(robot, page, printer)
         out[-1].items.extend(legend_items(printer, page))
-    return out
+    return [dataclasses.replace(section, headed=True) for section in out]  # M, C, g … each under its own heading
 
 
 def document_sections(robot, page: Page, steps: bool = False) -> list[Section]:

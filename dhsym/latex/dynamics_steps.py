@@ -61,13 +61,12 @@ def _rows(printer, records, page: Page) -> Rows:
 
 def steps_sections(robot, result, page: Page, printer, method: str = "lagrange") -> list[Section]:
     """Lagrange's steps or Craig's passes, a section per link."""
-    chain, masses = robot.chain, robot.filled_masses()
-    first = robot.frame_offset
+    chain, masses, numbering = robot.chain, robot.filled_masses(), robot.numbering
     if method == "lagrange":
         from ..dynamics.lagrange_steps import lagrange_steps
 
         steps = lagrange_steps(chain, masses, result)
-        out = [Section(PART, f"Lagrange: link {step.link + first}",
+        out = [Section(PART, f"Lagrange: link {numbering.frame(step.link)}",
                        ([paragraph(LAGRANGE["links"], page)] if k == 0 else []) + [_rows(printer, [step], page)])
                for k, step in enumerate(steps.links)]
         out.append(Section(PART, "Lagrange: the derivatives of $M$",
@@ -81,7 +80,7 @@ def steps_sections(robot, result, page: Page, printer, method: str = "lagrange")
     steps = newton_euler_steps(chain, masses)
     out = []
     for k, (step, centre, inertia) in enumerate(zip(steps.outward, steps.centres, steps.inertias)):
-        number = step.link + first
+        number = numbering.frame(step.link)
         intro = [paragraph(NEWTON["outward"], page)] + ([] if steps.own_frames else
                                                         [paragraph(NEWTON["joint frames"], page)])
         about = paragraph(f"$P_{{C_{{{number}}}}} = {printer.vector(centre)}$, ${{}}^{{C}}I_{{{number}}}$ "

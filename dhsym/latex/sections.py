@@ -50,6 +50,7 @@ class Section:
     part: str  # heading that groups sections in an article: "DH table", "Link matrices", …
     title: str  # frame title, LaTeX text with math in $…$
     items: list = field(default_factory=list)  # Blocks and Rows
+    headed: bool = False  # an article prints the title too, under its part's heading
 
 
 def sections(robot: Robot, start: Frame, end: Frame, steps: bool, page: Page, printer: LatexPrinter) -> list[Section]:

@@ -1,6 +1,5 @@
 """A robot's equations of motion for notebooks and programs: what `dhsym.equations_of_motion(robot)`
-returns (and `robot.dynamics()` of the notebook Robot, once the facade has it: this module belongs
-in dhsym/api/ with it; it stands above every layer it calls).
+returns, and `robot.dynamics()` of the notebook Robot.
 
     elbow = dhsym.equations_of_motion(dhsym.load("spong_elbow"))
     elbow.M, elbow.C, elbow.g               # SymPy matrices in textbook form (d_ij, Spong's φ_k)
@@ -26,10 +25,9 @@ import json
 import sympy
 
 from ..dynamics.derive import derive
-from ..dynamics.equations import first_links, textbook_layout
-from ..errors import UserError
+from ..dynamics.equations import links_to_frame, textbook_layout
+from ..latex.display import Latex
 from ..printing.dynamics import MotionTextPrinter, json_dynamics, text_dynamics
-from .display import Latex
 
 
 def robot_dynamics(robot, to: int | None = None) -> "RobotDynamics":
@@ -37,11 +35,8 @@ def robot_dynamics(robot, to: int | None = None) -> "RobotDynamics":
     where it gives none), in textbook form, of its links up to frame `to` (numbered as the robot
     prints its frames; all of them by default); a robot too large to print is refused at once."""
     if to is not None:
-        last = to - robot.frame_offset
-        if not 0 < last <= robot.chain.n:
-            raise UserError(f"to={to}: the last frame whose link moves is one of {robot.frame_offset + 1}.."
-                            f"{robot.frame_offset + robot.chain.n}")
-        robot = first_links(robot, last)
+        robot = links_to_frame(robot, to, lambda first, last: f"to={to}: the last frame whose link moves is one "
+                               f"of {first}..{last}")
     return RobotDynamics(robot, derive(robot.chain, robot.filled_masses()))
 
 
@@ -70,8 +65,8 @@ class RobotDynamics:
     @property
     def christoffel(self) -> dict:
         """{(i, j, k): c_ijk} that are not zero, joints numbered as the robot prints them."""
-        shift = self.robot.frame_offset
-        return {(i + shift, j + shift, k + shift): value for (i, j, k), value in self.result.christoffel.items()}
+        joint = self.robot.numbering.joint
+        return {(joint(i), joint(j), joint(k)): value for (i, j, k), value in self.result.christoffel.items()}
 
     @property
     def variables(self) -> tuple:
@@ -127,19 +122,19 @@ class RobotDynamics:
 
     def latex(self, steps: bool = False, method: str = "lagrange", regressor: bool = False) -> Latex:
         """The derivation as one display for Jupyter (print() shows its source)."""
-        from .dynamics import notebook_display
+        from ..latex.dynamics import notebook_display
 
         return notebook_display(self.robot, self.result, method, steps, regressor)
 
     def show(self, *names: str) -> Latex:
         """Some elements by name, laid out for the notebook: show("d22", "c121", "phi2", "tau1")."""
-        from .dynamics import notebook_elements
+        from ..latex.dynamics import notebook_elements
 
         return notebook_elements(self.robot, self.result, names)
 
     def matrix(self, value, name: str = "") -> Latex:
         """Any matrix of these equations (Ṁ − 2C, a Jacobian) as the notebook shows it, rates dotted."""
-        from .dynamics import notebook_matrix
+        from ..latex.dynamics import notebook_matrix
 
         return notebook_matrix(self.robot, self.result, value, name)
 
