@@ -158,4 +158,4 @@ def first_links(robot, last: int):
     part = Chain(chain.rows[:last], chain.convention, chain.base)
     symbols = part.symbols | kept.symbols(last, offset + 1)
     return robot.replace(chain=part, masses=kept, sample={s: v for s, v in robot.sample.items() if s in symbols},
-                         name=f"{robot.name}, to frame {last + offset}")
+                         joint_limits=robot.joint_limits[:last], name=f"{robot.name}, to frame {last + offset}")
