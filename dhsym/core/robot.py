@@ -28,6 +28,8 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
+import sympy
+
 from ..errors import UserError
 from .chain import Chain, plain
 from .inertia import MassModel
@@ -80,7 +82,7 @@ class Robot:
         object.__setattr__(self, "sample", MappingProxyType(dict(self.sample)))
         object.__setattr__(self, "warnings", tuple(self.warnings))
         object.__setattr__(self, "numbers", self.numbers or WrittenNumbers())
-        limits = tuple(None if pair is None else tuple(pair) for pair in self.joint_limits)
+        limits = tuple(None if pair is None else tuple(map(sympy.sympify, pair)) for pair in self.joint_limits)
         if limits and len(limits) != self.chain.n:
             raise ValueError(f"{len(limits)} joints' limits for {self.chain.n} joints")
         object.__setattr__(self, "joint_limits", limits if any(limits) else ())
