@@ -28,6 +28,7 @@ import yaml
 
 from ..errors import UserError
 from .suspicious import looks_like_degrees
+from .yamlhints import node_kind
 
 ROW_KEY = "limits"
 FORM = "[lower, upper] (the least and the greatest value of the joint variable)"
@@ -46,7 +47,9 @@ def read_joint_limits(reader, top: dict, chain) -> tuple:
 
 
 def _pair(reader, node: yaml.Node, what: str, row, variables) -> tuple:
-    entries = reader.sequence(node, what)
+    if not isinstance(node, yaml.SequenceNode):
+        raise UserError(f"{what}: must be {FORM}, not {node_kind(node)}", reader.where(node))
+    entries = node.value
     if len(entries) != 2:
         raise UserError(f"{what}: must be {FORM}, two values, not {len(entries)}", reader.where(node))
     lower, upper = (_value(reader, entry, what, side, row, variables)
@@ -73,7 +76,7 @@ def _value(reader, node: yaml.Node, what: str, side: str, row, variables) -> sym
                         reader.where(node))
     if not value.is_real:
         raise UserError(f"{what}: the {side} limit {value} is not a real number", reader.where(node))
-    if row.joint == "P" and any(not inside for _, _, inside in reading.units):
-        raise UserError(f"{what}: joint {row.variable} slides, so its limits are lengths, not angles",
-                        reader.where(node))
+    angles = [where for _, where, inside_trig in reading.units if not inside_trig]
+    if row.joint == "P" and angles:
+        raise UserError(f"{what}: joint {row.variable} slides, so its limits are lengths, not angles", angles[0])
     return value
