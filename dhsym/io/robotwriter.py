@@ -79,6 +79,7 @@ class _Values:
     def __init__(self, robot: Robot):
         self.numbers = robot.numbers
         self.roundings: list[Rounding] = []
+        self.limits: list = []  # each row's joint limits as they will read back
 
     def written(self, value, label: str, place: str, length: bool = False):
         """(value as it will read back, its text) for a value of the table at `place`; a
@@ -149,7 +150,7 @@ def robot_yaml(robot: Robot, notes: str | None = None) -> str:
                         "MiB, so none was written")
     masses = MassModel(tuple(links) if robot.masses.links else (), gravity)
     written = robot.replace(chain=Chain(rows, chain.convention, steps["base"], steps["tool"]), notes=all_notes,
-                            sample=sample, masses=masses)
+                            sample=sample, masses=masses, joint_limits=values.limits)
     _check_reads_back(text, written)
     return text
 
@@ -250,12 +251,19 @@ def _limits_field(pair, joint: str, values: _Values, place: str) -> list[str]:
     ['limits: [-90deg, 0.3]']
     """
     if pair is None:
+        values.limits.append(None)
         return []
-    texts = []
+    texts, written = [], []
     for value in pair:
         degrees = value * 180 / sympy.pi
-        whole = joint == "R" and value != 0 and degrees.is_Integer
-        texts.append(f"{degrees}deg" if whole else _yaml_value(values.written(value, place, place)[1]))
+        if joint == "R" and value != 0 and degrees.is_Integer:
+            written.append(value)
+            texts.append(f"{degrees}deg")
+        else:
+            value, text = values.written(value, place, place)
+            written.append(value)
+            texts.append(_yaml_value(text))
+    values.limits.append(tuple(written))
     return [f"limits: [{', '.join(texts)}]"]
 
 
