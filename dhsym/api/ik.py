@@ -6,6 +6,8 @@ it), the text of `dhsym ik` and the standalone numpy module of `dhsym ik --forma
     ik = puma.ik()
     [branch.name for branch in ik.branches]         # eight named configurations
     ik.evaluate(T)                                  # (8, 6) joint values, NaN where none
+    ik.evaluate(T, within_limits=True)              # NaN too where a joint is outside its limits
+    ik.nearest(ik.evaluate(T), q_now)               # the branch nearest the joint values q_now
     ik.latex()                                      # the derivation, rendered by Jupyter
     print(ik.code())                                # ik(T, **constants), numpy only
 
@@ -23,6 +25,7 @@ from ..core.chain import Chain
 from ..core.robot import Robot
 from ..inverse import solve
 from ..inverse.codegen import module_text
+from ..inverse.codegen_limits import joint_limit_lists, limits_section
 from ..inverse.evaluate import Program
 from ..latex.ik import notebook_display
 from ..printing.ik_solution import json_solution, text_solution
@@ -85,15 +88,43 @@ class InverseKinematics:
     def joint_variables(self):
         return self.solution.joint_variables
 
-    def evaluate(self, T, **constants):
+    def evaluate(self, T, within_limits: bool = False, **constants):
         """Every branch's joint values for the pose T (4×4) or poses (N×4×4), NaN where a branch
         does not exist; constants default to the robot file's sample values; a name the robot
-        does not have is an error that names those it has."""
-        return self._compiled()(T, constants)
+        does not have is an error that names those it has. `within_limits`: NaN also for each
+        branch with a joint outside the robot's joint limits, revolute angles moved by whole turns
+        into their limits (dhsym.inverse.joint_limits); a robot without limits keeps every branch."""
+        values = self._compiled()(T, constants)
+        if not within_limits:
+            return values
+        from ..inverse.joint_limits import within_joint_limits  # numpy, as evaluate is
+
+        return within_joint_limits(values, *self._limits())
+
+    def nearest(self, solutions, q_current):
+        """The branch of `solutions` (what `evaluate` gives, (B, n) or (N, B, n)) nearest the joint
+        values `q_current` (n,), in the order of `joint_variables`: the least sum of squared
+        differences, revolute angles compared modulo 2π; NaN where no branch exists."""
+        from ..inverse.joint_limits import nearest_branch
+
+        return nearest_branch(solutions, q_current, self._limits()[2])
+
+    def _limits(self) -> tuple:
+        """(lower, upper, revolute), numpy arrays in the order of `joint_variables`."""
+        import numpy
+
+        robot = self.robot
+        lists = joint_limit_lists(robot.chain, getattr(robot, "joint_limits", ()), self.joint_variables)
+        return tuple(numpy.array(values) for values in lists)
 
     def code(self, command: str = "") -> str:
-        """The standalone numpy module (`dhsym ik --format python`)."""
-        return module_text(self.solution, self.robot.name, command)
+        """The standalone numpy module (`dhsym ik --format python`); for a robot with joint limits
+        its `ik(T, within_limits=True)` drops the branches outside them, and `nearest(Q, q)` picks one."""
+        text = module_text(self.solution, self.robot.name, command)
+        if not getattr(self.robot, "joint_limits", ()):
+            return text
+        return text.rstrip("\n") + "\n" + limits_section(*joint_limit_lists(
+            self.robot.chain, self.robot.joint_limits, self.joint_variables))
 
     def function(self):
         """`ik(T, **constants)` of the generated module, ready to call."""

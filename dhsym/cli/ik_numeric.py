@@ -53,7 +53,7 @@ def run(robot, args, refusal: str = "") -> str:
     if args.format == "json":
         from ..printing.ik_numeric import numeric_json
 
-        return json.dumps(numeric_json(found, refusal), indent=2, ensure_ascii=False)
+        return json.dumps(numeric_json(found, refusal, robot), indent=2, ensure_ascii=False)
     from ..printing.ik_numeric import numeric_text
 
     return numeric_text(found, args.width, args.ascii, robot=robot, refusal=refusal)

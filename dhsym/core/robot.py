@@ -28,6 +28,8 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
+import sympy
+
 from ..errors import UserError
 from .chain import Chain, plain
 from .inertia import MassModel
@@ -41,8 +43,9 @@ class Robot:
     constants, for pictures and numeric checks), `numbers` (how the file wrote its numbers, so
     that printers write them back the same way), `frame_offset` (the number printed for the
     chain's frame 0: a robot file's `first_frame`), `file` (the file it was read from) and
-    `warnings` (what its reading noticed: "FILE:LINE:COL: message") and `masses` (its links'
-    inertial parameters and gravity, dhsym.core.inertia).
+    `warnings` (what its reading noticed: "FILE:LINE:COL: message"), `masses` (its links'
+    inertial parameters and gravity, dhsym.core.inertia) and `joint_limits` (empty, or for each
+    joint None or its (lower, upper) exact numbers, in the joint variable's units: radians, lengths).
 
     >>> import sympy
     >>> from dhsym.core.chain import DHRow
@@ -62,6 +65,7 @@ class Robot:
     file: str = ""
     warnings: tuple = ()
     masses: MassModel = MassModel()
+    joint_limits: tuple = ()
 
     def __post_init__(self):
         if not isinstance(self.chain, Chain):
@@ -78,6 +82,10 @@ class Robot:
         object.__setattr__(self, "sample", MappingProxyType(dict(self.sample)))
         object.__setattr__(self, "warnings", tuple(self.warnings))
         object.__setattr__(self, "numbers", self.numbers or WrittenNumbers())
+        limits = tuple(None if pair is None else tuple(map(sympy.sympify, pair)) for pair in self.joint_limits)
+        if limits and len(limits) != self.chain.n:
+            raise ValueError(f"{len(limits)} joints' limits for {self.chain.n} joints")
+        object.__setattr__(self, "joint_limits", limits if any(limits) else ())
 
     def __reduce__(self):
         """Pickled and deep-copied as the fields it was made from (its sample a plain dict: a

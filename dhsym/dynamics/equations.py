@@ -159,7 +159,7 @@ def first_links(robot, last: int):
     part = Chain(chain.rows[:last], chain.convention, chain.base)
     symbols = part.symbols | kept.symbols(last, numbering.first_joint)
     return robot.replace(chain=part, masses=kept, sample={s: v for s, v in robot.sample.items() if s in symbols},
-                         name=f"{robot.name}, to frame {numbering.frame(last)}")
+                         joint_limits=robot.joint_limits[:last], name=f"{robot.name}, to frame {numbering.frame(last)}")
 
 
 def links_to_frame(robot, frame: int, refused):

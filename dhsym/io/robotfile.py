@@ -33,13 +33,15 @@ from ..errors import Location, UserError
 from .expr import Reading, parse_expression
 from .inertia import ROW_KEYS as INERTIA_KEYS
 from .inertia import read_masses
+from .jointlimits import ROW_KEY as LIMITS_KEY
+from .jointlimits import read_joint_limits
 from .suspicious import decimal_angle, looks_like_degrees, misplaced_variable, misspelt_pi, printed_key, printed_text
 from .yamlhints import glued_key, node_kind
 from .yamlsafe import MAX_JOINTS, YAML_TAG, compose, mark_location, read_text_file
 
 TOP_KEYS = ("name", "source", "convention", "joints", "axes", "base", "tool", "sample", "notes", "first_frame",
             "gravity")
-ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var", *INERTIA_KEYS)
+ROW_KEYS = ("joint", "alpha", "a", "d", "theta", "var", LIMITS_KEY, *INERTIA_KEYS)
 _JOINT_TYPES = {"r": "R", "revolute": "R", "p": "P", "prismatic": "P"}
 LENGTHS = ("a", "d", "Tx", "Ty", "Tz")  # fields that hold distances; the others hold angles
 
@@ -208,6 +210,7 @@ class _Reader:
         return Robot(chain, name=self.optional_text(top, "name", Path(self.filename).stem), masses=masses,
                      source=self.optional_text(top, "source", ""), notes=notes, sample=sample,
                      numbers=self.reading.numbers,  # how the table's fields wrote numbers, for the printers
+                     joint_limits=read_joint_limits(self, top, chain) if "axes" not in top else (),
                      frame_offset=first_frame, file=self.filename, warnings=self.warnings + self.snaps.warnings())
 
     def dh_chain(self, top: dict, convention: str) -> Chain:

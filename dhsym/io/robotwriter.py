@@ -79,6 +79,7 @@ class _Values:
     def __init__(self, robot: Robot):
         self.numbers = robot.numbers
         self.roundings: list[Rounding] = []
+        self.limits: list = []  # each row's joint limits as they will read back
 
     def written(self, value, label: str, place: str, length: bool = False):
         """(value as it will read back, its text) for a value of the table at `place`; a
@@ -149,7 +150,7 @@ def robot_yaml(robot: Robot, notes: str | None = None) -> str:
                         "MiB, so none was written")
     masses = MassModel(tuple(links) if robot.masses.links else (), gravity)
     written = robot.replace(chain=Chain(rows, chain.convention, steps["base"], steps["tool"]), notes=all_notes,
-                            sample=sample, masses=masses)
+                            sample=sample, masses=masses, joint_limits=values.limits)
     _check_reads_back(text, written)
     return text
 
@@ -176,6 +177,8 @@ def _joint_lines(robot: Robot, values: _Values, lines: list) -> tuple[list[DHRow
             fields.append(f"{key}: {_yaml_value(text)}")
         if len(written[moving].free_symbols) > 1 or _looks_misplaced(row.joint, written):
             fields.append(f"var: {row.variable.name}")
+        pair = robot.joint_limits[number - 1] if robot.joint_limits else None
+        fields += _limits_field(pair, row.joint, values, f"joint row {number} limits")
         fields += _inertia_fields(robot.masses.link(number), values, f"joint row {number}", links)
         lines.append("  - {" + ", ".join(fields) + "}")
         rows.append(DHRow(row.joint, written["theta"], written["d"], written["a"], written["alpha"], row.variable))
@@ -214,8 +217,8 @@ def _check_reads_back(text: str, robot: Robot) -> None:
             from None
     same = [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in again.chain.rows] == \
         [(r.joint, r.theta, r.d, r.a, r.alpha, r.variable) for r in robot.chain.rows]
-    same_details = [getattr(again, key) for key in ("name", "source", "notes", "sample", "frame_offset", "masses")] \
-        == [getattr(robot, key) for key in ("name", "source", "notes", "sample", "frame_offset", "masses")]
+    details = ("name", "source", "notes", "sample", "frame_offset", "masses", "joint_limits")
+    same_details = [getattr(again, key) for key in details] == [getattr(robot, key) for key in details]
     fixed = [list(again.chain.base), list(again.chain.tool)] == [list(robot.chain.base), list(robot.chain.tool)]
     if not (same and same_details and fixed):
         raise UserError("the robot file dhsym would write reads back as a different chain; nothing was written")
@@ -237,6 +240,31 @@ def _inertia_fields(link: LinkInertia, values: _Values, place: str, links: list)
             fields.append(f"{key}: {_list(written[key], values.numbers)}")
     links.append(LinkInertia(**written))
     return fields
+
+
+def _limits_field(pair, joint: str, values: _Values, place: str) -> list[str]:
+    """`limits: [-160deg, 160deg]` of a row that has limits: a revolute joint's in whole degrees
+    where they are, as datasheets give them (they read back exactly: 160deg is 8π/9).
+
+    >>> from dhsym.io.library import load
+    >>> _limits_field((-sympy.pi / 2, sympy.Rational(3, 10)), "R", _Values(load("planar2r")), "joint row 1 limits")
+    ['limits: [-90deg, 0.3]']
+    """
+    if pair is None:
+        values.limits.append(None)
+        return []
+    texts, written = [], []
+    for value in pair:
+        degrees = value * 180 / sympy.pi
+        if joint == "R" and value != 0 and degrees.is_Integer:
+            written.append(value)
+            texts.append(f"{degrees}deg")
+        else:
+            value, text = values.written(value, place, place)
+            written.append(value)
+            texts.append(_yaml_value(text))
+    values.limits.append(tuple(written))
+    return [f"limits: [{', '.join(texts)}]"]
 
 
 def _list(entries, numbers) -> str:

@@ -39,6 +39,7 @@ from ..geometry.exact import LENGTH_NOISE, rational_turn, snap_direction, tidy_v
 from ..geometry.lines import JointAxis
 from .suspicious import looks_like_degrees, near_multiple_of_pi
 from .urdfinertia import link_bodies
+from .urdflimits import path_limits
 from .xmlsource import MAX_XML_BYTES, parse_xml_text, read_regular_file
 
 MAX_URDF_BYTES = MAX_XML_BYTES
@@ -66,6 +67,7 @@ class UrdfChain:
     joint_names: list
     warnings: list = field(default_factory=list)
     bodies: list = field(default_factory=list)  # each moving joint's link, merged (io.urdfinertia), or None
+    limits: list = field(default_factory=list)  # each moving joint's (lower, upper) or None (io.urdflimits)
 
 
 def read_urdf(path: str | Path, base: str | None = None, tip: str | None = None) -> UrdfChain:
@@ -251,10 +253,10 @@ class _Reader:
             names.append(name)
         if not axes:
             raise UserError(f"no revolute, continuous or prismatic joint between {base!r} and {tip!r}")
-        bodies = link_bodies(self, path, poses)
+        bodies, limits = link_bodies(self, path, poses), path_limits(self, path)
         self.report()
         robot_name = self.root.get("name") or Path(self.filename).stem
-        return UrdfChain(robot_name, self.filename, base, tip, axes, pose, names, self.warnings, bodies)
+        return UrdfChain(robot_name, self.filename, base, tip, axes, pose, names, self.warnings, bodies, limits)
 
     def numbers(self, element, key: str, default: str, count: int = 3) -> list:
         """The written numbers of an attribute, exact; noise below 1e-9 is 0 (and remembered)."""

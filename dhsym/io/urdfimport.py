@@ -63,7 +63,7 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     robot = assignment.robot(
         name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}",
         notes=joined(notes, inertia_note(urdf.bodies, rounded)), masses=masses,
-        sample={GRAVITY_SYMBOL: G_SAMPLE} if masses.given else {},
+        sample={GRAVITY_SYMBOL: G_SAMPLE} if masses.given else {}, joint_limits=urdf.limits,
         warnings=[*expansion_warnings, *urdf.warnings, *odd])
 
     return Imported(robot, list(urdf.joint_names))

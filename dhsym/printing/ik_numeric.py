@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy
 
 from . import render
+from .ik_limits import limits_json, limits_sentence, outside_limits
 from .ik_solution import ascii_text
 from .names import display_name
 
@@ -32,7 +33,7 @@ def numeric_text(found, width: int = 100, ascii: bool = False, robot=None, refus
     if robot is not None:
         blocks.append(_arm_block(robot, inverse, ascii, width))
     blocks.append(_target_block(found, robot, ascii, width))
-    blocks.append(_solutions_block(found, ascii, width))
+    blocks.append(_solutions_block(found, ascii, width, robot))
     text = "\n\n".join(blocks)
     return ascii_text(text.replace("←", "<-")) if ascii else text
 
@@ -45,9 +46,13 @@ def method_sentence(inverse) -> str:
             f"kept once, when it reaches the target within {_power(inverse.runtime()['tolerance'])}.")
 
 
-def numeric_json(found, refusal: str = "") -> dict:
-    """The answer for programs: plain numbers, joint values in the order of `joint_variables`."""
+def numeric_json(found, refusal: str = "", robot=None) -> dict:
+    """The answer for programs: plain numbers, joint values in the order of `joint_variables`; for
+    a `robot` with joint limits, the limits and the joints of each solution outside them."""
     inverse = found.inverse
+    limits = {} if robot is None or not robot.joint_limits else {
+        "joint_limits": limits_json(robot),
+        "outside_limits": outside_limits(robot, inverse.joint_variables, found.solutions)}
     return {
         "robot": inverse.arm.name,
         "convention": inverse.arm.convention,
@@ -64,6 +69,7 @@ def numeric_json(found, refusal: str = "") -> dict:
         "solutions": found.solutions.tolist(),
         "joints_among_solutions": found.among,
         "singular": found.singular,
+        **limits,
     }
 
 
@@ -100,9 +106,10 @@ def _target_block(found, robot, ascii, width) -> str:
     return text
 
 
-def _solutions_block(found, ascii, width) -> str:
+def _solutions_block(found, ascii, width, robot=None) -> str:
     inverse = found.inverse
     count = len(found.solutions)
+    outside = outside_limits(robot, inverse.joint_variables, found.solutions) if robot is not None else []
     units = "angles in radians" + (", lengths in the file's units" if "P" in inverse.arm.kinds else "")
     head = (f"{count} solution{'s' if count != 1 else ''} (every real one, each once; {units})"
             if count else "No solution: the target is out of the arm's reach")
@@ -112,10 +119,17 @@ def _solutions_block(found, ascii, width) -> str:
     rows = [[str(k + 1)] + [_number(x) for x in solution] for k, solution in enumerate(found.solutions)]
     widths = [max(len(row[k]) for row in [header] + rows) for k in range(len(header))]
     lines = ["  ".join(cell.rjust(w) for cell, w in zip(row, widths)) for row in [header] + rows]
+    for k, names in enumerate(outside):
+        lines[k + 1] += f"   outside limits: {', '.join(_name(name) for name in names)}" if names else ""
     if found.among is not None:
         lines[found.among + 1] += "   ← the joints that made the target"
     elif not found.replaced:
         lines.append("(the joints that made the target are not among them: a singular configuration)")
+    if robot is not None and robot.joint_limits:
+        within = sum(not names for names in outside)
+        lines.append(render.wrap(f"{within} of {count} within the joint limits. "
+                                 + limits_sentence(robot, lambda symbol: _name(symbol.name)), width, "  ")
+                     .replace("\u00a0", " "))
     return render.wrap(head + ":", width, "  ") + "\n" + "\n".join(lines)
 
 

@@ -30,6 +30,7 @@ from .ik import (
     target_title,
     variable_list,
 )
+from .ik_limits import limits_json, limits_sentence
 from .ik_lines import assignments_text
 from .ik_sentences import PlainSentences, wrap_sentence
 from .names import GREEK_NAMES
@@ -59,6 +60,8 @@ def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str
     for number, branch in enumerate(solution.branches, 1):
         heading = render.wrap(f"Branch {number}: {branch.name}", width, "  ")
         blocks.append(heading + "\n" + assignments_text(branch.assignments, printer, width))
+    limits = limits_sentence(robot, printer.doprint, solution.joint_variables)  # which hold depends on the target
+    blocks += [wrap_sentence(limits, width, "  ").replace("\u00a0", " ")] if limits else []
     for title, lines in (("Exists when", solution.conditions), ("Degenerate", solution.degenerate)):
         if lines:
             blocks.append(f"{title}:\n" + "\n".join(wrap_sentence("  " + printer.sentence(line), width, "    ")
@@ -87,7 +90,8 @@ def uses_atan2(solution) -> bool:
 
 
 _ASCII = {"−": "-", "–": "-", "≥": ">=", "≤": "<=", "≠": "!=", "·": "*", "×": "x", "√": "sqrt", "±": "+-",
-          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0", "′": "'", "ʹ": "'"}
+          "→": "->", "…": "...", "²": "^2", "³": "^3", "⁻": "^-", "¹": "^1", "₀": "0", "′": "'", "ʹ": "'",
+          "∈": "in", "°": "deg", "’": "'"}
 
 
 def ascii_text(text: str) -> str:
@@ -126,4 +130,5 @@ def json_solution(solution, robot) -> dict:
         "conditions": [plain.sentence(said) for said in solution.conditions],
         "degenerate": [plain.sentence(said) for said in solution.degenerate],
         "angles_solved_as_one": pairs(angle_meanings(solution)),
+        **({"joint_limits": limits_json(robot, solution.joint_variables)} if robot.joint_limits else {}),
     }
