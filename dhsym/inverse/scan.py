@@ -48,13 +48,15 @@ class Derivation:
 
 
 def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, prefer=("position",),
-         constants=frozenset(), witness: dict | None = None, unique=frozenset()) -> Derivation:
+         constants=frozenset(), witness: dict | None = None, unique=frozenset(), first=()) -> Derivation:
     """Solve `equations` for `unknowns` (in the order a textbook numbers them); `prismatic` is the
     set of those that are slides; `constants` the robot's lengths (never zero). `witness` gives
     numbers for every name at one generic pose: an equation whose coefficients vanish there says
     nothing (0 = 0 once earlier results hold) and is passed over. The joints in `unique` are
     solved only by a rule with one root (their two roots were found not both to reach the pose:
-    dhsym.inverse.reach). Raises UserError when no sub-problem applies."""
+    dhsym.inverse.reach). The unknowns in `first` are solved before the others, in that order,
+    wherever an equation gives them (a wrist's θ5, then θ4, as the books do). Raises UserError
+    when no sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
     memos = Memos()  # this search's own: nothing kept between searches, nothing shared by two at once
@@ -62,7 +64,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
     while remaining:
-        option = best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, memos, unique)
+        option = best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, memos, unique,
+                      frozenset([v for v in first if v in remaining][:1]))
         if option is None:
             solved = [str(v) for v in unknowns if v not in remaining]
             raise NoClosedForm("no closed form by the course's rules: "
