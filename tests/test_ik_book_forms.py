@@ -57,3 +57,42 @@ def test_every_branch_reaches_the_pose_and_the_singular_wrist_gives_a_member(nam
         for branch in real:
             reached = fk.xreplace({**constants, **dict(zip(solution.joint_variables, map(sympy.Float, branch)))})
             assert numpy.abs(numpy.array(reached.evalf(), dtype=float) - target).max() < 1e-6
+
+
+def test_the_ur5s_law_of_cosines_is_written_in_the_coordinates_theta2_uses():
+    # Hawkins: cos θ3 = (X² + Y² − a2² − a3²)/(2 a2 a3) with X, Y the wrist's coordinates in the arm's plane
+    branch = _branches("ur5")[0]
+    assert "X    = px c1 + py s1 + d6 s5 cθ234 − d5 sθ234" in branch
+    assert "Y    = pz + d6 s5 sθ234 + d5 cθ234 − d1" in branch
+    assert "D    = (X² + Y² − a2² − a3²)/(2 a2 a3)" in branch
+    assert "θ2   = atan2(Y(a2 + a3 c3) − X a3 s3, Y a3 s3 + X(a2 + a3 c3))" in branch
+
+
+def test_the_planar_3r_names_its_wrist_point_and_writes_d_in_it():
+    # Craig's and Spong's planar 3R: the wrist point (x, y) = (px − l3 cφ, py − l3 sφ), then the 2R's D
+    text = run_dhsym("ik", "planar3r", "--width", "200").stdout
+    for line in ("X    = px − l3 cθ123", "Y    = py − l3 sθ123", "D    = (X² + Y² − l1² − l2²)/(2 l1 l2)",
+                 "θ1 = atan2(Y(l1 + l2 c2) − X l2 s2, Y l2 s2 + X(l1 + l2 c2))"):
+        assert line in text, line
+    assert "r11" not in text.split("Branch 1")[0].split("θ123 = atan2(r21, r11)")[1]
+
+
+@pytest.mark.parametrize("name", ["ur5", "planar3r", "spatial3r"])
+def test_with_the_coordinates_named_every_branch_still_reaches_the_pose(name):
+    robot = dhsym.load(name)
+    solution = robot.ik().solution
+    constants = {k: float(v) for k, v in robot.sample.items() if k in robot.chain.symbols}
+    constants |= {s: 0.3 for s in robot.chain.symbols - set(robot.joint_variables) - set(constants)}
+    fk = robot.chain.fk(raw=True)
+    rng = random.Random(3)
+    for _ in range(3):
+        q = {v: rng.uniform(-math.pi, math.pi) for v in robot.joint_variables}
+        target = numpy.array(fk.xreplace({**constants, **q}).evalf(), dtype=float)
+        branches = evaluate(solution, target, {str(k): v for k, v in constants.items()})
+        real = [b for b in branches if not numpy.isnan(b).any()]
+        assert real
+        for branch in real:
+            reached = fk.xreplace({**constants, **dict(zip(solution.joint_variables, map(sympy.Float, branch)))})
+            reached = numpy.array(reached.evalf(), dtype=float)
+            rows = 2 if name == "planar3r" else 3  # a planar arm: z is 0 in every pose
+            assert numpy.abs(reached[:rows, 3] - target[:rows, 3]).max() < 1e-7

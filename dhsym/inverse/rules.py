@@ -18,12 +18,15 @@ x/2
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
 from ..core.size import length
 from . import algebra
 from . import subproblems as sp
 from .candidates import touches
+from .coordinates import in_pair_coordinates, law_of_cosines
 from .fresh import fresh, fresh_symbol
 from .sentences import ByEquations, Exists, Subproblem, Undetermined
 from .solution import DerivationStep
@@ -63,6 +66,7 @@ def by_pair(candidates, derivation, constants, memos, witness=None) -> sympy.Exp
         derivation.vanishing.append((det, len(derivation.degenerate)))
         derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
     value = sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms))
+    in_pair_coordinates(derivation, candidates, witness)
     return _sine_as_sign(value, derivation)
 
 
@@ -134,7 +138,10 @@ def by_one_equation(candidates, derivation, constants, memos, witness=None) -> s
     if not single and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
         a, b, c, shape = min(sp.book_variants(a, b, c, sigma),
                              key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
+    law = law_of_cosines(c, first.equation, constants) if label == "law of cosines" else None
     c = _named(derivation, LETTERS[label], c)
+    if law is not None and c.is_Symbol:
+        derivation.laws.append(replace(law, name=c))
     derivation.steps.append(DerivationStep(a * sympy.cos(shown) + b * sympy.sin(shown), c, Subproblem(label),
                                            (variable,), first.equation.where))
     derivation.signs.append((sigma, variable, "law" if single else "one"))
