@@ -57,8 +57,9 @@ def test_no_relation_is_cut_between_lines(name):
 
 def test_planar3r_theta1_is_the_textbook_form():
     text = _solved("planar3r").text()
-    assert ("  θ1 = atan2((l1 + l2 c2)(py − l3 sθ123) − l2 s2(px − l3 cθ123),\n"
-            "         l2 s2(py − l3 sθ123) + (l1 + l2 c2)(px − l3 cθ123))") in text
+    # the wrist point (x, y) = (px − l3 cφ, py − l3 sφ) named, as Craig and Spong name it, and θ1 written in it
+    assert "  X    = px − l3 cθ123\n  Y    = py − l3 sθ123\n" in text
+    assert "  θ1 = atan2(Y(l1 + l2 c2) − X l2 s2, Y l2 s2 + X(l1 + l2 c2))" in text
     assert "  θ3 = θ123 − θ1 − θ2" in text  # θ123 = θ1 + θ2 + θ3, named as a book names θ23
 
 
@@ -107,9 +108,9 @@ def test_the_sign_of_a_bracket_is_decided_by_how_its_terms_print():
 
 def test_json_is_untouched_by_the_text_forms():
     data = _solved("planar3r").json()
-    theta_1 = dict(data["solutions"][0]["assignments"])["theta_1"]
-    assert "cos(theta_123)" in theta_1 and "[" not in theta_1
-    sympy.sympify(theta_1)
+    x = dict(data["definitions"])["X"]
+    assert "cos(theta_123)" in x and "[" not in x
+    sympy.sympify(x)
 
 
 @pytest.mark.parametrize("name", ROBOTS)

@@ -70,7 +70,8 @@ def test_the_ur5_in_numbers_reads_like_the_ur5_in_names(tmp_path_factory):
     printed = result.text(100)
     assert "C    = (px s1 − py c1 − 0.10915)/0.0823" in printed  # C: a projection, not the law of cosines' D
     assert "atan2(px − 0.0823 r13, 0.0823 r23 − py)" in printed
-    assert "0.0146755714 r33" in printed  # 2 d1 d6 r33, the file's rule: a product of two decimals is a decimal
+    # a2² + a3² and 2 a2 a3 by the file's rule: a product of two decimals is a decimal
+    assert "D    = (X² + Y² − 0.3344850625)/0.3334125" in printed
 
 
 @pytest.mark.slow

@@ -14,7 +14,7 @@ a_1**2 + 2*a_1*a_2*cos(theta_2) + a_2**2
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 import sympy
@@ -41,6 +41,7 @@ class Equation:
     where: Phrase
     source: tuple = ()  # the matrix equation it is an element of (its frames): pairs are taken within one
     distance: bool = False
+    parts: tuple = ()  # a squared distance's vector, (target side, chain side) per axis: lhs = Σ (target side)²
 
     @cached_property
     def expr(self) -> sympy.Expr:  # built once: the search reads it in every round
@@ -101,7 +102,7 @@ def point_equations(chain: Chain, point: sympy.Matrix, point_length, local: symp
                                       (f"{'xyz'[axis]} of the point in frame ", Frame(frame)), ("point", frame)))
         equations.append(Equation(seen_length, there_length, "position",
                                   ("squared distance of the point from the origin of frame ", Frame(frame)),
-                                  distance=True))
+                                  distance=True, parts=tuple(zip(seen, there))))
     return equations
 
 
@@ -149,7 +150,9 @@ def transform_equations(chain: Chain, target: sympy.Matrix, position: bool, star
             if position:
                 if j not in tip_lengths:
                     tip_lengths[j] = squared_length(chain.steps(last, j), variables, memo=memo, ring=ring)
-                equations.append(_length_equation(chain, target, (i, j), afters[j][:3, 3], tip_lengths[j], memo, ring))
+                found = _length_equation(chain, target, (i, j), afters[j][:3, 3], tip_lengths[j], memo, ring)
+                position_elements = equations[-9::4]  # elements (1, 4), (2, 4), (3, 4) of this pair of frames
+                equations.append(replace(found, parts=tuple((e.lhs, e.rhs) for e in position_elements)))
     return equations
 
 

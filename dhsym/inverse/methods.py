@@ -94,7 +94,7 @@ def decouple_at_wrist(problem: Problem, unique) -> Found:
         lambda fresh: pieper(chain, problem.numbers, point, local, holder, arm, fresh,
                              taken=[n for n, _ in definitions]))
     scan(transform_equations(chain, target, position=False, start=holder), wrist, problem.prismatic, derivation,
-         prefer=("orientation",), constants=problem.constants, witness=witness, unique=unique)
+         prefer=("orientation",), constants=problem.constants, witness=witness, unique=unique, first=wrist[1::-1])
     return Found(derivation, definitions, wrist,
                  Decoupled(wrist=joints, arm=tuple(arm), oriented=tuple(wrist), quartic=quartic))
 
@@ -122,9 +122,10 @@ def decouple_at_base(problem: Problem, unique) -> Found:
 def euler_wrist(problem: Problem, unique) -> Found:
     """A spherical wrist on its own: the orientation gives the Euler angles."""
     derivation = Derivation(reserved=problem.names)
+    middle = problem.unknowns[1::-1] if len(problem.unknowns) == 3 else ()  # the books' θ5, then θ4, then θ6
     scan(transform_equations(problem.chain, problem.target, position=False), problem.unknowns, problem.prismatic,
          derivation, prefer=("orientation",), constants=problem.constants, witness=dict(problem.witness),
-         unique=unique)
+         unique=unique, first=middle)
     return Found(derivation, [], list(problem.unknowns), EulerWrist(joints=problem.structure.unknowns))
 
 

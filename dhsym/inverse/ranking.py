@@ -50,15 +50,19 @@ class Option:
     checked: bool = True
 
 
-def best(pool, remaining, prismatic, prefer, constants, witness, memos, unique=frozenset()) -> Option | None:
-    """The best solvable sub-problem among the equations `pool` for the unknowns `remaining`, or None."""
+def best(pool, remaining, prismatic, prefer, constants, witness, memos, unique=frozenset(),
+         first=frozenset()) -> Option | None:
+    """The best solvable sub-problem among the equations `pool` for the unknowns `remaining`, or None;
+    one for an unknown in `first` (a wrist's middle joint, which the books solve before the
+    others) wherever there is one."""
     order = list(prefer) + [k for k in KINDS if k not in prefer]
     kind = lambda c: 0 if c.variable in unique else order.index(c.equation.kind)  # noqa: E731
     grouped = _grouped(pool, remaining, prismatic, order, memos)
     singles = [c for found in _worked(grouped, order, prismatic, constants, witness, memos, unique).values()
                for c in found]
     options = _singles(singles, kind, prismatic, witness, memos, unique) + _pairs(singles, kind, prismatic, memos)
-    return _first(options, witness, memos)
+    preferred = [option for option in options if option.candidates[0].variable in first]
+    return (preferred and _first(preferred, witness, memos)) or _first(options, witness, memos)
 
 
 def preference(single, prismatic, witness) -> tuple[str, Preference]:

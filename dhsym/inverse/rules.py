@@ -18,12 +18,15 @@ x/2
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
 from ..core.size import length
 from . import algebra
 from . import subproblems as sp
 from .candidates import touches
+from .coordinates import in_pair_coordinates, law_of_cosines
 from .fresh import fresh, fresh_symbol
 from .sentences import ByEquations, Exists, Subproblem, Undetermined
 from .solution import DerivationStep
@@ -62,7 +65,35 @@ def by_pair(candidates, derivation, constants, memos, witness=None) -> sympy.Exp
         det = det.xreplace(derivation.angles)
         derivation.vanishing.append((det, len(derivation.degenerate)))
         derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
-    return sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms))
+    value = sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms))
+    in_pair_coordinates(derivation, candidates, witness)
+    return _sine_as_sign(value, derivation)
+
+
+def _sine_as_sign(value, derivation):
+    """atan2(s5 y, s5 x) as atan2(σ y, σ x) where θ5 = atan2(σ√…, …) was solved with the sign σ:
+    sin θ5 has σ's sign, so the books' θ4 = atan2(r23, r13) on one branch and atan2(−r23, −r13)
+    on the other. Anything else is returned as it is."""
+    y, x = value.args
+    shared = set(sympy.Mul.make_args(y)) & set(sympy.Mul.make_args(x))
+    for factor in shared:
+        sigma = _sign_of(factor, derivation)
+        if sigma is not None:
+            return sympy.atan2(sigma * (y / factor), sigma * (x / factor))
+    return value
+
+
+def _sign_of(factor, derivation):
+    """σ where `factor` is sin θ and θ = atan2(σ√…, …) (its sine has σ's sign), else None."""
+    if not isinstance(factor, sympy.sin) or not factor.args[0].is_Symbol:
+        return None
+    value = dict(derivation.assignments).get(factor.args[0])
+    if not isinstance(value, sympy.atan2) or not value.args[0].is_Mul:
+        return None
+    signs = {sigma for sigma, _, _ in derivation.signs}
+    sigma, rest = value.args[0].as_independent(*signs, as_Add=False)[::-1]
+    root_only = rest.is_Pow and rest.exp == sympy.S.Half
+    return sigma if sigma in signs and root_only else None
 
 
 def by_coordinate(candidates, derivation, constants, memos, witness=None) -> sympy.Expr:
@@ -108,7 +139,10 @@ def by_one_equation(candidates, derivation, constants, memos, witness=None) -> s
     if not single and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
         a, b, c, shape = min(sp.book_variants(a, b, c, sigma),
                              key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
+    law = law_of_cosines(c, first.equation, constants) if label == "law of cosines" else None
     c = _named(derivation, letter(label, first.equation), c)
+    if law is not None and c.is_Symbol:
+        derivation.laws.append(replace(law, name=c))
     derivation.steps.append(DerivationStep(a * sympy.cos(shown) + b * sympy.sin(shown), c, Subproblem(label),
                                            (variable,), first.equation.where))
     derivation.signs.append((sigma, variable, "law" if single else "one"))

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field, replace
 
 import sympy
 
+from ..core.size import length
 from ..errors import NoClosedForm
 from . import algebra
 from .fresh import fresh_symbol
@@ -45,16 +46,20 @@ class Derivation:
     vanishing: list = field(default_factory=list)  # (expression, index in degenerate) where a pair is singular
     reserved: frozenset = frozenset()  # the robot's own names, which the derivation's never take (dhsym.inverse.fresh)
     angles: dict = field(default_factory=dict)  # φk -> the sum of angles (or angle and offset) it names
+    coordinates: list = field(default_factory=list)  # (sum, name): a distance's coordinates named (X, Y)
+    laws: list = field(default_factory=list)  # the law of cosines' knowns (dhsym.inverse.coordinates.Law)
 
 
 def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, prefer=("position",),
-         constants=frozenset(), witness: dict | None = None, unique=frozenset()) -> Derivation:
+         constants=frozenset(), witness: dict | None = None, unique=frozenset(), first=()) -> Derivation:
     """Solve `equations` for `unknowns` (in the order a textbook numbers them); `prismatic` is the
     set of those that are slides; `constants` the robot's lengths (never zero). `witness` gives
     numbers for every name at one generic pose: an equation whose coefficients vanish there says
     nothing (0 = 0 once earlier results hold) and is passed over. The joints in `unique` are
     solved only by a rule with one root (their two roots were found not both to reach the pose:
-    dhsym.inverse.reach). Raises UserError when no sub-problem applies."""
+    dhsym.inverse.reach). The unknowns in `first` are solved before the others, in that order,
+    wherever an equation gives them (a wrist's θ5, then θ4, as the books do). Raises UserError
+    when no sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
     memos = Memos()  # this search's own: nothing kept between searches, nothing shared by two at once
@@ -62,17 +67,20 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
     remaining = list(unknowns)
     pending: list = []  # (variable, expression) for joints written through a sum, assigned at the end
     while remaining:
-        option = best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, memos, unique)
+        option = best(pool, remaining, set(prismatic), prefer, frozenset(constants), witness, memos, unique,
+                      frozenset([v for v in first if v in remaining][:1]))
         if option is None:
             solved = [str(v) for v in unknowns if v not in remaining]
             raise NoClosedForm("no closed form by the course's rules: "
                             + (f"after {', '.join(solved)}, " if solved else "")
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         candidates = option.candidates
-        known = len(derivation.assignments)
-        value = solve_rule(option.rule, candidates, derivation, constants, memos, witness)
-        for name, named in derivation.assignments[known:]:
-            witness[name] = number_at(named, witness)
+        known = {name for name, _ in derivation.assignments}
+        value = in_coordinates(solve_rule(option.rule, candidates, derivation, constants, memos, witness),
+                               derivation.coordinates)
+        for name, named in derivation.assignments:
+            if name not in known and name not in witness:  # a name the rule made (D, K); X, Y come with numbers
+                witness[name] = number_at(named, witness)
         variable, angle = candidates[0].variable, candidates[0].angle
         if angle == variable:
             derivation.assignments.append((variable, value))
@@ -96,6 +104,16 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                 derivation.assignments.append(item)
                 pending.remove(item)
     return derivation
+
+
+def in_coordinates(value, coordinates) -> sympy.Expr:
+    """`value` with the sums that name a distance's coordinates (X = px c1 + py s1 − …) written
+    as their names, where that is shorter."""
+    for expression, name in coordinates:
+        written = value.subs(expression, name)
+        if written != value and length(written) < length(value):
+            value = written
+    return value
 
 
 def angle_name(angle, number: int) -> str:

@@ -99,6 +99,15 @@ class _InverseNotation:
                 return True, self._print(spread)[len(self.minus.strip()):]
         return negative, self._product(coefficient, factors)
 
+    def _in_order(self, terms, key) -> list:
+        """A positive number leads a sum that would start with a minus: 1 − r33², not −r33² + 1."""
+        ordered = super()._in_order(terms, key)
+        lead = next((t for t in ordered if t.is_number and t > 0), None)
+        if lead is not None and self._prints_negative(ordered[0]):
+            ordered.remove(lead)
+            ordered.insert(0, lead)
+        return ordered
+
     def _leads_negative(self, total) -> bool:
         """Whether a sum, printed in its order, starts with a minus (as the terms print)."""
         return self._prints_negative(min(total.args, key=self.notation.term_key))

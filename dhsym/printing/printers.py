@@ -162,13 +162,17 @@ class _TextbookMixin:
     def _print_Add(self, expr, order=None):
         key = self.notation.angle_key if (self._angle or self.marked) else self.notation.term_key
         out = ""
-        for position, term in enumerate(sorted(expr.args, key=key)):
+        for position, term in enumerate(self._in_order(expr.args, key)):
             negative, body = self._signed(term)
             if position == 0:
                 out = (self.minus.strip() if negative else "") + body
             else:
                 out += (self.minus if negative else " + ") + body
         return out
+
+    def _in_order(self, terms, key) -> list:
+        """The terms of a sum in the order they print."""
+        return sorted(terms, key=key)
 
     def _print_Mul(self, expr):
         negative, body = self._signed(expr)

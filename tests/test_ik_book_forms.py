@@ -1,0 +1,98 @@
+"""The closed forms in the books' order and shape: a spherical wrist's middle joint first
+(cos θ5 = r33, Spong's and Siciliano's Euler angles), then θ4 from the third column with the
+sign the θ5 branch chose (atan2(r23, r13), or atan2(−r23, −r13) where sin θ5 < 0), then θ6; as
+`dhsym ik` prints them, and every branch still reaching the pose."""
+import math
+import random
+
+import numpy
+import pytest
+import sympy
+from cli_runner import run_dhsym
+
+import dhsym
+from dhsym.inverse.evaluate import evaluate
+
+pytestmark = pytest.mark.slow  # each solves a robot in closed form
+
+
+def _branches(name: str) -> list[list[str]]:
+    """The lines of each printed branch, stripped, in order."""
+    result = run_dhsym("ik", name, "--width", "200")
+    assert result.status == 0, result.stderr
+    blocks = result.stdout.split("\nBranch ")[1:]
+    return [[line.strip() for line in block.split("\n\n")[0].splitlines()[1:]] for block in blocks]
+
+
+@pytest.mark.parametrize("name", ["spherical_wrist", "spherical_wrist_spong"])
+def test_a_wrist_alone_is_solved_theta5_then_theta4_then_theta6_as_the_books_do(name):
+    not_flipped, flipped = _branches(name)
+    assert not_flipped == ["θ5 = atan2(√(1 − r33²), r33)", "θ4 = atan2(r23, r13)",
+                           "θ6 = atan2(r21 c4 − r11 s4, r22 c4 − r12 s4)"]
+    assert flipped[:2] == ["θ5 = atan2(−√(1 − r33²), r33)", "θ4 = atan2(−r23, −r13)"]
+    assert "1 − r33² ≥ 0" in run_dhsym("ik", name).stdout
+
+
+def test_the_pumas_theta4_is_craigs_with_the_sign_of_s5_not_s5_itself():
+    # Craig (4.80): θ4 = atan2(−r13 s1 + r23 c1, −r13 c1 c23 − r23 s1 c23 + r33 s23), θ4 + 180° on the flip
+    branches = _branches("puma560")
+    assert "θ4  = atan2(r23 c1 − r13 s1, r33 s23 − r13 c1 c23 − r23 s1 c23)" in branches[0]
+    assert "θ4  = atan2(r13 s1 − r23 c1, r13 c1 c23 + r23 s1 c23 − r33 s23)" in branches[1]
+    assert not any("s5" in line for branch in branches for line in branch)
+
+
+@pytest.mark.parametrize("name", ["spherical_wrist", "puma560"])
+def test_every_branch_reaches_the_pose_and_the_singular_wrist_gives_a_member(name):
+    robot = dhsym.load(name)
+    solution = robot.ik().solution
+    constants = {k: float(v) for k, v in robot.sample.items() if k in robot.chain.symbols}
+    fk = robot.chain.fk(raw=True)
+    rng = random.Random(27)
+    for theta5 in (rng.uniform(0.3, 2.8), -rng.uniform(0.3, 2.8), 0.0):
+        q = {v: rng.uniform(-math.pi, math.pi) for v in robot.joint_variables}
+        q[robot.joint_variables[-2]] = theta5
+        target = numpy.array(fk.xreplace({**constants, **q}).evalf(), dtype=float)
+        real = [b for b in evaluate(solution, target) if not numpy.isnan(b).any()]
+        assert real
+        for branch in real:
+            reached = fk.xreplace({**constants, **dict(zip(solution.joint_variables, map(sympy.Float, branch)))})
+            assert numpy.abs(numpy.array(reached.evalf(), dtype=float) - target).max() < 1e-6
+
+
+def test_the_ur5s_law_of_cosines_is_written_in_the_coordinates_theta2_uses():
+    # Hawkins: cos θ3 = (X² + Y² − a2² − a3²)/(2 a2 a3) with X, Y the wrist's coordinates in the arm's plane
+    branch = _branches("ur5")[0]
+    assert "X    = px c1 + py s1 + d6 s5 cθ234 − d5 sθ234" in branch
+    assert "Y    = pz + d6 s5 sθ234 + d5 cθ234 − d1" in branch
+    assert "D    = (X² + Y² − a2² − a3²)/(2 a2 a3)" in branch
+    assert "θ2   = atan2(Y(a2 + a3 c3) − X a3 s3, Y a3 s3 + X(a2 + a3 c3))" in branch
+
+
+def test_the_planar_3r_names_its_wrist_point_and_writes_d_in_it():
+    # Craig's and Spong's planar 3R: the wrist point (x, y) = (px − l3 cφ, py − l3 sφ), then the 2R's D
+    text = run_dhsym("ik", "planar3r", "--width", "200").stdout
+    for line in ("X    = px − l3 cθ123", "Y    = py − l3 sθ123", "D    = (X² + Y² − l1² − l2²)/(2 l1 l2)",
+                 "θ1 = atan2(Y(l1 + l2 c2) − X l2 s2, Y l2 s2 + X(l1 + l2 c2))"):
+        assert line in text, line
+    assert "r11" not in text.split("Branch 1")[0].split("θ123 = atan2(r21, r11)")[1]
+
+
+@pytest.mark.parametrize("name", ["ur5", "planar3r", "spatial3r"])
+def test_with_the_coordinates_named_every_branch_still_reaches_the_pose(name):
+    robot = dhsym.load(name)
+    solution = robot.ik().solution
+    constants = {k: float(v) for k, v in robot.sample.items() if k in robot.chain.symbols}
+    constants |= {s: 0.3 for s in robot.chain.symbols - set(robot.joint_variables) - set(constants)}
+    fk = robot.chain.fk(raw=True)
+    rng = random.Random(3)
+    for _ in range(3):
+        q = {v: rng.uniform(-math.pi, math.pi) for v in robot.joint_variables}
+        target = numpy.array(fk.xreplace({**constants, **q}).evalf(), dtype=float)
+        branches = evaluate(solution, target, {str(k): v for k, v in constants.items()})
+        real = [b for b in branches if not numpy.isnan(b).any()]
+        assert real
+        for branch in real:
+            reached = fk.xreplace({**constants, **dict(zip(solution.joint_variables, map(sympy.Float, branch)))})
+            reached = numpy.array(reached.evalf(), dtype=float)
+            rows = 2 if name == "planar3r" else 3  # a planar arm: z is 0 in every pose
+            assert numpy.abs(reached[:rows, 3] - target[:rows, 3]).max() < 1e-7
