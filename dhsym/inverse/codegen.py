@@ -32,14 +32,15 @@ import sympy
 from sympy.printing.numpy import NumPyPrinter
 
 from ..core.numbers import decimal_text
+from .consistency import off_the_arm
 from .fresh import PRIME
 from .quartic import Complex
 
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when its imaginary part is this small
 
-_INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
-             "angles", "elements", "missing", "k", "real_angle", "IMAGINARY"}  # the module's own names
+_INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result", "angles",
+             "elements", "missing", "off", "tolerance", "k", "real_angle", "IMAGINARY"}  # the module's own names
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
@@ -165,6 +166,7 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         "    poses = T.reshape(-1, 4, 4)",
         "    elements = numpy.ascontiguousarray(poses.reshape(-1, 16).T)  # each element's values side by side: faster",
         *body,
+        *off_the_arm(solution, code),
         "    for k in REVOLUTE:",
         "        angles = result[:, k]",
         "        numpy.remainder(angles + numpy.pi, 2 * numpy.pi, out=angles)",

@@ -26,6 +26,7 @@ from ..core.numbers import WrittenNumbers
 from ..errors import UserError
 from .bounds import redundancy, redundant_message, refuse_unbounded
 from .branches import branch_name
+from .consistency import tool_relations
 from .fresh import reserved
 from .methods import Problem, method_for
 from .quartic import root_number
@@ -59,7 +60,7 @@ def derive(chain: Chain, free=(), *, sample=None, numbers: WrittenNumbers | None
     if len(unknowns) < 6:
         used = _used_elements(definitions, assignments, chain)
         method = replace(method, used=used)
-        conditions.append(Consistent(len(unknowns), used, problem.fixed))
+        conditions.append(Consistent(len(unknowns), used, problem.fixed, tool_relations(chain, problem.fixed)))
     branches = _branches(assignments, derivation.signs, unknowns[0], found.wrist_joints)
     return Solution(chain, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
                     tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),

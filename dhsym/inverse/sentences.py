@@ -74,11 +74,13 @@ class RealRoot(KeepsForm):
 @dataclass(frozen=True)
 class Consistent(KeepsForm):
     """An arm of `unknowns` joints (fewer than six) uses only the target elements `used`; the
-    others must agree with them, and `fixed` [(element, value)] are the same in every pose."""
+    others must agree with them, and `fixed` [(element, value)] are the same in every pose, as are
+    `relations` [(expression, value)] of several elements (dhsym.inverse.consistency)."""
 
     unknowns: int
     used: tuple[sympy.Symbol, ...]
     fixed: tuple[tuple[sympy.Symbol, sympy.Expr], ...] = ()
+    relations: tuple[tuple[sympy.Expr, sympy.Expr], ...] = ()
 
 
 # ------------------------------------------------------------------ where the branches degenerate

@@ -113,7 +113,7 @@ class SentenceWriting:
 
     def _print_Consistent(self, said):
         joints = f"{said.unknowns} unknown joint{'s' if said.unknowns != 1 else ''}"
-        fixed = [(Math(element), " = ", Math(value)) for element, value in said.fixed]
+        fixed = [(Math(element), " = ", Math(value)) for element, value in said.fixed + said.relations]
         fixed = (" (in every pose of this arm ", _listed(fixed), ")") if fixed else ()
         return self._said(f"the arm has {joints}: only ", _listed([Math(u) for u in said.used]),
                           " are used, and the other elements of the target must be consistent with them", fixed)
