@@ -32,6 +32,7 @@ import sympy
 from sympy.printing.numpy import NumPyPrinter
 
 from ..core.numbers import decimal_text
+from .consistency import off_the_arm
 from .fresh import PRIME
 from .onepose import HELPERS, REAL_ANGLE, MathCode, Spelling, function_text
 from .quartic import Complex
@@ -41,7 +42,7 @@ IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when 
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
              "angles", "elements", "missing", "k", "real_angle", "IMAGINARY", "math", "cmath", "one_pose",
-             "root_one", "real_angle_one", "absent", "NUMBER"}  # the module's own names
+             "root_one", "real_angle_one", "absent", "NUMBER", "off", "tolerance"}  # the module's own names
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
@@ -132,8 +133,9 @@ def module_text(solution, name: str = "", command: str = "") -> str:
     statements, columns = _computation(solution, names, code)
     targets = _targets(solution, names)
     parameters = [keyword.split("=")[0] for keyword in keywords]
-    one = function_text(statements, columns, revolute, parameters, MathCode(names, solution.numbers, code.complex),
-                        targets)
+    off = off_the_arm(solution, code)  # an arm of fewer than six joints: a pose off its set gives NaN
+    one = [] if off else function_text(statements, columns, revolute, parameters,
+                                       MathCode(names, solution.numbers, code.complex), targets)
     body = _body(solution, names, code, statements, columns, targets)
     lines = [
         *_docstring(name, command, chain.convention, bool(one)),
@@ -159,6 +161,7 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         "    poses = T.reshape(-1, 4, 4)",
         "    elements = numpy.ascontiguousarray(poses.reshape(-1, 16).T)  # each element's values side by side: faster",
         *body,
+        *off,
         "    for k in REVOLUTE:",
         "        angles = result[:, k]",
         "        numpy.remainder(angles + numpy.pi, 2 * numpy.pi, out=angles)",

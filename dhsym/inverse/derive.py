@@ -26,12 +26,13 @@ from ..core.numbers import WrittenNumbers
 from ..errors import UserError
 from .bounds import redundancy, redundant_message, refuse_unbounded
 from .branches import branch_name
+from .consistency import tool_relations
 from .fresh import reserved
 from .methods import Problem, method_for
 from .quartic import root_number
 from .reach import wrong_root
 from .sentences import Consistent
-from .singular import say_lined_up, tie_to_jacobian
+from .singular import explain_cases
 from .solution import Branch, Solution, target_matrix, target_symbols
 from .structure import analyse
 from .witness import witness
@@ -52,14 +53,14 @@ def derive(chain: Chain, free=(), *, sample=None, numbers: WrittenNumbers | None
     derivation, unknowns = found.derivation, problem.unknowns
     definitions, assignments = _shared_first(found.definitions, derivation.assignments, chain.joint_variables,
                                              derivation.signs)
+    nonzero = {c for c in problem.constants if sample.get(c, 1) != 0}
+    explain_cases(chain, derivation, found.definitions, sample, numbers, nonzero,
+                  tie=bool(problem.structure.wrist) and len(unknowns) == 6 and chain.n == 6)
     conditions, method = list(derivation.conditions), found.method
     if len(unknowns) < 6:
         used = _used_elements(definitions, assignments, chain)
         method = replace(method, used=used)
-        conditions.append(Consistent(len(unknowns), used, problem.fixed))
-    say_lined_up(chain, derivation)
-    if problem.structure.wrist and len(unknowns) == 6 and chain.n == 6:
-        tie_to_jacobian(chain, derivation, sample, numbers)
+        conditions.append(Consistent(len(unknowns), used, problem.fixed, tool_relations(chain, problem.fixed)))
     branches = _branches(assignments, derivation.signs, unknowns[0], found.wrist_joints)
     return Solution(chain, method, tuple(unknowns), tuple(definitions), tuple(branches), tuple(free),
                     tuple(dict.fromkeys(conditions)), tuple(dict.fromkeys(derivation.degenerate)),

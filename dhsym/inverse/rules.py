@@ -151,6 +151,8 @@ def by_one_equation(candidates, derivation, constants, memos, witness=None) -> s
         derivation.conditions.append(Exists(root, unknown=said))
     if not (a.is_number or b.is_number) and (a.free_symbols | b.free_symbols) - set(constants):
         derivation.degenerate.append(Undetermined((sp.unsigned(a), sp.unsigned(b)), said, ByEquations(1)))
+    elif single and (a + b).free_symbols - set(constants):  # s4 cos θ3 = C: θ3 is lost where s4 = 0
+        derivation.degenerate.append(Undetermined((sp.unsigned(a + b),), said, ByEquations(1)))
     return sp.one_equation(a, b, c, sigma, shape)
 
 

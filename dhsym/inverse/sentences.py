@@ -7,7 +7,7 @@ the printers write as the robot file numbers it.
 >>> import sympy
 >>> D, t2 = sympy.symbols("D theta_2", real=True)
 >>> Exists(1 - D**2, unknown=t2)
-Exists(expression=1 - D**2, relation='>=', unknown=theta_2)
+Exists(expression=1 - D**2, relation='>=', unknown=theta_2, singular=None)
 >>> Undetermined((sympy.sin(t2),), t2, LinedUp(t2)).reason.said
 False
 """
@@ -42,13 +42,25 @@ Phrase = tuple
 
 
 @dataclass(frozen=True)
+class Singular(KeepsForm):
+    """A factor of det J (`factor`, as `dhsym jacobian` prints it) and its meaning: `template`
+    with {0}, {1} … for the joints `joints` (1..n), as dhsym.velocity.singularities words it."""
+
+    factor: sympy.Expr
+    template: str = ""
+    joints: tuple[int, ...] = ()
+
+
+@dataclass(frozen=True)
 class Exists(KeepsForm):
     """`expression relation 0` (the argument of a square root ≥ 0); `unknown`: what has no real
-    value otherwise (the target out of reach), where that is said."""
+    value otherwise (the target out of reach), where that is said; `singular`: the factor of det J
+    (a Singular) that vanishes where the expression is 0 and the two roots meet, where one does."""
 
     expression: sympy.Expr
     relation: str = ">="
     unknown: sympy.Expr | None = None
+    singular: Singular | None = None
 
 
 @dataclass(frozen=True)
@@ -62,11 +74,13 @@ class RealRoot(KeepsForm):
 @dataclass(frozen=True)
 class Consistent(KeepsForm):
     """An arm of `unknowns` joints (fewer than six) uses only the target elements `used`; the
-    others must agree with them, and `fixed` [(element, value)] are the same in every pose."""
+    others must agree with them, and `fixed` [(element, value)] are the same in every pose, as are
+    `relations` [(expression, value)] of several elements (dhsym.inverse.consistency)."""
 
     unknowns: int
     used: tuple[sympy.Symbol, ...]
     fixed: tuple[tuple[sympy.Symbol, sympy.Expr], ...] = ()
+    relations: tuple[tuple[sympy.Expr, sympy.Expr], ...] = ()
 
 
 # ------------------------------------------------------------------ where the branches degenerate
@@ -112,12 +126,12 @@ class CentreOnAxis:
 class Undetermined(KeepsForm):
     """Where every expression of `condition` is 0, `unknown` (a joint variable or a sum of
     angles) is not determined, for the `reason` given (ByEquations, LinedUp, CentreOnAxis);
-    `singular_factor`: the factor of det J that the condition is, where it is one."""
+    `singular`: the factor of det J that the condition is (a Singular), where it is one."""
 
     condition: tuple[sympy.Expr, ...]
     unknown: sympy.Expr
     reason: object = ByEquations(2)
-    singular_factor: sympy.Expr | None = None
+    singular: Singular | None = None
 
 
 @dataclass(frozen=True)

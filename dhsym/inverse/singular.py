@@ -16,39 +16,115 @@ from __future__ import annotations
 
 import random
 from dataclasses import replace
+from types import SimpleNamespace
 
 import sympy
 
 from ..core.chain import Chain
-from ..velocity.determinant import as_written, determinant, factored, joint_factors
+from ..velocity.determinant import TooManyTerms, as_written, determinant, factored, joint_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
-from .sentences import LinedUp
+from ..velocity.singularities import singularities
+from .fresh import reserved, target_symbols
+from .sentences import Exists, LinedUp, Singular
 from .subproblems import angle_symbol, factor_bases
+from .unreachable import reachable_cases
 
 
-def tie_to_jacobian(chain: Chain, derivation, sample, numbers) -> None:
-    """Add to each degenerate case whose expression has a factor of det J the words that say so.
-    `chain` has frames 0..n; `sample` and `numbers` are its robot file's (the wrist centre is
-    found at its sample values, the factors are written with its numbers)."""
+def explain_cases(chain: Chain, derivation, definitions, sample, numbers, nonzero, tie: bool) -> None:
+    """What the derivation's existence conditions and degenerate cases mean for the arm: the axes a
+    sin θk = 0 lines up, the factor of det J each is (where `tie`: a six-joint arm with a wrist),
+    and only the cases some reachable target meets (dhsym.inverse.unreachable). `definitions`:
+    the shared ones, before the derivation's assignments; `nonzero`: the constants never 0."""
+    say_lined_up(chain, derivation)
+    if tie:
+        tie_to_jacobian(chain, derivation, definitions, sample, numbers)
+    derivation.degenerate, kept = reachable_cases(derivation.degenerate, derivation.conditions, nonzero)
+    derivation.vanishing = [(expr, kept.index(k)) for expr, k in derivation.vanishing if k in kept]
+
+
+def tie_to_jacobian(chain: Chain, derivation, definitions, sample, numbers) -> None:
+    """Add to each degenerate case whose expression has a factor of det J, and to each existence
+    condition whose boundary (the two roots meet) is where a factor vanishes, that factor and its
+    meaning. `chain` has frames 0..n; `sample` and `numbers` are its robot file's (the wrist
+    centre is found at its sample values, the factors are written with its numbers)."""
     joints = set(chain.joint_variables)
-    found = []
-    for expr, index in derivation.vanishing:
-        bases = factor_bases(expr)
-        found.append((index, bases))
+    found = [(index, factor_bases(expr)) for expr, index in derivation.vanishing]
     possible = [b for _, bases in found for b in bases if b.free_symbols <= chain.symbols and b.free_symbols & joints]
-    if not possible:
+    meeting = [k for k, c in enumerate(derivation.conditions) if isinstance(c, Exists) and c.unknown is not None]
+    if not possible and not meeting:
         return
     wrist = set(chain.joint_variables[3:])
-    if chain.n == 6 and all(b.free_symbols & joints <= wrist for b in possible) and \
+    if not meeting and all(b.free_symbols & joints <= wrist for b in possible) and \
             wrist_centre(chain, sample=sample) is not None:
         factors = wrist_factors(chain, numbers, sample)
     else:
-        factors = determinant(chain, numbers=numbers, sample=sample).factors
+        try:
+            factors = determinant(chain, numbers=numbers, sample=sample).factors
+        except TooManyTerms:  # counted before it is expanded: a general 6R's, which says nothing here
+            return
+    said = {s.factor: Singular(s.factor, s.template, s.joints)
+            for s in singularities(chain, SimpleNamespace(factors=factors), sample=sample)}
     for index, bases in found:
         matched = [g for g in factors for b in bases if sympy.expand(b - g) == 0 or sympy.expand(b + g) == 0]
         if matched:
-            derivation.degenerate[index] = replace(derivation.degenerate[index], singular_factor=matched[0])
+            derivation.degenerate[index] = replace(derivation.degenerate[index], singular=said[matched[0]])
+    names = _in_joints(chain, definitions, derivation)
+    for k in meeting:
+        factor = meeting_factor(chain, derivation.conditions[k].expression.xreplace(names), factors, sample)
+        if factor is not None:
+            derivation.conditions[k] = replace(derivation.conditions[k], singular=said[factor])
+
+
+def _in_joints(chain: Chain, definitions, derivation) -> dict:
+    """The target's elements as the forward kinematics gives them, and every name the derivation
+    defines in the joint variables: where the branch holds, each is its value at the joints."""
+    fk = chain.fk()
+    names = dict(zip(target_symbols(reserved(chain)), [fk[r, c] for r in range(3) for c in range(4)]))
+    for name, value in list(definitions) + list(derivation.assignments):
+        if name not in chain.joint_variables:
+            names[name] = derivation.angles.get(name, value.xreplace(names))
+    return names
+
+
+def meeting_factor(chain: Chain, side, factors, sample, trials: int = 3):
+    """The factor f of det J with `side` (an existence condition's left side, in the joint variables)
+    equal to k f², k free of the joints: the two roots meet exactly where f = 0. Tried in numbers at
+    a few poses first, then proven by algebra: both sides in cos and sin of each joint, reduced by
+    sin² + cos² = 1 (a normal form: two trigonometric polynomials are equal exactly when theirs are)."""
+    rng = random.Random(5)
+    points = [sample_values(chain, rng, sample) for _ in range(trials)]
+    ring = _Ring(chain.joint_variables)
+    for factor in factors:
+        ratios = [_ratio(side, factor, values) for values in points]
+        if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
+            continue
+        k = sympy.cancel(ring.reduced(side) / ring.reduced(factor ** 2))
+        if k != 0 and not k.free_symbols & set(ring.generators):
+            return factor
+    return None
+
+
+class _Ring:
+    """Trigonometric polynomials in the joints as polynomials in c_k, s_k modulo s_k² + c_k² − 1."""
+
+    def __init__(self, joints):
+        self.names, self.generators, self.rules = {}, [], []
+        for joint in joints:
+            c, s = sympy.Dummy("c"), sympy.Dummy("s")
+            self.names.update({sympy.cos(joint): c, sympy.sin(joint): s})
+            self.generators += [s, c]
+            self.rules.append(s ** 2 + c ** 2 - 1)
+
+    def reduced(self, expr) -> sympy.Expr:
+        """The normal form of `expr`, its denominator (free of the joints) set aside."""
+        numerator, denominator = sympy.fraction(sympy.together(sympy.expand_trig(expr).xreplace(self.names)))
+        return sympy.reduced(numerator, self.rules, *self.generators)[1] / denominator
+
+
+def _ratio(side, factor, values) -> float | None:
+    square = float(factor.xreplace(values)) ** 2
+    return None if abs(square) < 1e-12 else float(side.xreplace(values)) / square
 
 
 def wrist_factors(chain: Chain, numbers, sample=None) -> list:

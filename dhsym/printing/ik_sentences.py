@@ -91,10 +91,20 @@ class SentenceWriting:
     # ---------------------------------------------------------------- when a branch exists
 
     def _print_Exists(self, said):
-        unknown = () if said.unknown is None else (
-            " (else ", Math(said.unknown), " has no real value: the target is out of reach; where it is 0 the two "
-            "roots meet)")
-        return self._said(Relation(said.expression, said.relation), unknown)
+        if said.unknown is None:
+            return self._said(Relation(said.expression, said.relation))
+        if said.singular is None:
+            meet = "; where it is 0 the two roots meet)"
+        else:
+            meet = ("); where it is 0 the two roots meet, ", self._singular(said.singular))
+        return self._said(Relation(said.expression, said.relation), " (else ", Math(said.unknown),
+                          " has no real value: the target is out of reach", meet)
+
+    def _singular(self, singular) -> tuple:
+        """'a singularity of J: the factor s5 of det J, wrist: axes 4 and 6 line up'."""
+        meaning = () if not singular.template else (
+            ", ", singular.template.format(*(self._joint(j) for j in singular.joints)))
+        return ("a singularity of J: the factor ", Math(singular.factor), " of det J", meaning)
 
     def _print_RealRoot(self, said):
         return self._said("quartic root k (for ", Math(said.joint), f") exists where the root {said.root.name} of the "
@@ -103,7 +113,7 @@ class SentenceWriting:
 
     def _print_Consistent(self, said):
         joints = f"{said.unknowns} unknown joint{'s' if said.unknowns != 1 else ''}"
-        fixed = [(Math(element), " = ", Math(value)) for element, value in said.fixed]
+        fixed = [(Math(element), " = ", Math(value)) for element, value in said.fixed + said.relations]
         fixed = (" (in every pose of this arm ", _listed(fixed), ")") if fixed else ()
         return self._said(f"the arm has {joints}: only ", _listed([Math(u) for u in said.used]),
                           " are used, and the other elements of the target must be consistent with them", fixed)
@@ -120,8 +130,7 @@ class SentenceWriting:
         else:
             why = (" on its own: the axes on either side of ", Math(_joint_symbol(reason.angle)), " line up, and ",
                    self._lined_up(reason), ", a one-parameter family (a numeric evaluation gives one member)")
-        factor = () if said.singular_factor is None else (
-            "; a singularity of J: the factor ", Math(said.singular_factor), " of det J")
+        factor = () if said.singular is None else ("; ", self._singular(said.singular))
         return self._said(condition, ": ", Math(said.unknown), " is not determined", why, factor)
 
     def _math(self, piece: Math) -> str:

@@ -1,0 +1,123 @@
+"""What the printed IK says about where its branches fail: no degenerate case that no reachable
+target meets, each place where two roots meet tied to the factor of det J that `dhsym jacobian`
+prints and its meaning, every relation an arm of fewer than six joints keeps, and a generated
+ik() that gives NaN for a pose such an arm cannot take."""
+import importlib.util
+import json
+
+import numpy
+import pytest
+import sympy
+from cli_runner import run_dhsym
+
+from dhsym import load
+from dhsym.inverse.sentences import Exists, Undetermined
+from dhsym.inverse.unreachable import contradicts
+from dhsym.latex.ik import snippet
+
+pytestmark = pytest.mark.slow  # real robots solved in closed form: seconds per test
+
+PITCH_ARM = """name: pitch arm
+convention: standard
+joints:
+  - {joint: R, theta: theta_1, d: d_1, a: 0, alpha: pi/2}
+  - {joint: R, theta: theta_2, d: 0, a: a_2, alpha: 0}
+  - {joint: R, theta: theta_3, d: 0, a: a_3, alpha: 0}
+  - {joint: R, theta: theta_4, d: 0, a: a_4, alpha: 0}
+sample: {d_1: 0.09, a_2: 0.106, a_3: 0.1, a_4: 0.114}
+"""
+
+
+def _ik(*args):
+    result = run_dhsym("ik", *args)
+    assert result.status == 0, result.stderr
+    return result.stdout
+
+
+def _flat(text: str) -> str:
+    return " ".join(text.split())
+
+
+@pytest.mark.parametrize("name, impossible", [("puma560", "py = 0 and px = 0"), ("stanford", "yc = 0 and xc = 0"),
+                                              ("ur5", "d6 r23 − py = 0 and d6 r13 − px = 0")])
+def test_a_degenerate_case_no_reachable_target_meets_is_not_printed(name, impossible):
+    text = _flat(_ik(name))
+    assert "Degenerate:" in text and impossible not in text
+    degenerate = json.loads(_ik(name, "--format", "json"))["degenerate"]
+    assert not any(case.startswith(impossible.split(" = ")[0].replace(" ", "*")) for case in degenerate)
+
+
+def test_a_case_stays_where_the_offset_could_be_zero():
+    px, py, d2, d3, t1 = sympy.symbols("px py d_2 d_3 theta_1", real=True)
+    case = Undetermined((py, px), t1)
+    assert contradicts(case, [Exists(px**2 + py**2 - d3**2)], {d3})
+    assert not contradicts(case, [Exists(px**2 + py**2 - (d3 - d2)**2)], {d2, d3})  # d3 = d2 reaches it
+    assert not contradicts(case, [Exists(px**2 + py**2 + d3**2)], {d3})
+    shoulder = Undetermined((px * sympy.cos(t1) + py * sympy.sin(t1), d2), t1)  # not solved for a name: it stays
+    assert not contradicts(shoulder, [Exists(px**2 + py**2 - d3**2)], {d3})
+
+
+def test_the_shoulder_elbow_and_wrist_singularities_are_where_the_roots_meet():
+    text = _flat(_ik("puma560"))
+    assert ("px² + py² − d3² ≥ 0 (else θ1 has no real value: the target is out of reach); where it is 0 the two "
+            "roots meet, a singularity of J: the factor a2 c2 + a3 c23 − d4 s23 of det J, shoulder: the wrist "
+            "centre lies in the plane through axis 1 parallel to axis 2") in text
+    assert ("a3² + d4² − K² ≥ 0 (else θ3 has no real value: the target is out of reach); where it is 0 the two "
+            "roots meet, a singularity of J: the factor d4 c3 + a3 s3 of det J, elbow stretched or folded") in text
+    assert "1 − C² ≥ 0 (else θ5 has no real value: the target is out of reach); where it is 0 the two roots meet, " \
+           "a singularity of J: the factor s5 of det J, wrist: axes 4 and 6 line up" in text
+    jacobian = _flat(run_dhsym("jacobian", "puma560").stdout)  # the same factors as `dhsym jacobian` prints
+    for factor in ("a2 c2 + a3 c23 − d4 s23 = 0", "d4 c3 + a3 s3 = 0", "s5 = 0: wrist: axes 4 and 6 line up"):
+        assert factor in jacobian
+    conditions = json.loads(_ik("puma560", "--format", "json"))["conditions"]
+    assert "a singularity of J: the factor a_3*sin(theta_3) + d_4*cos(theta_3) of det J, elbow stretched or " \
+           "folded: the wrist centre lies in the plane of axes 2 and 3" in conditions[1]
+
+
+def test_a_factor_said_to_meet_the_roots_vanishes_where_they_meet():
+    # At a pose where the factor is 0 the condition's side is 0 too: the PUMA's elbow stretched (d4 c3 + a3 s3 = 0).
+    robot = load("puma560")
+    solution = robot.ik().solution
+    elbow = next(c for c in solution.conditions if isinstance(c, Exists) and "K" in str(c.expression))
+    t3 = robot.joint_variables[2]
+    stretched = sympy.atan2(-elbow.singular.factor.coeff(sympy.cos(t3)), elbow.singular.factor.coeff(sympy.sin(t3)))
+    assert sympy.simplify(elbow.singular.factor.subs(t3, stretched)) == 0
+
+
+def test_the_latex_says_the_singularity_in_words():
+    robot = load("puma560")
+    latex = snippet(robot.ik().solution, robot)
+    assert "a singularity of J: the factor $d_{4} c_{3} + a_{3} s_{3}$ of det J" in latex
+
+
+def test_a_four_joint_arm_prints_the_plane_its_point_stays_in(tmp_path):
+    path = tmp_path / "pitch.yaml"
+    path.write_text(PITCH_ARM)
+    text = _flat(_ik(str(path)))
+    assert "(in every pose of this arm r33 = 0, px r13 + py r23 = 0)" in text
+    conditions = json.loads(_ik(str(path), "--format", "json"))["conditions"]
+    assert any("px*r13 + py*r23 = 0" in condition for condition in conditions)
+
+
+def test_the_generated_ik_of_a_four_joint_arm_gives_nan_off_its_plane(tmp_path):
+    path = tmp_path / "pitch.yaml"
+    path.write_text(PITCH_ARM)
+    module = tmp_path / "pitch_ik.py"
+    module.write_text(_ik(str(path), "--format", "python"))
+    spec = importlib.util.spec_from_file_location("pitch_ik", module)
+    ik = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(ik)
+    robot = load(str(path))
+    fk = sympy.lambdify(robot.joint_variables, robot.chain.fk().xreplace(robot.sample), "numpy")
+    pose = numpy.array(fk(0.3, 0.4, -0.5, 0.2), dtype=float)
+    assert numpy.isfinite(ik.ik(pose)).all()
+    off = pose.copy()
+    off[:3, 3] += 0.166 * pose[:3, 2]  # out of the arm's plane (the tool's z is its normal)
+    assert numpy.isnan(ik.ik(off)).all()
+    both = ik.ik(numpy.stack([pose, off]))
+    assert numpy.isfinite(both[0]).all() and numpy.isnan(both[1]).all()
+
+
+def test_the_iiwa_with_its_first_joint_free_names_s4_zero():
+    text = _flat(_ik("iiwa7", "--free", "theta_1"))
+    assert "s4 = 0: θ3 is not determined by this equation" in text
