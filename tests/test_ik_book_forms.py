@@ -96,3 +96,30 @@ def test_with_the_coordinates_named_every_branch_still_reaches_the_pose(name):
             reached = numpy.array(reached.evalf(), dtype=float)
             rows = 2 if name == "planar3r" else 3  # a planar arm: z is 0 in every pose
             assert numpy.abs(reached[:rows, 3] - target[:rows, 3]).max() < 1e-7
+
+
+def _operations(solution, branch: int = 0) -> int:
+    """count_ops of one branch with the definitions it reads: what a slide shows for one branch."""
+    return sum(sympy.count_ops(value) for _, value in (*solution.definitions, *solution.branches[branch].assignments))
+
+
+def test_the_elbow_arm_and_the_planar_2r_are_no_longer_than_spongs():
+    # Spong, Hutchinson and Vidyasagar, Robot Modeling and Control, the inverse position of the
+    # planar elbow (2R) and of the articulated (elbow) arm, with the book's wrist-centre names.
+    from dhsym.inverse import solve
+
+    S = lambda name: sympy.Symbol(name, real=True)  # noqa: E731
+    x, y, a1, a2 = S("px"), S("py"), S("a_1"), S("a_2")
+    D = (x ** 2 + y ** 2 - a1 ** 2 - a2 ** 2) / (2 * a1 * a2)
+    t2 = S("theta_2")
+    planar = [D, sympy.atan2(sympy.sqrt(1 - S("D") ** 2), S("D")),
+              sympy.atan2(y, x) - sympy.atan2(a2 * sympy.sin(t2), a1 + a2 * sympy.cos(t2))]
+    xc, yc, zc, d1, a3, t3 = S("px"), S("py"), S("pz"), S("d_1"), S("a_3"), S("theta_3")
+    elbow = [sympy.atan2(yc, xc),
+             (xc ** 2 + yc ** 2 + (zc - d1) ** 2 - a2 ** 2 - a3 ** 2) / (2 * a2 * a3),
+             sympy.atan2(sympy.sqrt(1 - S("D") ** 2), S("D")),
+             sympy.atan2(zc - d1, sympy.sqrt(xc ** 2 + yc ** 2)) - sympy.atan2(a3 * sympy.sin(t3), a2 + a3 * sympy.cos(t3))]
+    for name, book in (("planar2r", planar), ("spatial3r", elbow)):
+        robot = dhsym.load(name)
+        solution = solve(robot.chain, sample=robot.sample, numbers=robot.numbers)
+        assert _operations(solution) <= sum(map(sympy.count_ops, book)), name

@@ -134,8 +134,8 @@ def module_text(solution, name: str = "", command: str = "") -> str:
     targets = _targets(solution, names)
     parameters = [keyword.split("=")[0] for keyword in keywords]
     off = off_the_arm(solution, code)  # an arm of fewer than six joints: a pose off its set gives NaN
-    one = [] if off else function_text(statements, columns, revolute, parameters,
-                                       MathCode(names, solution.numbers, code.complex), targets)
+    one = [] if off else function_text(statements, columns, revolute, parameters, MathCode(names, solution.numbers,
+                                                                                             code.complex), targets)
     body = _body(solution, names, code, statements, columns, targets)
     lines = [
         *_docstring(name, command, chain.convention, bool(one)),
@@ -162,16 +162,21 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         "    elements = numpy.ascontiguousarray(poses.reshape(-1, 16).T)  # each element's values side by side: faster",
         *body,
         *off,
-        "    for k in REVOLUTE:",
-        "        angles = result[:, k]",
-        "        numpy.remainder(angles + numpy.pi, 2 * numpy.pi, out=angles)",
-        "        angles -= numpy.pi",
-        "    missing = ~numpy.isfinite(result).all(axis=1)  # a branch exists whole or not at all",
-        "    numpy.copyto(result, numpy.nan, where=missing[:, None, :])",
-        "    result = numpy.ascontiguousarray(result.transpose(2, 0, 1))",
-        "    return result[0] if T.ndim == 2 else result", "",
+        *_FINISH,
     ]
     return "\n".join(lines)
+
+
+_FINISH = [  # ik()'s last lines: angles into [-pi, pi), a branch whole or NaN, shaped (B, n) or (N, B, n)
+    "    for k in REVOLUTE:",
+    "        angles = result[:, k]",
+    "        numpy.remainder(angles + numpy.pi, 2 * numpy.pi, out=angles)",
+    "        angles -= numpy.pi",
+    "    missing = ~numpy.isfinite(result).all(axis=1)  # a branch exists whole or not at all",
+    "    numpy.copyto(result, numpy.nan, where=missing[:, None, :])",
+    "    result = numpy.ascontiguousarray(result.transpose(2, 0, 1))",
+    "    return result[0] if T.ndim == 2 else result", "",
+]
 
 
 def _docstring(name: str, command: str, convention: str, one: bool) -> list[str]:

@@ -65,7 +65,7 @@ def by_pair(candidates, derivation, constants, memos, witness=None) -> sympy.Exp
         det = det.xreplace(derivation.angles)
         derivation.vanishing.append((det, len(derivation.degenerate)))
         derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
-    value = sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms))
+    value = sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms), set(constants))
     in_pair_coordinates(derivation, candidates, witness)
     return _sine_as_sign(value, derivation)
 
@@ -74,6 +74,8 @@ def _sine_as_sign(value, derivation):
     """atan2(s5 y, s5 x) as atan2(σ y, σ x) where θ5 = atan2(σ√…, …) was solved with the sign σ:
     sin θ5 has σ's sign, so the books' θ4 = atan2(r23, r13) on one branch and atan2(−r23, −r13)
     on the other. Anything else is returned as it is."""
+    if not isinstance(value, sympy.atan2):
+        return value
     y, x = value.args
     shared = set(sympy.Mul.make_args(y)) & set(sympy.Mul.make_args(x))
     for factor in shared:

@@ -85,16 +85,7 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
         if angle == variable:
             derivation.assignments.append((variable, value))
         else:
-            phi = fresh_symbol(angle_name(angle, len(derivation.angles) + 1), derivation.reserved)
-            derivation.angles[phi] = angle
-            derivation.assignments.append((phi, value))
-            witness[phi] = number_at(angle, witness)
-            coefficient = angle.coeff(variable)
-            expression = algebra.expand((phi - (angle - coefficient * variable)) / coefficient)
-            pool = [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
-                    if variable in memos.free_symbols(e.lhs) | memos.free_symbols(e.rhs) else e
-                    for e in pool]  # the rest stay as they are
-            pending.append((variable, expression))
+            pool = _through_sum(variable, angle, value, pool, pending, derivation, witness, memos)
         remaining.remove(variable)
         ready = True
         while ready:  # a joint written through a sum is assigned once what it is written with is known
@@ -104,6 +95,21 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                 derivation.assignments.append(item)
                 pending.remove(item)
     return derivation
+
+
+def _through_sum(variable, angle, value, pool, pending, derivation, witness, memos) -> list:
+    """A sum of angles solved as one (θ23 = value): name it, write `variable` through it in the
+    equations left (returned), and keep `variable`'s own value pending until what it needs is known."""
+    phi = fresh_symbol(angle_name(angle, len(derivation.angles) + 1), derivation.reserved)
+    derivation.angles[phi] = angle
+    derivation.assignments.append((phi, value))
+    witness[phi] = number_at(angle, witness)
+    coefficient = angle.coeff(variable)
+    expression = algebra.expand((phi - (angle - coefficient * variable)) / coefficient)
+    pending.append((variable, expression))
+    return [replace(e, lhs=e.lhs.xreplace({variable: expression}), rhs=e.rhs.xreplace({variable: expression}))
+            if variable in memos.free_symbols(e.lhs) | memos.free_symbols(e.rhs) else e
+            for e in pool]  # the rest stay as they are
 
 
 def in_coordinates(value, coordinates) -> sympy.Expr:

@@ -19,6 +19,9 @@ from dataclasses import replace
 from types import SimpleNamespace
 
 import sympy
+from sympy.polys.domains import QQ
+from sympy.polys.fields import field as rational_field
+from sympy.polys.polyerrors import CoercionFailed, ExactQuotientFailed
 
 from ..core.chain import Chain
 from ..velocity.determinant import TooManyTerms, as_written, determinant, factored, joint_factors
@@ -99,27 +102,57 @@ def meeting_factor(chain: Chain, side, factors, sample, trials: int = 3):
         ratios = [_ratio(side, factor, values) for values in points]
         if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
             continue
-        k = sympy.cancel(ring.reduced(side) / ring.reduced(factor ** 2))
-        if k != 0 and not k.free_symbols & set(ring.generators):
+        if ring.multiple(side, factor ** 2):
             return factor
     return None
 
 
 class _Ring:
-    """Trigonometric polynomials in the joints as polynomials in c_k, s_k modulo s_k² + c_k² − 1."""
+    """Trigonometric polynomials in the joints as polynomials in c_k, s_k modulo s_k² + c_k² − 1.
+    The normal form keeps each s_k to the power 0 or 1 (s_k² is 1 − c_k²): two trigonometric
+    polynomials are equal exactly when their normal forms are. Worked in a sparse polynomial ring
+    over the rationals, not by SymPy's general reduction (Gröbner division), which took seconds."""
 
     def __init__(self, joints):
-        self.names, self.generators, self.rules = {}, [], []
+        self.names, self.pairs = {}, []
         for joint in joints:
             c, s = sympy.Dummy("c"), sympy.Dummy("s")
             self.names.update({sympy.cos(joint): c, sympy.sin(joint): s})
-            self.generators += [s, c]
-            self.rules.append(s ** 2 + c ** 2 - 1)
+            self.pairs.append((s, c))
 
-    def reduced(self, expr) -> sympy.Expr:
-        """The normal form of `expr`, its denominator (free of the joints) set aside."""
-        numerator, denominator = sympy.fraction(sympy.together(sympy.expand_trig(expr).xreplace(self.names)))
-        return sympy.reduced(numerator, self.rules, *self.generators)[1] / denominator
+    def multiple(self, side, square) -> bool:
+        """Whether side = k · square with k free of the joints (a nonzero constant expression)."""
+        side, square = (sympy.expand_trig(e).xreplace(self.names) for e in (side, square))
+        trig = [g for pair in self.pairs for g in pair]
+        generators = trig + sorted((side.free_symbols | square.free_symbols) - set(trig), key=str)
+        fractions, *_ = rational_field(generators, QQ)
+        try:  # the field multiplies out as it reads, far faster than sympy.expand and together
+            top, other = fractions.from_expr(side), fractions.from_expr(square)
+        except (CoercionFailed, ValueError):
+            return False
+        joints = range(len(trig))
+        if any(any(m[i] for i in joints) for d in (top.denom, other.denom) for m in d.keys()):
+            return False  # a denominator holding a joint: not a trigonometric polynomial
+        try:
+            k = self._normal(top.numer).exquo(self._normal(other.numer))
+        except ExactQuotientFailed:
+            return False
+        return bool(k) and all(not any(monomial[i] for i in joints) for monomial in k.keys())
+
+    def _normal(self, p):
+        """p with every s_k² replaced by 1 − c_k² (one pass: the replacement holds no s_k)."""
+        polys = p.ring
+        one = polys.one
+        lowered = [(2 * k, 2 * k + 1, one - polys.gens[2 * k + 1] ** 2) for k in range(len(self.pairs))]
+        total = polys.zero
+        for monomial, coefficient in p.items():
+            exponents, term = list(monomial), polys.ground_new(coefficient)
+            for s_index, _, factor in lowered:
+                half, exponents[s_index] = divmod(exponents[s_index], 2)
+                if half:
+                    term *= factor ** half
+            total += term * polys.from_dict({tuple(exponents): 1})
+        return total
 
 
 def _ratio(side, factor, values) -> float | None:

@@ -25,6 +25,7 @@ import sympy
 from ..core.size import length
 from . import algebra
 from .sentences import LinedUp, Undetermined
+from .turned import turned_pair
 
 
 def expand_around(expr: sympy.Expr, variable: sympy.Symbol) -> sympy.Expr | None:
@@ -166,7 +167,7 @@ def existence(a, b, c) -> sympy.Expr | None:
     return a ** 2 + b ** 2 - c ** 2
 
 
-def pair(first, second, sign: int | None | str = "unknown") -> sympy.Expr:
+def pair(first, second, sign: int | None | str = "unknown", constants=frozenset()) -> sympy.Expr:
     """θ from two equations a cos θ + b sin θ = c, solved as a linear system in (cos θ, sin θ):
     atan2 of the pair, one root. `first` and `second` are (a, b, c); `sign` is their
     determinant's, when the caller has worked it out already.
@@ -177,7 +178,12 @@ def pair(first, second, sign: int | None | str = "unknown") -> sympy.Expr:
     """
     (a1, b1, k1), (a2, b2, k2) = first, second
     cos_part, sin_part = k1 * b2 - b1 * k2, a1 * k2 - a2 * k1
-    sign = determinant_sign(first, second) if sign == "unknown" else sign  # the caller may know it
+    turned = turned_pair(first, second, constants, _tidy)
+    sign = determinant_sign(first, second) if turned is None and sign == "unknown" else sign
+    if turned is not None:
+        single = sympy.atan2(_tidy(sin_part), _tidy(cos_part)) if algebra.expand(a1 * b2 - a2 * b1).is_positive \
+            else None
+        return min(filter(None, (turned, single)), key=sympy.count_ops)
     if sign is None:  # atan2(s·det², c·det²) = atan2(s, c): det² > 0 wherever det ≠ 0
         det = a1 * b2 - a2 * b1
         return sympy.atan2(_tidy(sin_part * det), _tidy(cos_part * det))
