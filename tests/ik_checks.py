@@ -24,7 +24,8 @@ def check_json(text: str, chain) -> dict:
     assigned before it; the target's names and the derivation's are never the robot's own (a
     robot's D or px stays its own; the derivation's get a prime, ʹ)."""
     data = json.loads(text)
-    assert set(data) == JSON_KEYS
+    limited = bool(getattr(chain, "joint_limits", ()))  # a robot with joint limits has them in its JSON too
+    assert set(data) == JSON_KEYS | ({"joint_limits"} if limited else set())
     robot = {s.name for s in chain.symbols}
     assert [name.rstrip("ʹ") for name in data["target"]] == list(TARGET_NAMES)
     assert not set(data["target"]) & robot

@@ -65,14 +65,14 @@ def test_the_ur5s_law_of_cosines_is_written_in_the_coordinates_theta2_uses():
     assert "X    = px c1 + py s1 + d6 s5 cθ234 − d5 sθ234" in branch
     assert "Y    = pz + d6 s5 sθ234 + d5 cθ234 − d1" in branch
     assert "D    = (X² + Y² − a2² − a3²)/(2 a2 a3)" in branch
-    assert "θ2   = atan2(Y(a2 + a3 c3) − X a3 s3, Y a3 s3 + X(a2 + a3 c3))" in branch
+    assert "θ2   = atan2(Y, X) − atan2(a3 s3, a2 + a3 c3)" in branch  # Spong's elbow, as Hawkins writes it
 
 
 def test_the_planar_3r_names_its_wrist_point_and_writes_d_in_it():
     # Craig's and Spong's planar 3R: the wrist point (x, y) = (px − l3 cφ, py − l3 sφ), then the 2R's D
     text = run_dhsym("ik", "planar3r", "--width", "200").stdout
     for line in ("X    = px − l3 cθ123", "Y    = py − l3 sθ123", "D    = (X² + Y² − l1² − l2²)/(2 l1 l2)",
-                 "θ1 = atan2(Y(l1 + l2 c2) − X l2 s2, Y l2 s2 + X(l1 + l2 c2))"):
+                 "θ1 = atan2(Y, X) − atan2(l2 s2, l1 + l2 c2)"):
         assert line in text, line
     assert "r11" not in text.split("Branch 1")[0].split("θ123 = atan2(r21, r11)")[1]
 

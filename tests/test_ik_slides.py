@@ -161,7 +161,7 @@ def test_compiled_slides_show_the_branches_once_with_their_sign_table(tmp_path, 
     if name == "puma560":
         tight = words.replace(" ", "")  # pdftotext spaces out subscripts
         assert "(u4×u6along+u5/−u5)" in tight and "Anglessolvedasone:θ23=θ2+θ3." in tight
-        assert len(titles) == 9  # problem 2, derivation 3, branches 2, existence and legend 2
+        assert len(titles) == 10  # problem 2, derivation 3, branches 2, existence 2 (the det J factors said), legend 1
 
 
 def test_a_lone_branch_of_one_line_ends_the_frame_before_it():

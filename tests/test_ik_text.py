@@ -59,7 +59,7 @@ def test_planar3r_theta1_is_the_textbook_form():
     text = _solved("planar3r").text()
     # the wrist point (x, y) = (px − l3 cφ, py − l3 sφ) named, as Craig and Spong name it, and θ1 written in it
     assert "  X    = px − l3 cθ123\n  Y    = py − l3 sθ123\n" in text
-    assert "  θ1 = atan2(Y(l1 + l2 c2) − X l2 s2, Y l2 s2 + X(l1 + l2 c2))" in text
+    assert "  θ1 = atan2(Y, X) − atan2(l2 s2, l1 + l2 c2)" in text
     assert "  θ3 = θ123 − θ1 − θ2" in text  # θ123 = θ1 + θ2 + θ3, named as a book names θ23
 
 
@@ -128,4 +128,4 @@ def test_every_builtin_latex_with_ik_compiles_and_fits(name, tmp_path):
 def test_the_wrist_centre_comes_first_in_a_sum_as_the_target_does():
     words = " ".join(_solved("inline6").text().split())
     assert "D = (xc² + yc² + zc² − 2 d1 zc + d1² − a2² − d4²)/(2 a2 d4)" in words  # Spong's form, expanded
-    assert "a2 c3(zc − d1)" in words and "d1 − zc" not in words
+    assert "θ23 = atan2(xc c1 + yc s1, −zc + d1) − atan2(a2 c3, d4 + a2 s3)" in words and "d1 − zc" not in words

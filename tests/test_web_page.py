@@ -51,7 +51,7 @@ def site():
                            text=True, cwd=ROOT)
     assert build.returncode == 0, build.stdout[-2000:] + build.stderr[-3000:]
     assert "built from its sdist without the libyaml C extension" in build.stdout  # the build says so
-    (BUILT / "screenshots").mkdir()
+    (BUILT / "screenshots").mkdir(exist_ok=True)
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(QuietHandler, directory=str(BUILT)))
     threading.Thread(target=server.serve_forever, daemon=True).start()
     yield f"http://127.0.0.1:{server.server_address[1]}/"
@@ -171,7 +171,7 @@ def test_the_inverse_kinematics_of_the_planar_2r_and_its_drawing(open_page):
         page.click("#slides")
     tex = Path(download.value.path()).read_text(encoding="utf-8")
     assert download.value.suggested_filename == "planar2r.tex"
-    assert "\\documentclass[11pt,aspectratio=169]{beamer}" in tex and "Branch 1: elbow down" in tex
+    assert "\\documentclass[11pt,aspectratio=169]{beamer}" in tex and "1 & $+$ & elbow down" in tex  # the sign table
 
     page.click("#tabs button[data-show=jacobian]")
     assert settled(page, "8-planar2r-jacobian") == "ready"

@@ -42,7 +42,8 @@ IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when 
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
              "angles", "elements", "missing", "k", "real_angle", "IMAGINARY", "math", "cmath", "one_pose",
-             "root_one", "real_angle_one", "absent", "NUMBER", "off", "tolerance"}  # the module's own names
+             "root_one", "real_angle_one", "absent", "NUMBER", "off", "tolerance", "off_the_arm",
+             "Q"}  # the module's own names
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
@@ -134,8 +135,8 @@ def module_text(solution, name: str = "", command: str = "") -> str:
     targets = _targets(solution, names)
     parameters = [keyword.split("=")[0] for keyword in keywords]
     off = off_the_arm(solution, code)  # an arm of fewer than six joints: a pose off its set gives NaN
-    one = [] if off else function_text(statements, columns, revolute, parameters, MathCode(names, solution.numbers,
-                                                                                             code.complex), targets)
+    one = function_text(statements, columns, revolute, parameters, MathCode(names, solution.numbers, code.complex),
+                        targets)
     body = _body(solution, names, code, statements, columns, targets)
     lines = [
         *_docstring(name, command, chain.convention, bool(one)),
@@ -151,17 +152,18 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         *(HELPERS if one else []),
         *(_REAL_ANGLE if code.complex else []),
         *(REAL_ANGLE if one and code.complex else []),
+        *off,
         *one,
         f"def ik(T, *, {', '.join(keywords)}):" if keywords else "def ik(T):",
         '    """Every branch\'s joint values for the pose(s) T; see the module\'s docstring."""',
         "    T = numpy.asarray(T, dtype=float)",
-        *(_dispatch(parameters) if one else []),
+        *(_dispatch(parameters, bool(off)) if one else []),
         "    if T.ndim not in (2, 3) or T.shape[-2:] != (4, 4):",
         '        raise ValueError(f"T must be one pose (4, 4) or many (N, 4, 4), not an array of shape {T.shape}")',
         "    poses = T.reshape(-1, 4, 4)",
         "    elements = numpy.ascontiguousarray(poses.reshape(-1, 16).T)  # each element's values side by side: faster",
         *body,
-        *off,
+        *(["    result[:, :, off_the_arm(elements)] = numpy.nan"] if off else []),
         *_FINISH,
     ]
     return "\n".join(lines)
@@ -210,13 +212,17 @@ def _targets(solution, names: dict) -> list[tuple[int, str]]:
     return [(k, names[element.name]) for k, element in enumerate(solution.target_symbols) if element.name in held]
 
 
-def _dispatch(parameters) -> list[str]:
-    """ik()'s first lines: one pose of plain numbers goes to one_pose(), unless plain floats raise."""
+def _dispatch(parameters, checked: bool) -> list[str]:
+    """ik()'s first lines: one pose of plain numbers goes to one_pose(), unless plain floats raise;
+    where the arm has relations (`checked`), a pose that breaks one gives NaN there too."""
     numbers = "".join(f" and isinstance({name}, NUMBER)" for name in parameters)
     call = ", ".join(["T", *parameters])
+    answer = (f"            Q = one_pose({call})\n"
+              "            return numpy.full_like(Q, numpy.nan) if off_the_arm(T.reshape(16, 1))[0] else Q") \
+        if checked else f"            return one_pose({call})"
     return [f"    if T.shape == (4, 4){numbers}:",
             "        try:",
-            f"            return one_pose({call})",
+            answer,
             "        except (ArithmeticError, ValueError, TypeError):  # a division by 0, ...: numpy's NaN below",
             "            pass"]
 

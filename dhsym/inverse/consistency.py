@@ -38,15 +38,18 @@ def tool_relations(chain: Chain, fixed) -> tuple:
 
 
 def off_the_arm(solution, printer) -> list[str]:
-    """Lines of the generated ik() that set every branch to NaN for a pose that breaks one of the
-    arm's relations (an arm of POSE_JOINTS to five unknown joints); `printer` writes numpy code."""
+    """The generated module's function `off_the_arm(elements)`: for the poses' elements (16, N), True
+    where a pose breaks one of the arm's relations (an arm of POSE_JOINTS to five unknown joints), so
+    that ik() gives NaN there; [] for any other arm. `printer` writes numpy code."""
     said = [c for c in solution.conditions if isinstance(c, Consistent)]
     kept = said[0].fixed + said[0].relations if said else ()
     if not kept or not POSE_JOINTS <= len(solution.joint_variables) < 6:
         return []
     elements = {t: sympy.Dummy(f"elements[{k}]") for k, t in enumerate(solution.target_symbols)}
-    lines = ["    off = numpy.zeros(len(poses), dtype=bool)  # a pose the arm cannot take: no branch reaches it",
+    lines = ["def off_the_arm(elements):",
+             '    """For the poses\' elements (16, N): True where the arm cannot take the pose."""',
+             "    off = numpy.zeros(elements.shape[1], dtype=bool)",
              f"    tolerance = {OFF!r} * (1 + abs(elements[3]) + abs(elements[7]) + abs(elements[11]))"]
     for side, value in kept:
         lines.append(f"    off |= abs({printer.doprint((side - value).xreplace(elements))}) > tolerance")
-    return lines + ["    result[:, :, off] = numpy.nan"]
+    return lines + ["    return off", "", ""]

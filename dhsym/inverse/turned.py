@@ -14,9 +14,10 @@ def turned_pair(first, second, constants=frozenset(), tidy=lambda expr: expr):
     """Where the pair is a turn, a cos θ + b sin θ = u and −b cos θ + a sin θ = v (the point (u, v) is
     the point (a, −b) turned by θ), θ as Spong writes the planar elbow's θ1: the angle of (u, v) less
     the angle of (a, −b), atan2(v, u) − atan2(−b, a); likewise with either equation's sign turned or
-    the two swapped; else None. Defined where a² + b² ≠ 0, the pair's degenerate case. Of the ways
-    to write it, the shortest; among equals the one with the book's stretch, atan2(a2 s2, a1 + a2 c2)
-    (a positive constant in its x: `constants`, the robot's lengths), then the fewest minus signs.
+    the two swapped. Defined where a² + b² ≠ 0, the pair's degenerate case. Of the ways to write it,
+    the shortest; among equals the one with the book's stretch, atan2(a2 s2, a1 + a2 c2) (a positive
+    constant in its x, none in its y: `constants`, the robot's lengths), then the fewest minus signs.
+    None where no way has such a stretch (the PUMA's θ23 stays Craig's one atan2).
 
     >>> a1, a2, c2, s2, x, y = sympy.symbols("a_1 a_2 c_2 s_2 x y", real=True)
     >>> turned_pair((a1 + a2 * c2, -a2 * s2, x), (a2 * s2, a1 + a2 * c2, y), {a1, a2})
@@ -32,15 +33,25 @@ def turned_pair(first, second, constants=frozenset(), tidy=lambda expr: expr):
                     for target in _angles(sign * flip * k2, sign * k1, tidy):
                         for stretch in _angles(-sign * b1, sign * a1, tidy):
                             form = target - stretch
-                            stretched = any(_has_constant(angle.args[1], constants)
-                                            for angle in form.atoms(sympy.atan2))
+                            stretched = any(_is_stretch(angle, constants) for angle in form.atoms(sympy.atan2))
                             found.append((sympy.count_ops(form), not stretched, _minus_signs(form), form))
-    return min(found, key=lambda option: option[:3], default=(None,))[-1]
+    best = min(found, key=lambda option: option[:3], default=None)
+    return best[-1] if best and not best[1] else None  # a stretch as the elbow's triangle has it, else one atan2
 
 
-def _has_constant(x, constants) -> bool:
-    """Whether x has a positive term in the robot's `constants` alone (a1 in a1 + a2 c2)."""
-    return any(term.free_symbols and term.free_symbols <= constants and not term.could_extract_minus_sign()
+def _is_stretch(angle, constants) -> bool:
+    """Whether atan2(y, x) is the elbow's triangle as a book draws it, atan2(a2 s2, a1 + a2 c2): in the
+    robot's lengths and sines and cosines of joints only, a positive length alone in x, none in y."""
+    y, x = angle.args
+    trig = {f: sympy.S.One for f in angle.atoms(sympy.sin, sympy.cos)}
+    return angle.xreplace(trig).free_symbols <= constants and _has_constant(x, constants) and \
+        not _has_constant(y, constants, sign=False)
+
+
+def _has_constant(x, constants, sign: bool = True) -> bool:
+    """Whether x has a term in the robot's `constants` alone (a1 in a1 + a2 c2), a positive one
+    where `sign`."""
+    return any(term.free_symbols and term.free_symbols <= constants and not (sign and term.could_extract_minus_sign())
                for term in sympy.Add.make_args(algebra.expand(x)))
 
 
