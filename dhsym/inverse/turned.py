@@ -19,9 +19,10 @@ def turned_pair(first, second, constants=frozenset(), tidy=lambda expr: expr):
     constant in its x, none in its y: `constants`, the robot's lengths), then the fewest minus signs.
     None where no way has such a stretch (the PUMA's θ23 stays Craig's one atan2).
 
-    >>> a1, a2, c2, s2, x, y = sympy.symbols("a_1 a_2 c_2 s_2 x y", real=True)
+    >>> a1, a2, t2, x, y = sympy.symbols("a_1 a_2 theta_2 x y", real=True)
+    >>> c2, s2 = sympy.cos(t2), sympy.sin(t2)
     >>> turned_pair((a1 + a2 * c2, -a2 * s2, x), (a2 * s2, a1 + a2 * c2, y), {a1, a2})
-    atan2(y, x) - atan2(a_2*s_2, a_1 + a_2*c_2)
+    atan2(y, x) - atan2(a_2*sin(theta_2), a_1 + a_2*cos(theta_2))
     """
     if any(algebra.expand(c).is_number for c in (*first[:2], *second[:2])):
         return None  # a turn by a constant angle (s5 cos θ = x): the single atan2 says it better
