@@ -118,7 +118,8 @@ def test_the_elbow_arm_and_the_planar_2r_are_no_longer_than_spongs():
     elbow = [sympy.atan2(yc, xc),
              (xc ** 2 + yc ** 2 + (zc - d1) ** 2 - a2 ** 2 - a3 ** 2) / (2 * a2 * a3),
              sympy.atan2(sympy.sqrt(1 - S("D") ** 2), S("D")),
-             sympy.atan2(zc - d1, sympy.sqrt(xc ** 2 + yc ** 2)) - sympy.atan2(a3 * sympy.sin(t3), a2 + a3 * sympy.cos(t3))]
+             sympy.atan2(zc - d1, sympy.sqrt(xc ** 2 + yc ** 2))
+             - sympy.atan2(a3 * sympy.sin(t3), a2 + a3 * sympy.cos(t3))]
     for name, book in (("planar2r", planar), ("spatial3r", elbow)):
         robot = dhsym.load(name)
         solution = solve(robot.chain, sample=robot.sample, numbers=robot.numbers)
