@@ -19,13 +19,14 @@ misses the pose, while the branch with that one sign flipped reaches it.
 >>> t1, t2 = arm.joint_variables
 >>> solution = derive(arm)
 >>> (D, _), = solution.definitions
->>> y, x = solution.branches[0].values()[t1].args
+>>> target, stretch = sorted(solution.branches[0].values()[t1].args, key=lambda a: a.has(t2))  # θ1 = φ − ψ
+>>> (y, x), stretch = target.args, -stretch
 >>> s1, s2 = sympy.symbols("sigma_1 sigma_2", real=True)
 >>> elbow = sympy.atan2(s1 * sympy.sqrt(1 - D**2), D)
->>> both = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(y, x))], signs=[(s1, t2, "law")])
+>>> both = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(y, x) - stretch)], signs=[(s1, t2, "law")])
 >>> wrong_root(arm, {}, solution.definitions, both, [t1, t2]) is None   # elbow up and down both reach
 True
->>> turned = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(s2 * y, s2 * x))],
+>>> turned = Derivation(assignments=[(t2, elbow), (t1, sympy.atan2(s2 * y, s2 * x) - stretch)],
 ...                     signs=[(s1, t2, "law"), (s2, t1, "one")])
 >>> wrong_root(arm, {}, solution.definitions, turned, [t1, t2])   # θ1 + π points the arm away
 theta_1
