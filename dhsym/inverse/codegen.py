@@ -34,7 +34,7 @@ from sympy.printing.numpy import NumPyPrinter
 from ..core.numbers import decimal_text
 from .consistency import off_the_arm
 from .fresh import PRIME
-from .onepose import HELPERS, REAL_ANGLE, MathCode, Spelling, function_text
+from .onepose import HELPERS, REAL_ANGLE, MathCode, Spelling, function_text, statement_lines
 from .quartic import Complex
 
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
@@ -238,14 +238,7 @@ def _body(solution, names: dict, code, statements, columns, targets) -> list[str
 
 def _numpy_lines(statements, columns, code) -> list[str]:
     """The batch path's computation: each statement in numpy, then each branch's values put in result."""
-    out = []
-    for comment, symbol, expression, casting in statements:
-        if comment is not None:
-            out.append(f"# {comment}")
-            continue
-        code.casting = casting
-        out.append(f"{code.doprint(symbol)} = {code.doprint(expression)}")
-    code.casting = False
+    out = statement_lines(statements, code)
     for number, values in enumerate(columns):
         for k, value in enumerate(values):
             text = "numpy.nan" if value is None else code.doprint(value)

@@ -88,6 +88,20 @@ REAL_ANGLE = [
     "    return math.nan", "", ""]
 
 
+def statement_lines(statements, code) -> list[str]:
+    """`name = expression` for each statement (a comment line where it is one), printed by `code`
+    (numpy for a batch, math for one pose), with the complex casting each statement asks for."""
+    lines = []
+    for comment, symbol, expression, casting in statements:
+        if comment is not None:
+            lines.append(f"# {comment}")
+            continue
+        code.casting = casting
+        lines.append(f"{code.doprint(symbol)} = {code.doprint(expression)}")
+    code.casting = False
+    return lines
+
+
 def function_text(statements, columns, revolute, parameters, code: MathCode, targets) -> list[str]:
     """The lines of `one_pose(T, *parameters)`, or [] where math cannot spell a statement or a value
     is a revolute angle in one place and not in another. `statements`: (comment, symbol, expression,
@@ -103,13 +117,7 @@ def function_text(statements, columns, revolute, parameters, code: MathCode, tar
              '    """ik() of one pose (4, 4) in plain floats (see the module\'s docstring)."""',
              f"    {unpacked} = T.tolist()[:3]"]
     try:
-        for comment, symbol, expression, casting in statements:
-            if comment is not None:
-                lines.append(f"    # {comment}")
-                continue
-            code.casting = casting
-            lines.append(f"    {code.doprint(symbol)} = {code.doprint(expression)}")
-        code.casting = False
+        lines += ["    " + line for line in statement_lines(statements, code)]
         wrapped = [code.doprint(angle) for angle in sorted(angles, key=str)]
         lines += [f"    {name} = ({name} + math.pi) % math.tau - math.pi" for name in wrapped]
         rows = [[("math.nan" if value is None else code.doprint(value)) for value in values] for values in columns]
