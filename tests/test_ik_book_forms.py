@@ -26,11 +26,32 @@ def _branches(name: str) -> list[list[str]]:
 
 @pytest.mark.parametrize("name", ["spherical_wrist", "spherical_wrist_spong"])
 def test_a_wrist_alone_is_solved_theta5_then_theta4_then_theta6_as_the_books_do(name):
+    # Spong (2006), the Euler angles: θ = atan2(±√(1 − r33²), r33), φ = atan2(±r23, ±r13), ψ = atan2(±r32, ∓r31)
     not_flipped, flipped = _branches(name)
-    assert not_flipped == ["θ5 = atan2(√(1 − r33²), r33)", "θ4 = atan2(r23, r13)",
-                           "θ6 = atan2(r21 c4 − r11 s4, r22 c4 − r12 s4)"]
-    assert flipped[:2] == ["θ5 = atan2(−√(1 − r33²), r33)", "θ4 = atan2(−r23, −r13)"]
-    assert "1 − r33² ≥ 0" in run_dhsym("ik", name).stdout
+    assert not_flipped == ["θ5 = atan2(√(1 − r33²), r33)", "θ4 = atan2(r23, r13)", "θ6 = atan2(r32, −r31)"]
+    assert flipped == ["θ5 = atan2(−√(1 − r33²), r33)", "θ4 = atan2(−r23, −r13)", "θ6 = atan2(−r32, r31)"]
+    text = run_dhsym("ik", name, "--width", "300").stdout
+    assert "1 − r33² ≥ 0" in text
+    # where s5 = 0 the book's θ6 is atan2(0, 0): the degenerate case says what is taken there
+    assert "one member: there θ6 = atan2(r21 c4 − r11 s4, r22 c4 − r12 s4) with the θ4 it finds" in text
+
+
+def test_a_wrist_alone_is_no_longer_than_spongs():
+    from dhsym.inverse import solve
+
+    r = {name: sympy.Symbol(name, real=True) for name in ("r13", "r23", "r31", "r32", "r33")}
+    book = [sympy.atan2(sympy.sqrt(1 - r["r33"] ** 2), r["r33"]), sympy.atan2(r["r23"], r["r13"]),
+            sympy.atan2(r["r32"], -r["r31"])]
+    robot = dhsym.load("spherical_wrist")
+    assert _operations(solve(robot.chain, sample=robot.sample)) <= sum(map(sympy.count_ops, book)) == 8
+
+
+def test_the_pumas_theta6_is_the_third_row_of_its_wrist_rotation_as_siciliano_writes_it():
+    # Siciliano et al., the anthropomorphic arm with a spherical wrist: θ6 = atan2(r'32, −r'31), r' = R03ᵀ R,
+    # whose third row here is −(c1 s23, s1 s23, c23): three terms a side, the signs of θ5's branch
+    not_flipped, flipped = _branches("puma560")[:2]
+    assert "θ6  = atan2(r12 c1 s23 + r22 s1 s23 + r32 c23, −r11 c1 s23 − r21 s1 s23 − r31 c23)" in not_flipped
+    assert "θ6  = atan2(−r12 c1 s23 − r22 s1 s23 − r32 c23, r11 c1 s23 + r21 s1 s23 + r31 c23)" in flipped
 
 
 def test_the_pumas_theta4_is_craigs_with_the_sign_of_s5_not_s5_itself():
@@ -48,11 +69,13 @@ def test_every_branch_reaches_the_pose_and_the_singular_wrist_gives_a_member(nam
     constants = {k: float(v) for k, v in robot.sample.items() if k in robot.chain.symbols}
     fk = robot.chain.fk(raw=True)
     rng = random.Random(27)
-    for theta5 in (rng.uniform(0.3, 2.8), -rng.uniform(0.3, 2.8), 0.0):
+    for theta5 in (rng.uniform(0.3, 2.8), -rng.uniform(0.3, 2.8), 0.0, math.pi, 1e-7, 1e-5):
         q = {v: rng.uniform(-math.pi, math.pi) for v in robot.joint_variables}
         q[robot.joint_variables[-2]] = theta5
         target = numpy.array(fk.xreplace({**constants, **q}).evalf(), dtype=float)
-        real = [b for b in evaluate(solution, target) if not numpy.isnan(b).any()]
+        one, batch = evaluate(solution, target), evaluate(solution, target[None])[0]  # math and numpy paths
+        assert numpy.allclose(one, batch, equal_nan=True)
+        real = [b for b in one if not numpy.isnan(b).any()]
         assert real
         for branch in real:
             reached = fk.xreplace({**constants, **dict(zip(solution.joint_variables, map(sympy.Float, branch)))})

@@ -39,17 +39,22 @@ from .quartic import Complex
 
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when its imaginary part is this small
+# |sin θ5| below this: the wrist's axes line up and θ6 is taken through θ4 (the degenerate case's member),
+# since the books' atan2(σ r32, −σ r31) is atan2 of rounding noise there; above it that form loses < 1e-9 rad
+LINED_UP = 1e-6
 
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
              "angles", "elements", "missing", "k", "real_angle", "IMAGINARY", "math", "cmath", "one_pose",
              "root_one", "real_angle_one", "absent", "NUMBER", "off", "tolerance", "off_the_arm",
-             "Q"}  # the module's own names
+             "Q", "LINED_UP"}  # the module's own names
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
 class NumpyCode(Spelling, NumPyPrinter):
     """numpy.cos, numpy.sqrt, …; names made safe for Python (`names`: symbol name → Python name),
     a Dummy is a variable of the module's own, named already; decimals as the robot file wrote them."""
+
+    CHOICE = "numpy.where(abs({guard}) < LINED_UP, {member}, {value})"
 
     def __init__(self, names: dict, numbers):
         super().__init__({"fully_qualified_modules": True})
@@ -145,6 +150,8 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         f"JOINTS = {tuple(j.name for j in joints)!r}",
         f"REVOLUTE = {revolute!r}  # the positions of the revolute joints in JOINTS",
         f"ROUNDING = {ROUNDING!r}  # a square root of a number this close below 0 is a root of 0",
+        *([f"LINED_UP = {LINED_UP!r}  # |sin| of the wrist's middle angle below this: its axes line up"]
+          if members(solution) else []),
         *(["NUMBER = (int, float)  # constants of these types let one pose take the plain-float path"] if one else []),
         "", "",
         "def root(x):",
@@ -207,7 +214,8 @@ def _keywords(solution, names: dict, constants) -> list[str]:
 def _targets(solution, names: dict) -> list[tuple[int, str]]:
     """(index among the pose's elements, Python name) of each target element the solution reads."""
     used = set().union(*(value.free_symbols for _, value in solution.definitions),
-                       *(value.free_symbols for branch in solution.branches for _, value in branch.assignments))
+                       *(value.free_symbols for branch in solution.branches for _, value in branch.assignments),
+                       *(value.free_symbols for _, value in members(solution).values()))
     held = {symbol.name for symbol in used}
     return [(k, names[element.name]) for k, element in enumerate(solution.target_symbols) if element.name in held]
 
@@ -306,14 +314,28 @@ def _computation(solution, names: dict, code) -> tuple[list, list]:
     for name, value in solution.definitions:
         shared[name] = compute(name, value, shared)
     columns = []
+    lined_up = members(solution)
     for branch in solution.branches:
         lines.append((comment_text(branch.name), None, None))
         known = dict(shared)
         for name, value in branch.assignments:
+            if name in lined_up:  # the degenerate case's member where its condition holds
+                condition, member = lined_up[name]
+                value = sympy.Piecewise((member, sympy.Abs(condition) < _LINED_UP), (value, True))
             known[name] = compute(name, value, known)
         columns.append([known.get(joint) if joint in known else (joint if joint in solution.free else None)
                         for joint in solution.joint_variables])
     return _shared_subexpressions(lines, taken, code), columns
+
+
+_LINED_UP = sympy.Dummy("LINED_UP")  # the module's constant, by name
+
+
+def members(solution) -> dict:
+    """{joint: (condition, value)}: where `condition` is 0 (|sin θ5| < LINED_UP), the joint takes
+    `value`, the member of the family its degenerate case names (dhsym.inverse.mirrored)."""
+    return {joint: (case.condition[0], value) for case in solution.degenerate
+            for joint, value in getattr(case, "member", ())}
 
 
 def _shared_subexpressions(lines, taken: set, code) -> list[tuple]:

@@ -94,7 +94,8 @@ def decouple_at_wrist(problem: Problem, unique) -> Found:
         lambda fresh: pieper(chain, problem.numbers, point, local, holder, arm, fresh,
                              taken=[n for n, _ in definitions]))
     scan(transform_equations(chain, target, position=False, start=holder), wrist, problem.prismatic, derivation,
-         prefer=("orientation",), constants=problem.constants, witness=witness, unique=unique, first=wrist[1::-1])
+         prefer=("orientation",), constants=problem.constants, witness=witness, unique=unique, first=wrist[1::-1],
+         last=wrist[2:])
     return Found(derivation, definitions, wrist,
                  Decoupled(wrist=joints, arm=tuple(arm), oriented=tuple(wrist), quartic=quartic))
 
@@ -125,7 +126,7 @@ def euler_wrist(problem: Problem, unique) -> Found:
     middle = problem.unknowns[1::-1] if len(problem.unknowns) == 3 else ()  # the books' θ5, then θ4, then θ6
     scan(transform_equations(problem.chain, problem.target, position=False), problem.unknowns, problem.prismatic,
          derivation, prefer=("orientation",), constants=problem.constants, witness=dict(problem.witness),
-         unique=unique, first=middle)
+         unique=unique, first=middle, last=problem.unknowns[2:] if middle else ())
     return Found(derivation, [], list(problem.unknowns), EulerWrist(joints=problem.structure.unknowns))
 
 

@@ -36,6 +36,15 @@ class Spelling:
     def _print_Written(self, expr):  # a number as the robot file wrote it (dhsym.inverse.written)
         return expr.name
 
+    CHOICE = "({member} if abs({guard}) < LINED_UP else {value})"  # how the printer writes a choice
+
+    def _print_Piecewise(self, expr):
+        """The lined-up wrist's member where |guard| < LINED_UP, else the branch's value
+        (dhsym.inverse.codegen.members: the only choice the module makes)."""
+        (member, condition), (value, _) = expr.args
+        guard = next(a for a in condition.args if isinstance(a, sympy.Abs)).args[0]
+        return self.CHOICE.format(member=self._print(member), guard=self._print(guard), value=self._print(value))
+
 
 class MathCode(Spelling, PythonCodePrinter):
     """math.cos, math.atan2, …; root_one for a square root at the workspace's edge, cmath for the

@@ -65,6 +65,28 @@ def best(pool, remaining, prismatic, prefer, constants, witness, memos, unique=f
     return (preferred and _first(preferred, witness, memos)) or _first(options, witness, memos)
 
 
+def pairs_for(pool, variable, settings, keep, limit: int = FORMS_PER_UNKNOWN) -> list[Option]:
+    """The pairs of equations that determine the angle `variable`, made of the first `limit`
+    equations whose forms `keep` admits (shortest first), each pair of one matrix equation: the other
+    ways a round could solve it (dhsym.inverse.mirrored). `settings`: (prismatic, prefer,
+    constants, witness, memos) of the search."""
+    prismatic, prefer, constants, witness, memos = settings
+    order = list(prefer) + [k for k in KINDS if k not in prefer]
+    singles = []
+    for items in _grouped(pool, [variable], prismatic, order, memos).values():
+        for *_, equation, shape in items:
+            found = candidate(equation, shape, constants, memos) if len(singles) < limit else None
+            if found is not None and keep(found) and not says_nothing(found, prismatic, witness):
+                singles.append(found)
+    kind = lambda c: order.index(c.equation.kind)  # noqa: E731
+    working = []
+    for option in _pairs(singles, kind, prismatic, memos, limit):
+        forms = tuple(c.form for c in option.candidates)
+        if memos.remember(memos.works, forms, pair_works, *forms, witness):
+            working.append(option)
+    return working
+
+
 def preference(single, prismatic, witness) -> tuple[str, Preference]:
     """(rule, Preference) of one equation solved on its own."""
     if single.variable not in prismatic:
@@ -130,7 +152,7 @@ def _singles(singles, kind, prismatic, witness, memos, unique) -> list[Option]:
     return options
 
 
-def _pairs(singles, kind, prismatic, memos) -> list[Option]:
+def _pairs(singles, kind, prismatic, memos, limit: int = PAIR_CANDIDATES) -> list[Option]:
     """An option for each pair of the shortest equations of one matrix equation in the same angle,
     its preference a lower bound (CONSTANT_PAIR, or PAIR_SIGN_KNOWN) until it is checked."""
     by_source: dict = {}
@@ -139,7 +161,7 @@ def _pairs(singles, kind, prismatic, memos) -> list[Option]:
             by_source.setdefault((single.angle, single.equation.source), []).append(single)
     options = []
     for group in by_source.values():
-        for first, second in combinations(group[:PAIR_CANDIDATES], 2):
+        for first, second in combinations(group[:limit], 2):
             constant = all(x.is_number for x in first.form[:2] + second.form[:2])
             rank = Preference.CONSTANT_PAIR if constant else Preference.PAIR_SIGN_KNOWN
             length = memos.form_length(first.form) + memos.form_length(second.form)

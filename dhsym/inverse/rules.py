@@ -67,10 +67,10 @@ def by_pair(candidates, derivation, constants, memos, witness=None) -> sympy.Exp
         derivation.degenerate.append(sp.degenerate_pair(det, said, forms))
     value = sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms), set(constants))
     in_pair_coordinates(derivation, candidates, witness)
-    return _sine_as_sign(value, derivation)
+    return sine_as_sign(value, derivation)
 
 
-def _sine_as_sign(value, derivation):
+def sine_as_sign(value, derivation):
     """atan2(s5 y, s5 x) as atan2(σ y, σ x) where θ5 = atan2(σ√…, …) was solved with the sign σ:
     sin θ5 has σ's sign, so the books' θ4 = atan2(r23, r13) on one branch and atan2(−r23, −r13)
     on the other. Anything else is returned as it is."""
@@ -79,13 +79,13 @@ def _sine_as_sign(value, derivation):
     y, x = value.args
     shared = set(sympy.Mul.make_args(y)) & set(sympy.Mul.make_args(x))
     for factor in shared:
-        sigma = _sign_of(factor, derivation)
+        sigma = sign_of(factor, derivation)
         if sigma is not None:
             return sympy.atan2(sigma * (y / factor), sigma * (x / factor))
     return value
 
 
-def _sign_of(factor, derivation):
+def sign_of(factor, derivation):
     """σ where `factor` is sin θ and θ = atan2(σ√…, …) (its sine has σ's sign), else None."""
     if not isinstance(factor, sympy.sin) or not factor.args[0].is_Symbol:
         return None

@@ -28,6 +28,7 @@ from ..errors import NoClosedForm
 from . import algebra
 from .fresh import fresh_symbol
 from .lookups import Memos
+from .mirrored import solve_last
 from .ranking import best
 from .rules import solve_rule
 from .witness import number_at
@@ -51,15 +52,17 @@ class Derivation:
 
 
 def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, prefer=("position",),
-         constants=frozenset(), witness: dict | None = None, unique=frozenset(), first=()) -> Derivation:
+         constants=frozenset(), witness: dict | None = None, unique=frozenset(), first=(),
+         last=()) -> Derivation:
     """Solve `equations` for `unknowns` (in the order a textbook numbers them); `prismatic` is the
     set of those that are slides; `constants` the robot's lengths (never zero). `witness` gives
     numbers for every name at one generic pose: an equation whose coefficients vanish there says
     nothing (0 = 0 once earlier results hold) and is passed over. The joints in `unique` are
     solved only by a rule with one root (their two roots were found not both to reach the pose:
     dhsym.inverse.reach). The unknowns in `first` are solved before the others, in that order,
-    wherever an equation gives them (a wrist's θ5, then θ4, as the books do). Raises UserError
-    when no sub-problem applies."""
+    wherever an equation gives them (a wrist's θ5, then θ4, as the books do); an unknown in `last`
+    (the wrist's θ6) from the pair that mirrors the first's (dhsym.inverse.mirrored). Raises
+    UserError when no sub-problem applies."""
     derivation = derivation or Derivation()
     witness = {} if witness is None else witness
     memos = Memos()  # this search's own: nothing kept between searches, nothing shared by two at once
@@ -76,8 +79,12 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         candidates = option.candidates
         known = {name for name, _ in derivation.assignments}
-        value = in_coordinates(solve_rule(option.rule, candidates, derivation, constants, memos, witness),
-                               derivation.coordinates)
+        if candidates[0].variable in last:
+            settings = (set(prismatic), prefer, frozenset(constants), witness, memos)
+            solved = solve_last(pool, option, derivation, settings)
+        else:
+            solved = solve_rule(option.rule, candidates, derivation, constants, memos, witness)
+        value = in_coordinates(solved, derivation.coordinates)
         for name, named in derivation.assignments:
             if name not in known and name not in witness:  # a name the rule made (D, K); X, Y come with numbers
                 witness[name] = number_at(named, witness)

@@ -126,12 +126,15 @@ class CentreOnAxis:
 class Undetermined(KeepsForm):
     """Where every expression of `condition` is 0, `unknown` (a joint variable or a sum of
     angles) is not determined, for the `reason` given (ByEquations, LinedUp, CentreOnAxis);
-    `singular`: the factor of det J that the condition is (a Singular), where it is one."""
+    `singular`: the factor of det J that the condition is (a Singular), where it is one;
+    `member`: [(joint, value)] a numeric evaluation takes there instead of the branch's value
+    (the wrist's θ6 through θ4 where the books' atan2(σ r32, −σ r31) is atan2(0, 0))."""
 
     condition: tuple[sympy.Expr, ...]
     unknown: sympy.Expr
     reason: object = ByEquations(2)
     singular: Singular | None = None
+    member: tuple[tuple[sympy.Symbol, sympy.Expr], ...] = ()
 
 
 @dataclass(frozen=True)

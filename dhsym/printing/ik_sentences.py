@@ -129,9 +129,17 @@ class SentenceWriting:
             why = (" (the wrist centre on axis ", Joint(reason.joint), ")")
         else:
             why = (" on its own: the axes on either side of ", Math(_joint_symbol(reason.angle)), " line up, and ",
-                   self._lined_up(reason), ", a one-parameter family (a numeric evaluation gives one member)")
+                   self._lined_up(reason), ", a one-parameter family (a numeric evaluation gives one member",
+                   *self._member(said), ")")
         factor = () if said.singular is None else ("; ", self._singular(said.singular))
         return self._said(condition, ": ", Math(said.unknown), " is not determined", why, factor)
+
+    def _member(self, said) -> tuple:
+        """': there θ6 = atan2(r21 c4 − r11 s4, …) with the θ4 it finds' (the values taken on the family)."""
+        if not said.member:
+            return ()
+        values = _listed([(Math(joint), " = ", Math(value)) for joint, value in said.member], " and ")
+        return (": there ", values, " with the ", Math(said.unknown), " it finds")
 
     def _math(self, piece: Math) -> str:
         """A piece of math in the printer's notation; an angle θk + c with θk first (θ5 + 1)."""
