@@ -64,3 +64,19 @@ def test_one_pose_is_the_plain_float_path_and_a_division_by_zero_falls_back_to_n
     assert alone.shape == (2, 2) and np.array_equal(alone, namespace["ik"](poses[:1], a_1=0.0)[0], equal_nan=True)
     constants = np.array([0.5])  # an array for a constant: numpy decides, as for many poses
     assert np.allclose(namespace["ik"](poses[0], a_1=constants), direct, equal_nan=True)
+
+
+def test_a_batch_of_wrists_some_lined_up_gives_each_poses_own_values_and_reaches_them():
+    # the member (θ6 through θ4) is taken only by the poses whose |s5| < LINED_UP, in a batch as alone
+    robot, code, namespace = _module("spherical_wrist", ())
+    assert "if lined_up.any():" in code and "if abs(math.sin(" in code
+    joints = random_joints(robot, np.random.default_rng(5), 6)
+    joints[:, 1] = (0.7, 0.0, 1e-8, np.pi, -0.3, -1e-9)
+    fk = numeric_fk(robot, sample_constants(robot))
+    poses = np.array([np.array(fk(*q), dtype=float) for q in joints])
+    batch = namespace["ik"](poses)
+    alone = np.array([namespace["ik"](pose) for pose in poses])
+    assert np.allclose(alone, batch, atol=1e-9)
+    for pose, branches in zip(poses, batch):
+        for branch in branches:
+            assert np.allclose(np.array(fk(*branch), dtype=float), pose, atol=1e-7)  # √(1 − r33²) near s5 = 0

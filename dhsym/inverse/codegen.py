@@ -35,7 +35,7 @@ from ..core.numbers import decimal_text
 from .consistency import off_the_arm
 from .fresh import PRIME
 from .onepose import HELPERS, REAL_ANGLE, MathCode, Spelling, function_text, statement_lines
-from .quartic import Complex
+from .statements import comment_text, computation, members
 
 ROUNDING = 1e-10  # a square root of −1e-16 at the edge of the workspace is a root of 0, not a missing branch
 IMAGINARY = 1e-5  # a quartic's root found through complex numbers is real when its imaginary part is this small
@@ -46,7 +46,7 @@ LINED_UP = 1e-6
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
              "angles", "elements", "missing", "k", "real_angle", "IMAGINARY", "math", "cmath", "one_pose",
              "root_one", "real_angle_one", "absent", "NUMBER", "off", "tolerance", "off_the_arm",
-             "Q", "LINED_UP"}  # the module's own names
+             "Q", "LINED_UP", "lined_up", "outside", "wrap_one", "angle"}  # the module's own names
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
@@ -54,7 +54,9 @@ class NumpyCode(Spelling, NumPyPrinter):
     """numpy.cos, numpy.sqrt, …; names made safe for Python (`names`: symbol name → Python name),
     a Dummy is a variable of the module's own, named already; decimals as the robot file wrote them."""
 
-    CHOICE = "numpy.where(abs({guard}) < LINED_UP, {member}, {value})"
+    CHOICE = ("lined_up = abs({guard}) < LINED_UP  # poses whose wrist's axes line up: {name} as its member",
+              "if lined_up.any():",
+              "    {name} = numpy.where(lined_up, {member}, {name})")
 
     def __init__(self, names: dict, numbers):
         super().__init__({"fully_qualified_modules": True})
@@ -136,7 +138,7 @@ def module_text(solution, name: str = "", command: str = "") -> str:
     keywords = _keywords(solution, names, constants)
     kinds = {row.variable: row.joint for row in chain.rows}
     revolute = tuple(k for k, joint in enumerate(joints) if kinds.get(joint) == "R")
-    statements, columns = _computation(solution, names, code)
+    statements, columns = computation(solution, names, code)
     targets = _targets(solution, names)
     parameters = [keyword.split("=")[0] for keyword in keywords]
     off = off_the_arm(solution, code)  # an arm of fewer than six joints: a pose off its set gives NaN
@@ -177,10 +179,13 @@ def module_text(solution, name: str = "", command: str = "") -> str:
 
 
 _FINISH = [  # ik()'s last lines: angles into [-pi, pi), a branch whole or NaN, shaped (B, n) or (N, B, n)
-    "    for k in REVOLUTE:",
+    "    for k in REVOLUTE:  # into [-pi, pi): a turn off or on (exact), the remainder only where one is not enough",
     "        angles = result[:, k]",
-    "        numpy.remainder(angles + numpy.pi, 2 * numpy.pi, out=angles)",
-    "        angles -= numpy.pi",
+    "        numpy.subtract(angles, 2 * numpy.pi, out=angles, where=angles >= numpy.pi)",
+    "        numpy.add(angles, 2 * numpy.pi, out=angles, where=angles < -numpy.pi)",
+    "        outside = (angles < -numpy.pi) | (angles >= numpy.pi)",
+    "        if outside.any():",
+    "            angles[outside] = numpy.remainder(angles[outside] + numpy.pi, 2 * numpy.pi) - numpy.pi",
     "    missing = ~numpy.isfinite(result).all(axis=1)  # a branch exists whole or not at all",
     "    numpy.copyto(result, numpy.nan, where=missing[:, None, :])",
     "    result = numpy.ascontiguousarray(result.transpose(2, 0, 1))",
@@ -280,109 +285,3 @@ def _names(solution) -> tuple[dict, list]:
                          + [s.name for s in solution.target_symbols]
                          + sorted({s.name for s in assigned} - {s.name for s in joints}))
     return names, constants
-
-
-def _computation(solution, names: dict, code) -> tuple[list, list]:
-    """The statements that compute every branch (see _shared_subexpressions) and each branch's
-    values: the definitions, then each branch's assignments, a value that an earlier branch
-    computed already (the same expression of the same earlier values) taken from it, and
-    sub-expressions used more than once (cos θ1, √(1 − D²)) computed once."""
-    taken = set(names.values())
-    variable = {}  # the value's expression, in the variables computed before it -> its variable
-    lines = []  # (comment, None, None) or (None, variable, expression)
-    named: set = set()  # the variables' names so far
-
-    def compute(name, value, known) -> sympy.Dummy:
-        key = value.xreplace(known)
-        if key not in variable:
-            text = base = names[name.name]
-            count = 1
-            while text in named or (count > 1 and text in taken):
-                count += 1
-                text = f"{base}_{count}"
-            taken.add(text)
-            named.add(text)
-            variable[key] = sympy.Dummy(text)
-            if isinstance(name, Complex):
-                code.complex.add(variable[key])
-            lines.append((None, variable[key], key))
-        return variable[key]
-
-    shared = {}
-    if solution.definitions:
-        lines.append(("shared by every branch", None, None))
-    for name, value in solution.definitions:
-        shared[name] = compute(name, value, shared)
-    columns = []
-    lined_up = members(solution)
-    for branch in solution.branches:
-        lines.append((comment_text(branch.name), None, None))
-        known = dict(shared)
-        for name, value in branch.assignments:
-            if name in lined_up:  # the degenerate case's member where its condition holds
-                condition, member = lined_up[name]
-                value = sympy.Piecewise((member, sympy.Abs(condition) < _LINED_UP), (value, True))
-            known[name] = compute(name, value, known)
-        columns.append([known.get(joint) if joint in known else (joint if joint in solution.free else None)
-                        for joint in solution.joint_variables])
-    return _shared_subexpressions(lines, taken, code), columns
-
-
-_LINED_UP = sympy.Dummy("LINED_UP")  # the module's constant, by name
-
-
-def members(solution) -> dict:
-    """{joint: (condition, value)}: where `condition` is 0 (|sin θ5| < LINED_UP), the joint takes
-    `value`, the member of the family its degenerate case names (dhsym.inverse.mirrored)."""
-    return {joint: (case.condition[0], value) for case in solution.degenerate
-            for joint, value in getattr(case, "member", ())}
-
-
-def _shared_subexpressions(lines, taken: set, code) -> list[tuple]:
-    """The lines as statements (comment, None, None, False) or (None, variable, expression, whether
-    it is computed in complex numbers), each sub-expression used more than once computed once,
-    just before the first line that needs it; cos and sin of a value are named after it (cos_theta_1)."""
-    expressions = [expression for comment, _, expression in lines if comment is None]
-    replacements, reduced = sympy.cse(expressions, symbols=_temporaries(taken), order="none")
-    renamed = {}
-    for symbol, value in replacements:
-        if isinstance(value, (sympy.cos, sympy.sin)) and value.args[0].is_Symbol:
-            text = f"{type(value).__name__}_{code.doprint(value.args[0])}"
-            if text not in taken:
-                taken.add(text)
-                renamed[symbol] = sympy.Dummy(text)
-    replacements = [(renamed.get(s, s), v.xreplace(renamed)) for s, v in replacements]
-    reduced = iter(r.xreplace(renamed) for r in reduced)
-    pending = dict(replacements)
-    out = []
-
-    def emit(expression):
-        for symbol in sorted(expression.free_symbols & pending.keys(), key=str):
-            if symbol in pending:
-                value = pending.pop(symbol)
-                emit(value)
-                if code.is_complex(value):
-                    code.complex.add(symbol)
-                out.append((None, symbol, value, False))
-
-    for comment, symbol, _ in lines:
-        if comment is not None:
-            out.append((comment, None, None, False))
-            continue
-        expression = next(reduced)
-        emit(expression)
-        out.append((None, symbol, expression, symbol in code.complex))
-    return out
-
-
-def _temporaries(taken: set):
-    number = 0
-    while True:
-        number += 1
-        if f"common_{number}" not in taken:
-            yield sympy.Dummy(f"common_{number}")
-
-
-def comment_text(text: str) -> str:
-    """Text from a robot file, safe inside a comment or a docstring: one line, no quotes to end it."""
-    return " ".join(str(text).split()).replace("\\", "/").replace('"""', "'''")

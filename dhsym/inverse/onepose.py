@@ -36,14 +36,17 @@ class Spelling:
     def _print_Written(self, expr):  # a number as the robot file wrote it (dhsym.inverse.written)
         return expr.name
 
-    CHOICE = "({member} if abs({guard}) < LINED_UP else {value})"  # how the printer writes a choice
+    # how the printer writes a choice (a statement of its own): the member where the wrist lines up
+    CHOICE = ("if abs({guard}) < LINED_UP:  # the wrist's axes line up: {name} as its member",
+              "    {name} = {member}")
 
-    def _print_Piecewise(self, expr):
-        """The lined-up wrist's member where |guard| < LINED_UP, else the branch's value
-        (dhsym.inverse.codegen.members: the only choice the module makes)."""
-        (member, condition), (value, _) = expr.args
+    def choice_lines(self, name: str, expr) -> list[str]:
+        """The lines that set `name` to the lined-up wrist's member where |guard| < LINED_UP
+        (dhsym.inverse.codegen.members: the only choice the module makes); `expr` is
+        Piecewise((member, |guard| < LINED_UP), (name, True))."""
+        (member, condition), _ = expr.args
         guard = next(a for a in condition.args if isinstance(a, sympy.Abs)).args[0]
-        return self.CHOICE.format(member=self._print(member), guard=self._print(guard), value=self._print(value))
+        return [line.format(name=name, member=self._print(member), guard=self._print(guard)) for line in self.CHOICE]
 
 
 class MathCode(Spelling, PythonCodePrinter):
@@ -88,7 +91,14 @@ HELPERS = [
     "def root_one(x):",
     "    if x >= 0:",
     "        return math.sqrt(x)",
-    "    return 0.0 if x > -ROUNDING else math.nan", "", ""]
+    "    return 0.0 if x > -ROUNDING else math.nan", "", "",
+    "def wrap_one(angle):",
+    '    """The angle in [-pi, pi): one turn off or on is exact and cheap, the remainder is for more."""',
+    "    if angle >= math.pi:",
+    "        angle -= math.tau",
+    "    elif angle < -math.pi:",
+    "        angle += math.tau",
+    "    return angle if -math.pi <= angle < math.pi else (angle + math.pi) % math.tau - math.pi", "", ""]
 
 REAL_ANGLE = [
     "def real_angle_one(y, x):",
@@ -106,6 +116,9 @@ def statement_lines(statements, code) -> list[str]:
             lines.append(f"# {comment}")
             continue
         code.casting = casting
+        if isinstance(expression, sympy.Piecewise):  # the lined-up wrist's member (Spelling.choice_lines)
+            lines += code.choice_lines(code.doprint(symbol), expression)
+            continue
         lines.append(f"{code.doprint(symbol)} = {code.doprint(expression)}")
     code.casting = False
     return lines
@@ -128,7 +141,7 @@ def function_text(statements, columns, revolute, parameters, code: MathCode, tar
     try:
         lines += ["    " + line for line in statement_lines(statements, code)]
         wrapped = [code.doprint(angle) for angle in sorted(angles, key=str)]
-        lines += [f"    {name} = ({name} + math.pi) % math.tau - math.pi" for name in wrapped]
+        lines += [f"    {name} = wrap_one({name})" for name in wrapped]
         rows = [[("math.nan" if value is None else code.doprint(value)) for value in values] for values in columns]
     except NotImplementedError:  # PrintMethodNotImplementedError: a function math does not have
         code.casting = False
