@@ -27,9 +27,11 @@ def computation(solution, names: dict, code) -> tuple[list, list]:
     variable = {}  # the value's expression, in the variables computed before it -> its variable
     lines = []  # (comment, None, None) or (None, variable, expression)
     named: set = set()  # the variables' names so far
+    statement = {}  # a variable -> the expression it holds
 
     def compute(name, value, known) -> sympy.Dummy:
-        key = value.xreplace(known)
+        angles = [known[joint] for joint in solution.joint_variables if joint in known]
+        key = value.xreplace(known).xreplace(on_the_unit_circle(angles, statement))
         if key not in variable:
             text = base = names[name.name]
             count = 1
@@ -39,6 +41,7 @@ def computation(solution, names: dict, code) -> tuple[list, list]:
             taken.add(text)
             named.add(text)
             variable[key] = sympy.Dummy(text)
+            statement[variable[key]] = key
             if isinstance(name, Complex):
                 code.complex.add(variable[key])
             lines.extend(_statements(variable[key], key))
@@ -62,6 +65,31 @@ def computation(solution, names: dict, code) -> tuple[list, list]:
         columns.append([known.get(joint) if joint in known else (joint if joint in solution.free else None)
                         for joint in solution.joint_variables])
     return _shared_subexpressions(lines, taken, code), columns
+
+
+def on_the_unit_circle(angles, statement: dict) -> dict:
+    """{cos θ: x, sin θ: y} for each of the branch's `angles` θ = atan2(y, x) with y = ±√(1 − x²)
+    (or x = ±√(1 − y²)), as the books write c3 = D, s3 = ±√(1 − D²): no round trip through atan2,
+    cos and sin. Where the root is NaN, θ and so its branch are missing too.
+
+    >>> d, t = sympy.symbols("D theta", real=True)
+    >>> on_the_unit_circle([t], {t: sympy.atan2(-sympy.sqrt(1 - d**2), d)})
+    {cos(theta): D, sin(theta): -sqrt(1 - D**2)}
+    >>> on_the_unit_circle([t], {t: sympy.atan2(sympy.sqrt(2 - d**2), d)})
+    {}
+    """
+    found = {}
+    for angle in angles:
+        value = statement.get(angle)
+        if isinstance(value, sympy.atan2) and any(_root_of_one_minus(*pair) for pair in (value.args, value.args[::-1])):
+            found[sympy.cos(angle)], found[sympy.sin(angle)] = value.args[1], value.args[0]
+    return found
+
+
+def _root_of_one_minus(root, other) -> bool:
+    """Whether `root` is ±√(1 − other²)."""
+    bare = -root if root.could_extract_minus_sign() else root
+    return bare.is_Pow and bare.exp == sympy.S.Half and sympy.expand(bare.base + other**2) == 1
 
 
 def _statements(variable, value) -> list[tuple]:
