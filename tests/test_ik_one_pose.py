@@ -69,7 +69,7 @@ def test_one_pose_is_the_plain_float_path_and_a_division_by_zero_falls_back_to_n
 def test_a_batch_of_wrists_some_lined_up_gives_each_poses_own_values_and_reaches_them():
     # the member (θ6 through θ4) is taken only by the poses whose |s5| < LINED_UP, in a batch as alone
     robot, code, namespace = _module("spherical_wrist", ())
-    assert "if lined_up.any():" in code and "if abs(math.sin(" in code
+    assert "if lined_up.any():" in code and "< LINED_UP:  # the wrist's axes line up" in code
     joints = random_joints(robot, np.random.default_rng(5), 6)
     joints[:, 1] = (0.7, 0.0, 1e-8, np.pi, -0.3, -1e-9)
     fk = numeric_fk(robot, sample_constants(robot))
@@ -80,3 +80,15 @@ def test_a_batch_of_wrists_some_lined_up_gives_each_poses_own_values_and_reaches
     for pose, branches in zip(poses, batch):
         for branch in branches:
             assert np.allclose(np.array(fk(*branch), dtype=float), pose, atol=1e-7)  # √(1 − r33²) near s5 = 0
+
+
+def test_a_batch_larger_than_a_chunk_gives_the_values_of_all_poses_at_once():
+    # CHUNK poses at a time (their arrays stay in cache); a constant per pose takes all poses at once
+    robot, _, namespace = _module("planar2r", ())
+    _, poses = _poses(robot, 40, 9)
+    many = np.tile(poses, (namespace["CHUNK"] // len(poses) + 2, 1, 1))
+    chunked = namespace["ik"](many)
+    at_once = namespace["ik"](many, a_1=np.full(len(many), 0.5))
+    assert chunked.shape == at_once.shape == (len(many), 2, 2) and len(many) > namespace["CHUNK"]
+    assert np.array_equal(chunked, at_once, equal_nan=True)
+    assert np.array_equal(chunked[: len(poses)], namespace["ik"](poses), equal_nan=True)

@@ -46,7 +46,8 @@ LINED_UP = 1e-6
 _INTERNAL = {"T", "numpy", "ik", "BRANCHES", "JOINTS", "REVOLUTE", "ROUNDING", "root", "poses", "result",
              "angles", "elements", "missing", "k", "real_angle", "IMAGINARY", "math", "cmath", "one_pose",
              "root_one", "real_angle_one", "absent", "NUMBER", "off", "tolerance", "off_the_arm",
-             "Q", "LINED_UP", "lined_up", "outside", "wrap_one", "angle"}  # the module's own names
+             "Q", "LINED_UP", "lined_up", "outside", "wrap_one", "angle",
+             "many_poses", "CHUNK", "step", "start", "value"}  # the module's own names
 _BUILTINS = frozenset(dir(builtins))  # len, float, abs, ...: a keyword argument of that name would hide them
 
 
@@ -152,6 +153,7 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         f"JOINTS = {tuple(j.name for j in joints)!r}",
         f"REVOLUTE = {revolute!r}  # the positions of the revolute joints in JOINTS",
         f"ROUNDING = {ROUNDING!r}  # a square root of a number this close below 0 is a root of 0",
+        "CHUNK = 8192  # poses worked out at a time: their arrays stay in the processor's cache, which is faster",
         *([f"LINED_UP = {LINED_UP!r}  # |sin| of the wrist's middle angle below this: its axes line up"]
           if members(solution) else []),
         *(["NUMBER = (int, float)  # constants of these types let one pose take the plain-float path"] if one else []),
@@ -169,7 +171,9 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         *(_dispatch(parameters, bool(off)) if one else []),
         "    if T.ndim not in (2, 3) or T.shape[-2:] != (4, 4):",
         '        raise ValueError(f"T must be one pose (4, 4) or many (N, 4, 4), not an array of shape {T.shape}")',
-        "    poses = T.reshape(-1, 4, 4)",
+        *_chunks(len(solution.branches), len(joints), parameters), "", "",
+        f"def many_poses({', '.join(['poses', *parameters])}):",
+        '    """ik() of many poses (N, 4, 4) with numpy, shaped (N, B, n)."""',
         "    elements = numpy.ascontiguousarray(poses.reshape(-1, 16).T)  # each element's values side by side: faster",
         *body,
         *(["    result[:, :, off_the_arm(elements)] = numpy.nan"] if off else []),
@@ -178,7 +182,21 @@ def module_text(solution, name: str = "", command: str = "") -> str:
     return "\n".join(lines)
 
 
-_FINISH = [  # ik()'s last lines: angles into [-pi, pi), a branch whole or NaN, shaped (B, n) or (N, B, n)
+def _chunks(branches: int, joints: int, parameters) -> list[str]:
+    """ik()'s batch path: many_poses() on CHUNK poses at a time, whose arrays stay in the processor's
+    cache; where a constant holds a value per pose, on all of them at once."""
+    call = ", ".join(["poses[start:start + step]", *parameters])
+    values = ", ".join(parameters) + ("," if len(parameters) == 1 else "")
+    each = f"any(numpy.ndim(value) for value in ({values}))" if parameters else "False"
+    return ["    poses = T.reshape(-1, 4, 4)",
+            f"    result = numpy.empty((len(poses), {branches}, {joints}))",
+            f"    step = max(1, len(poses)) if {each} else CHUNK  # a constant per pose: all poses at once",
+            "    for start in range(0, len(poses), step):",
+            f"        result[start:start + step] = many_poses({call})",
+            "    return result[0] if T.ndim == 2 else result"]
+
+
+_FINISH = [  # many_poses()'s last lines: angles into [-pi, pi), a branch whole or NaN, shaped (N, B, n)
     "    for k in REVOLUTE:  # into [-pi, pi): a turn off or on (exact), the remainder only where one is not enough",
     "        angles = result[:, k]",
     "        numpy.subtract(angles, 2 * numpy.pi, out=angles, where=angles >= numpy.pi)",
@@ -188,8 +206,7 @@ _FINISH = [  # ik()'s last lines: angles into [-pi, pi), a branch whole or NaN, 
     "            angles[outside] = numpy.remainder(angles[outside] + numpy.pi, 2 * numpy.pi) - numpy.pi",
     "    missing = ~numpy.isfinite(result).all(axis=1)  # a branch exists whole or not at all",
     "    numpy.copyto(result, numpy.nan, where=missing[:, None, :])",
-    "    result = numpy.ascontiguousarray(result.transpose(2, 0, 1))",
-    "    return result[0] if T.ndim == 2 else result", "",
+    "    return result.transpose(2, 0, 1)", "",
 ]
 
 
@@ -241,7 +258,7 @@ def _dispatch(parameters, checked: bool) -> list[str]:
 
 
 def _body(solution, names: dict, code, statements, columns, targets) -> list[str]:
-    """ik()'s middle: the target's elements it reads, the result array, every branch's values."""
+    """many_poses()'s middle: the target's elements it reads, the result array, every branch's values."""
     body = [f"    {name} = elements[{k}]" for k, name in targets]
     body.append(f"    result = numpy.empty(({len(solution.branches)}, {len(solution.joint_variables)}, len(poses)))"
                 "  # each value's poses side by side: faster")
