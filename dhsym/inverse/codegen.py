@@ -171,9 +171,7 @@ def module_text(solution, name: str = "", command: str = "") -> str:
         *(_dispatch(parameters, bool(off)) if one else []),
         "    if T.ndim not in (2, 3) or T.shape[-2:] != (4, 4):",
         '        raise ValueError(f"T must be one pose (4, 4) or many (N, 4, 4), not an array of shape {T.shape}")',
-        *_chunks(len(solution.branches), len(joints), parameters), "", "",
-        f"def many_poses({', '.join(['poses', *parameters])}):",
-        '    """ik() of many poses (N, 4, 4) with numpy, shaped (N, B, n)."""',
+        *_chunks(len(solution.branches), len(joints), parameters),
         "    elements = numpy.ascontiguousarray(poses.reshape(-1, 16).T)  # each element's values side by side: faster",
         *body,
         *(["    result[:, :, off_the_arm(elements)] = numpy.nan"] if off else []),
@@ -183,8 +181,8 @@ def module_text(solution, name: str = "", command: str = "") -> str:
 
 
 def _chunks(branches: int, joints: int, parameters) -> list[str]:
-    """ik()'s batch path: many_poses() on CHUNK poses at a time, whose arrays stay in the processor's
-    cache; where a constant holds a value per pose, on all of them at once."""
+    """ik()'s batch path, many_poses() on CHUNK poses at a time, whose arrays stay in the processor's
+    cache (where a constant holds a value per pose, on all of them at once); then many_poses()'s head."""
     call = ", ".join(["poses[start:start + step]", *parameters])
     values = ", ".join(parameters) + ("," if len(parameters) == 1 else "")
     each = f"any(numpy.ndim(value) for value in ({values}))" if parameters else "False"
@@ -193,7 +191,9 @@ def _chunks(branches: int, joints: int, parameters) -> list[str]:
             f"    step = max(1, len(poses)) if {each} else CHUNK  # a constant per pose: all poses at once",
             "    for start in range(0, len(poses), step):",
             f"        result[start:start + step] = many_poses({call})",
-            "    return result[0] if T.ndim == 2 else result"]
+            "    return result[0] if T.ndim == 2 else result", "", "",
+            f"def many_poses({', '.join(['poses', *parameters])}):",
+            '    """ik() of many poses (N, 4, 4) with numpy, shaped (N, B, n)."""']
 
 
 _FINISH = [  # many_poses()'s last lines: angles into [-pi, pi), a branch whole or NaN, shaped (N, B, n)
