@@ -23,7 +23,7 @@ from sympy.polys.domains import QQ
 from sympy.polys.rings import ring as poly_ring
 
 from ..core.chain import Chain
-from ..velocity.determinant import TooManyTerms, as_written, determinant, factored, joint_factors
+from ..velocity.determinant import TooManyTerms, as_written, determinant, factored, joint_factors, partitioned_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
 from ..velocity.singularities import singularities
@@ -56,13 +56,13 @@ def tie_to_jacobian(chain: Chain, derivation, definitions, sample, numbers) -> N
     meeting = [k for k, c in enumerate(derivation.conditions) if isinstance(c, Exists) and c.unknown is not None]
     if not possible and not meeting:
         return
-    wrist = set(chain.joint_variables[3:])
-    if not meeting and all(b.free_symbols & joints <= wrist for b in possible) and \
-            wrist_centre(chain, sample=sample) is not None:
+    wrist, centre = set(chain.joint_variables[3:]), wrist_centre(chain, sample=sample)
+    if not meeting and all(b.free_symbols & joints <= wrist for b in possible) and centre is not None:
         factors = wrist_factors(chain, numbers, sample)
     else:
-        try:
-            factors = determinant(chain, numbers=numbers, sample=sample).factors
+        try:  # the factors `dhsym jacobian` prints, without the value it prints besides
+            factors = partitioned_factors(chain, centre, numbers) if centre is not None else \
+                determinant(chain, numbers=numbers, sample=sample).factors
         except TooManyTerms:  # counted before it is expanded: a general 6R's, which says nothing here
             return
     said = {s.factor: Singular(s.factor, s.template, s.joints)
