@@ -119,12 +119,12 @@ class _Ring:
             c, s = sympy.Dummy("c"), sympy.Dummy("s")
             self.names.update({sympy.cos(joint): c, sympy.sin(joint): s})
             self.pairs.append((s, c))
+        self.index = {joint: k for k, joint in enumerate(joints)}
 
     def multiple(self, side, square) -> bool:
         """Whether side = k · square with k free of the joints (a nonzero constant expression)."""
-        side, square = (sympy.expand_trig(e).xreplace(self.names) for e in (side, square))
-        trig = [g for pair in self.pairs for g in pair]
-        generators = trig + sorted((side.free_symbols | square.free_symbols) - set(trig), key=str)
+        trig = [g for pair in self.pairs for g in pair]  # a joint outside cos and sin: a constant, as before
+        generators = trig + sorted(side.free_symbols | square.free_symbols, key=str)
         polys, *_ = poly_ring(generators, QQ)
         try:  # each read as a numerator in normal form over a denominator free of the joints
             top, other = self._read(side, polys)[0], self._read(square, polys)[0]
@@ -156,11 +156,32 @@ class _Ring:
                     raise _NotPolynomial
                 numerator, denominator = denominator, numerator
             return self._normal(numerator ** abs(int(expr.exp))), denominator ** abs(int(expr.exp))
+        if isinstance(expr, (sympy.cos, sympy.sin)):
+            pair = self._angle(expr.args[0], polys)
+            if pair is None:  # not a sum of joints: an offset such as π/2, as expand_trig writes it
+                expanded = sympy.expand_trig(expr).xreplace(self.names)
+                if expanded == expr:
+                    raise _NotPolynomial
+                return self._read(expanded, polys)
+            return pair[0] if isinstance(expr, sympy.cos) else pair[1], polys.one
         if expr.is_Rational:
             return polys.ground_new(QQ(expr.p, expr.q)), polys.one
         if expr in polys.symbols:
             return polys.gens[polys.symbols.index(expr)], polys.one
         raise _NotPolynomial
+
+    def _angle(self, angle, polys):
+        """(cos, sin) of a sum of whole multiples of joints, in normal form; None for another angle."""
+        cos, sin = polys.one, polys.zero
+        for term in sympy.Add.make_args(angle):
+            times, joint = term.as_coeff_Mul()
+            if joint not in self.index or not times.is_Integer:
+                return None
+            c, s = polys.gens[2 * self.index[joint] + 1], polys.gens[2 * self.index[joint]]
+            s = s if times > 0 else -s
+            for _ in range(abs(int(times))):  # cos(a + b) = ca cb − sa sb, sin(a + b) = sa cb + ca sb
+                cos, sin = self._normal(cos * c - sin * s), self._normal(sin * c + cos * s)
+        return cos, sin
 
     def _normal(self, p):
         """p with every s_k² replaced by 1 − c_k² (one pass: the replacement holds no s_k). The
