@@ -32,7 +32,7 @@ from ..printing.ik import (
     target_title,
     variable_list,
 )
-from ..printing.ik_solution import ATAN2_LEGEND, uses_atan2
+from ..printing.ik_solution import ATAN2_LEGEND, named_numbers, uses_atan2
 from .display import Latex
 from .ik_branches import DEFINITIONS, PART, branch_sections, heading, merged, value_rows
 from .layout import (
@@ -98,6 +98,11 @@ def ik_sections(solution, robot, page: Page, headings: bool | None = None) -> li
     if remarks:
         out.append(Section(PART, "Existence and degenerate poses", remarks))
     legend = legend_items(printer, page)
+    named = named_numbers(solution.numbers, "latex")
+    if named:  # the table's long decimals the formulas name (an import's a2, β), before the c/s legend
+        said = Block(named, paragraph(named_numbers(solution.numbers, "unicode"), page).height, is_display=False)
+        said.keep_with_next = bool(legend)
+        legend.insert(0, said)
     if uses_atan2(solution):  # said once, with the legend (on slides, on its frame)
         if legend:
             legend[-1].keep_with_next = True
