@@ -68,7 +68,8 @@ def test_the_pincherx_prints_its_lengths_and_offsets_by_name_and_reaches_on_both
     latex = ik.latex().latex  # as the notebook shows it
     assert long_numbers(latex) == []
     assert "D &= \\frac{5(Y^{2} + X^{2} - a_{2}^{2} - 0.01)}{a_{2}}" in latex
-    assert "\\text{Named numbers: }a_{2} \\approx 0.105948\\text{ (the }a\\text{ of row 2); }\\beta \\approx 1.23412" in latex
+    assert ("\\text{Named numbers: }a_{2} \\approx 0.105948\\text{ (the }a\\text{ of row 2); }"
+            "\\beta \\approx 1.23412") in latex
     reaches_on_every_branch(robot, ik, seed=5)
 
 

@@ -101,7 +101,8 @@ def exact(expr):
 def exact_but_named(expr):
     """`expr` with every written number put back as its exact rational but the named ones (a2, β),
     which a sentence writes by name as the formulas do."""
-    found = {s: s.value for s in getattr(expr, "free_symbols", ()) if isinstance(s, Written) and not isinstance(s, Named)}
+    found = {s: s.value for s in getattr(expr, "free_symbols", ())
+             if isinstance(s, Written) and not isinstance(s, Named)}
     return expr.xreplace(found) if found else expr
 
 

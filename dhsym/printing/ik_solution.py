@@ -89,8 +89,12 @@ def named_numbers(numbers, style: str) -> str:
     and what each is, to 6 digits ('' when none); `style` is unicode or latex.
 
     >>> from dhsym.core.numbers import WrittenNumbers
-    >>> print(named_numbers(WrittenNumbers(named=(("1.23412150740817", "beta", (("theta", 2, True),)),)), "unicode"))
-    Named numbers: β ≈ 1.23412 (the θ offset −β of row 2); the table gives it to 15 digits, the formulas use it as given.
+    >>> named = WrittenNumbers(named=(("1.23412150740817", "beta", (("theta", 2, True),)),))
+    >>> print(named_numbers(named, "unicode")[:58])
+    Named numbers: β ≈ 1.23412 (the θ offset −β of row 2); the
+    >>> named_numbers(named, "unicode")[58:]
+    ' table gives it to 15 digits, the formulas use it as given.'
+
     """
     if not numbers.named:
         return ""
@@ -105,7 +109,8 @@ def named_numbers(numbers, style: str) -> str:
             what = f"the {theta} offset " + " and ".join(f"{math(sign + label)} of {_rows(rows, 'row')}"
                                                          for sign, rows in signs if rows)
         else:
-            kind = {"b": "the base's translation", "t": "the tool's translation"}.get(parameter, f"the {math(parameter)}")
+            kind = {"b": "the base's translation", "t": "the tool's translation"}.get(
+                parameter, f"the {math(parameter)}")
             what = f"{kind} of {_rows([p for _, p, _ in places], 'axis' if parameter in ('b', 't') else 'row')}"
         approx = " \\approx " if style == "latex" else " ≈ "
         entries.append(f"{math(label + approx + format(float(decimal), '.6g'))} ({what})")
