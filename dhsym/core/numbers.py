@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import sympy
 
 FRACTION_PLACES = 6  # in a solution, a rational whose decimal needs more places is the file's, not the algebra's
-READABLE_DIGITS = 6  # a decimal of more significant digits is named in a derivation (a2, β), not written out
+ROUNDED_DIGITS = 10  # a decimal of more significant digits is a rounded value (an import's 15), not one typed
 
 
 @dataclass(frozen=True)
@@ -77,14 +77,15 @@ def table_numbers(values) -> WrittenNumbers:
 
 
 def is_long(value) -> bool:
-    """Whether a decimal has more significant digits than READABLE_DIGITS (0.105948100502085 has 15).
+    """Whether a decimal has more significant digits than ROUNDED_DIGITS: a value an import rounded
+    to 15 (√449/200 is 0.105948100502085), which a derivation names instead of writing it out.
 
-    >>> is_long(sympy.Rational("0.105948100502085")), is_long(sympy.Rational("0.113575"))
-    (True, False)
+    >>> [is_long(sympy.Rational(text)) for text in ("0.105948100502085", "0.113575", "0.1234567")]
+    [True, False, False]
     """
     if not getattr(value, "is_Rational", False) or value.is_Integer or not _terminates(value.q):
         return False
-    return len(decimal_text(abs(value)).replace(".", "").lstrip("0")) > READABLE_DIGITS
+    return len(decimal_text(abs(value)).replace(".", "").lstrip("0")) > ROUNDED_DIGITS
 
 
 def _terminates(q: int) -> bool:
