@@ -68,10 +68,9 @@ def with_names(chain: Chain, numbers: WrittenNumbers) -> WrittenNumbers:
     chain, found = plain(chain), {}
 
     def note(value, parameter, place):
-        for term in sympy.Add.make_args(sympy.sympify(value)):
-            coefficient = term.as_coeff_Mul()[0]
-            if is_long(coefficient) and numbers.decimal(abs(coefficient)):
-                found.setdefault(decimal_text(abs(coefficient)), []).append((parameter, place, coefficient < 0))
+        for term in sympy.Add.make_args(sympy.sympify(value)):  # a number alone, not the coefficient of √2
+            if is_long(term) and numbers.decimal(abs(term)):
+                found.setdefault(decimal_text(abs(term)), []).append((parameter, place, term < 0))
 
     for number, row in enumerate(chain.rows, 1):
         note(row.a, "a", number)
