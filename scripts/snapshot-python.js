@@ -38,32 +38,6 @@ gc.freeze()
 gc.enable()
 `;
 
-// Then each output of the page once, for an arm of two joints that no built-in robot is, so that the
-// interpreter has specialised its hot code and the first-use set-ups (lazy attributes, compiled
-// patterns) are done; then every cache of results is emptied (SymPy's, dhsym's, the robots the page
-// keeps), so that the page works out each of its results from its own input.
-const WARM_UP = `
-import functools, gc, json
-import sympy.core.cache
-from dhsym.web import app
-arm = """name: warm-up
-convention: standard
-joints:
-  - {joint: R, theta: theta_1, d: 0.5, a: 0, alpha: pi/2}
-  - {joint: P, theta: 0, d: d_2, a: 0, alpha: 0}
-"""
-for request in [{"kind": "show", "show": show} for show in ("fk", "table", "links", "jacobian", "ik")] + [
-        {"kind": "draw", "values": {}}]:
-    answer = json.loads(app.handle(json.dumps({**request, "yaml": arm, "file": "warm-up.yaml", "width": 700})))
-    assert answer["state"] == "ready", answer
-app.forget_robots()
-sympy.core.cache.clear_cache()
-for cached in gc.get_objects():
-    if isinstance(cached, functools._lru_cache_wrapper):
-        cached.cache_clear()
-gc.collect()
-`;
-
 // The zip entries of the modules imported, by archive; then, once the reduced zips are in place,
 // the import caches emptied (zipimport reads a zip's directory again on its next import).
 const IMPORTED = `
@@ -171,7 +145,6 @@ async function main() {
   python.globals.set("MODULES", JSON.stringify(names));
   python.runPython(IMPORT);
   python.globals.delete("MODULES");
-  python.runPython(WARM_UP);
   const imported = JSON.parse(python.runPython(IMPORTED));
   python.globals.delete("_imported");
   const left = {};

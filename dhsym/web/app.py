@@ -99,16 +99,6 @@ def robot_of(text: str, filename: str) -> Robot:
     return robot
 
 
-def forget_robots() -> None:
-    """Forgets the robots read and the results they keep (the page's build warms Python up, then
-    forgets what it worked out).
-
-    >>> forget_robots(); len(_robots)
-    0
-    """
-    _robots.clear()
-
-
 def builtin_robots() -> list[dict]:
     """Each built-in robot's name, title and file, for the page's picker (written at build time).
 
