@@ -4,7 +4,9 @@
   for ⁰T₆ typeset in #result (`data-state="ready"`), against a native `dhsym fk puma560` process run
   as an installed dhsym runs (its bytecode compiled and cached; Python's start, the imports, the
   work and the printing). Both are wall-clock seconds from the start to the result; the browser is
-  running already, as a student's is. Target (issue 28): within 3x.
+  running already, as a student's is: each new profile's browser is given BROWSER_SETTLE_S to finish
+  its own start-up work (Chromium prepares its built-in pages then) before the page is opened.
+  Target (issue 28): within 3x.
 - Where the page's cold start goes: the page's own marks (web/page.js, web/worker.js), in seconds
   since it was opened.
 - A second visit: the same profile opens the page again (the files in its cache on disk).
@@ -40,6 +42,7 @@ CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync"]
 RUNS = 5
+BROWSER_SETTLE_S = 2.0  # a just-launched Chromium works on its own pages for about a second
 COLD_TARGET = 3.0
 PROTOTYPE_BYTES = 25.9e6
 LINK = "index.html?robot=puma560&show=fk"
@@ -81,6 +84,8 @@ def page_runs(playwright, base: str) -> dict:
         context = playwright.chromium.launch_persistent_context(profile, executable_path=CHROMIUM, args=CHROMIUM_ARGS,
                                                                 viewport={"width": 1280, "height": 900})
         page = context.new_page()
+        page.goto("about:blank")
+        time.sleep(BROWSER_SETTLE_S)
         outside = []  # watched, not routed: routing requests turns the browser's cache off
         page.on("request", lambda request: None if request.url.removeprefix("blob:").startswith(base)
                 else outside.append(request.url))
@@ -170,13 +175,13 @@ def report(name: str, runs: list[dict], native: dict) -> None:
     print(f"{name}: Chromium, wall-clock medians of {len(runs)} runs interleaved with the native process")
     print(f"  bytes loaded for the first result   {loaded / 1e6:6.1f} MB   (prototype {PROTOTYPE_BYTES / 1e6:.1f} MB: "
           + ("no more)" if loaded <= PROTOTYPE_BYTES else "more)"))
-    print(f"  page cold start to typeset 0T6     {cold:6.2f} s")
+    print(f"  page cold start to typeset 0T6     {cold:6.2f} s   (best {min(run['seconds'] for run in runs):.2f} s)")
     steps = "  ".join(f"{mark} {median_of(runs, 'marks', mark):.2f}" for mark in PAGE_MARKS)
     print(f"    the page's own clock (s): {steps}")
     worker = sorted({key for run in runs for key in run["worker"]}, key=lambda key: median_of(runs, "worker", key))
     print("    in the worker (s since it started): "
           + "  ".join(f"{key} {median_of(runs, 'worker', key):.2f}" for key in worker))
-    print(f"  native `dhsym fk puma560` process  {native_cold_s:6.2f} s")
+    print(f"  native `dhsym fk puma560` process  {native_cold_s:6.2f} s   (best {min(native['cold']):.2f} s)")
     print(f"  cold start ratio                   {ratio:6.1f}x  (target {COLD_TARGET:.0f}x: "
           + ("met)" if ratio <= COLD_TARGET else "missed)"))
     print(f"  second visit (browser's cache)     {median_of(runs, 'second', 'seconds'):6.2f} s   "

@@ -221,7 +221,8 @@ class Chain:
             steps = [step.inverse() for step in reversed(self._steps()[end:start])]
         else:
             steps = self._steps()[start:end]
-        size = span_size(self, start, end, raw=True) if raw else contracted_size(steps)
+        size = span_size(self, start, end, raw=True) if raw else \
+            contracted_size(steps, self._cache.setdefault("block sizes", {}))
         if size > MAX_WORK_NODES:
             frames = self.frames
             first, last = (frames[self._bounds().index(p)] for p in (start, end))

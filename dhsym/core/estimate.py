@@ -35,17 +35,18 @@ class Steps(Protocol):
     tool: tuple
 
 
-def estimated_size(chain: Steps, start, end, raw: bool = False) -> int:
-    """Estimated total size (expression-tree nodes) of the 3×4 upper part of {start}T{end}."""
-    return span_size(chain, _step_index(chain, start), _step_index(chain, end), raw)
+def estimated_size(chain: Steps, start, end, raw: bool = False, memo: dict | None = None) -> int:
+    """Estimated total size (expression-tree nodes) of the 3×4 upper part of {start}T{end}; `memo`
+    keeps the sizes of the blocks seen, for estimates of spans that share them."""
+    return span_size(chain, _step_index(chain, start), _step_index(chain, end), raw, memo)
 
 
-def span_size(chain: Steps, start: int, end: int, raw: bool = False) -> int:
+def span_size(chain: Steps, start: int, end: int, raw: bool = False, memo: dict | None = None) -> int:
     """estimated_size between two positions in the chain's list of steps (either order)."""
     first, last = sorted((start, end))
     steps = _steps(chain)[first:last]
     if not raw:
-        return contracted_size(steps)
+        return contracted_size(steps, memo)
     matrices = []
     for lo, hi in _link_spans(chain, first, last):
         span = steps[lo - first:hi - first]
@@ -54,11 +55,16 @@ def span_size(chain: Steps, start: int, end: int, raw: bool = False) -> int:
     return product_size(matrices)
 
 
-def contracted_size(steps) -> int:
-    """Estimated size of the contracted product of `steps` (dhsym.core.simplify.contract)."""
+def contracted_size(steps, memo: dict | None = None) -> int:
+    """Estimated size of the contracted product of `steps` (dhsym.core.simplify.contract); `memo`
+    (a dict) keeps each block's sizes, which depend on its steps alone."""
+    memo = {} if memo is None else memo
     sizes = None
     for block in reversed(split_into_blocks(merge_steps(steps))):  # B1·(B2·(…·Bg)), as contract() does
-        outer = _sizes(block_matrix(block))
+        key = (tuple(block.lead), tuple(block.body))
+        if key not in memo:
+            memo[key] = _sizes(block_matrix(block))
+        outer = memo[key]
         sizes = outer if sizes is None else _product_sizes(outer, sizes)
     return _total(sizes)
 

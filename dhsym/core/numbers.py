@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import sympy
 
 FRACTION_PLACES = 6  # in a solution, a rational whose decimal needs more places is the file's, not the algebra's
+ROUNDED_DIGITS = 10  # a decimal of more significant digits is a rounded value (an import's 15), not one typed
 
 
 @dataclass(frozen=True)
@@ -44,6 +45,11 @@ class WrittenNumbers:
     fractions: frozenset = frozenset()  # denominators written as fractions, as in l_1/2 or 1/3
     values: frozenset = frozenset()  # the values of the decimal literals, without sign
     folded: bool = False  # the decimals are symbols already (an inverse solution): other rationals are fractions
+    named: tuple = ()  # (decimal, name, places) of long decimals a derivation names: see `Named`
+
+    def name_of(self, decimal: str) -> str | None:
+        """The name a derivation gives the long decimal `decimal` (`a_2`, `beta`), or None."""
+        return next((name for text, name, _ in self.named if text == decimal), None)
 
     def decimal(self, value, alone: bool = False) -> str | None:
         """The exact decimal text of a rational the printers should write as a decimal, else None.
@@ -57,6 +63,37 @@ class WrittenNumbers:
         if (self.folded or value.q in self.fractions) and not (alone and abs(value) in self.values):
             return None
         return decimal_text(value)
+
+
+def table_numbers(values) -> WrittenNumbers:
+    """How a table made of the exact decimals `values` is written (a URDF's import): the places of
+    the longest, and every value without sign, as reading its robot file back would give.
+
+    >>> table_numbers([sympy.Rational("0.09305"), -sympy.Rational("1.234"), sympy.Integer(2)]).places
+    5
+    """
+    decimals = {abs(v) for v in values if v.is_Rational and not v.is_Integer and _terminates(v.q)}
+    return WrittenNumbers(max((_places(v.q) for v in decimals), default=0), values=frozenset(decimals))
+
+
+def is_long(value) -> bool:
+    """Whether a decimal has more significant digits than ROUNDED_DIGITS: a value an import rounded
+    to 15 (√449/200 is 0.105948100502085), which a derivation names instead of writing it out.
+
+    >>> [is_long(sympy.Rational(text)) for text in ("0.105948100502085", "0.113575", "0.1234567")]
+    [True, False, False]
+    """
+    if not getattr(value, "is_Rational", False) or value.is_Integer or not _terminates(value.q):
+        return False
+    return len(decimal_text(abs(value)).replace(".", "").lstrip("0")) > ROUNDED_DIGITS
+
+
+def _terminates(q: int) -> bool:
+    while q % 2 == 0:
+        q //= 2
+    while q % 5 == 0:
+        q //= 5
+    return q == 1
 
 
 def decimal_text(value: sympy.Rational) -> str:

@@ -65,10 +65,10 @@ def _count(number: int) -> str:
 def pool_size(chain, stop: int | None = None) -> int:
     """Estimated nodes of the chain sides of the equations, one for each pair of frames; counted
     no further than past `stop`."""
-    frames, total = chain.frames, 0
+    frames, total, memo = chain.frames, 0, {}
     for i, start in enumerate(frames):
         for end in frames[i + 1:]:
-            total += estimated_size(chain, start, end)
+            total += estimated_size(chain, start, end, memo=memo)
             if stop is not None and total > stop:
                 return total
     return total

@@ -31,12 +31,12 @@ from .rules import sign_of, sine_as_sign, solve_rule
 from .sentences import LinedUp, Undetermined
 
 
-def solve_last(pool, option, derivation, settings) -> sympy.Expr:
-    """The wrist's last angle: by the books' pair where that prints shorter than `option`'s value
-    (then `option`'s value is the degenerate case's member), else by `option`. `settings`:
-    (prismatic, prefer, constants, witness, memos) of the search."""
+def solve_round(pool, option, derivation, settings, last=()) -> sympy.Expr:
+    """The value a round of the search finds by `option`'s rule; for the wrist's last angle (in
+    `last`) by the books' pair where that prints shorter than `option`'s value (which is then the
+    degenerate case's member). `settings`: (prismatic, prefer, constants, witness, memos) of the search."""
     prismatic, prefer, constants, witness, memos = settings
-    if option.rule != "pair":
+    if option.rule != "pair" or option.candidates[0].variable not in last:
         return solve_rule(option.rule, option.candidates, derivation, constants, memos, witness)
     through = solve_rule(option.rule, option.candidates, _scratch(derivation), constants, memos, witness)
     signs = {sigma for sigma, _, _ in derivation.signs}
@@ -85,10 +85,9 @@ def _keep_member(derivation, cases: int, variable, member) -> None:
     """The book pair's own degenerate case (sin θ5 = 0 again, for θ6) is the middle angle's case
     said once more: dropped, and that case keeps `variable` = `member` as the value a numeric
     evaluation takes there."""
-    added = derivation.degenerate[cases:]
-    for case in added:
+    for case in derivation.degenerate[cases:]:
         earlier = next((k for k, known in enumerate(derivation.degenerate[:cases])
-                        if isinstance(known.reason, LinedUp) and known.condition == case.condition), None)
+                        if _lined_up(known) and known.condition == case.condition), None)
         if earlier is None:
             continue
         known = derivation.degenerate[earlier]
@@ -98,5 +97,10 @@ def _keep_member(derivation, cases: int, variable, member) -> None:
         derivation.vanishing = [(expr, k if k < index else k - 1) for expr, k in derivation.vanishing if k != index]
     if len(derivation.degenerate) > cases:  # no earlier case to join: the new one carries the member
         last = derivation.degenerate[-1]
-        if isinstance(last, Undetermined) and isinstance(last.reason, LinedUp):
+        if _lined_up(last):
             derivation.degenerate[-1] = replace(last, member=((variable, member),))
+
+
+def _lined_up(case) -> bool:
+    """Whether a degenerate case is axes lining up about a joint (s5 = 0)."""
+    return isinstance(case, Undetermined) and isinstance(case.reason, LinedUp)

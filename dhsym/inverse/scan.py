@@ -28,9 +28,8 @@ from ..errors import NoClosedForm
 from . import algebra
 from .fresh import fresh_symbol
 from .lookups import Memos
-from .mirrored import solve_last
+from .mirrored import solve_round
 from .ranking import best
-from .rules import solve_rule
 from .witness import number_at
 
 
@@ -79,12 +78,8 @@ def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, p
                             + f"no equation holds only one of {', '.join(map(str, remaining))} as a known sub-problem")
         candidates = option.candidates
         known = {name for name, _ in derivation.assignments}
-        if candidates[0].variable in last:
-            settings = (set(prismatic), prefer, frozenset(constants), witness, memos)
-            solved = solve_last(pool, option, derivation, settings)
-        else:
-            solved = solve_rule(option.rule, candidates, derivation, constants, memos, witness)
-        value = in_coordinates(solved, derivation.coordinates)
+        settings = (set(prismatic), prefer, frozenset(constants), witness, memos)
+        value = in_coordinates(solve_round(pool, option, derivation, settings, last), derivation.coordinates)
         for name, named in derivation.assignments:
             if name not in known and name not in witness:  # a name the rule made (D, K); X, Y come with numbers
                 witness[name] = number_at(named, witness)

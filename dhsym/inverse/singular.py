@@ -20,11 +20,10 @@ from types import SimpleNamespace
 
 import sympy
 from sympy.polys.domains import QQ
-from sympy.polys.fields import field as rational_field
-from sympy.polys.polyerrors import CoercionFailed, ExactQuotientFailed
+from sympy.polys.rings import ring as poly_ring
 
 from ..core.chain import Chain
-from ..velocity.determinant import TooManyTerms, as_written, determinant, factored, joint_factors
+from ..velocity.determinant import TooManyTerms, as_written, determinant, factored, joint_factors, partitioned_factors
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
 from ..velocity.singularities import singularities
@@ -57,13 +56,13 @@ def tie_to_jacobian(chain: Chain, derivation, definitions, sample, numbers) -> N
     meeting = [k for k, c in enumerate(derivation.conditions) if isinstance(c, Exists) and c.unknown is not None]
     if not possible and not meeting:
         return
-    wrist = set(chain.joint_variables[3:])
-    if not meeting and all(b.free_symbols & joints <= wrist for b in possible) and \
-            wrist_centre(chain, sample=sample) is not None:
+    wrist, centre = set(chain.joint_variables[3:]), wrist_centre(chain, sample=sample)
+    if not meeting and all(b.free_symbols & joints <= wrist for b in possible) and centre is not None:
         factors = wrist_factors(chain, numbers, sample)
     else:
-        try:
-            factors = determinant(chain, numbers=numbers, sample=sample).factors
+        try:  # the factors `dhsym jacobian` prints, without the value it prints besides
+            factors = partitioned_factors(chain, centre, numbers) if centre is not None else \
+                determinant(chain, numbers=numbers, sample=sample).factors
         except TooManyTerms:  # counted before it is expanded: a general 6R's, which says nothing here
             return
     said = {s.factor: Singular(s.factor, s.template, s.joints)
@@ -98,8 +97,9 @@ def meeting_factor(chain: Chain, side, factors, sample, trials: int = 3):
     rng = random.Random(5)
     points = [sample_values(chain, rng, sample) for _ in range(trials)]
     ring = _Ring(chain.joint_variables)
+    sides = [float(side.xreplace(values)) for values in points]  # once, for every factor
     for factor in factors:
-        ratios = [_ratio(side, factor, values) for values in points]
+        ratios = [_ratio(value, factor, values) for value, values in zip(sides, points)]
         if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
             continue
         if ring.multiple(side, factor ** 2):
@@ -119,45 +119,116 @@ class _Ring:
             c, s = sympy.Dummy("c"), sympy.Dummy("s")
             self.names.update({sympy.cos(joint): c, sympy.sin(joint): s})
             self.pairs.append((s, c))
+        self.index = {joint: k for k, joint in enumerate(joints)}
 
     def multiple(self, side, square) -> bool:
         """Whether side = k · square with k free of the joints (a nonzero constant expression)."""
-        side, square = (sympy.expand_trig(e).xreplace(self.names) for e in (side, square))
-        trig = [g for pair in self.pairs for g in pair]
-        generators = trig + sorted((side.free_symbols | square.free_symbols) - set(trig), key=str)
-        fractions, *_ = rational_field(generators, QQ)
-        try:  # the field multiplies out as it reads, far faster than sympy.expand and together
-            top, other = fractions.from_expr(side), fractions.from_expr(square)
-        except (CoercionFailed, ValueError):
+        trig = [g for pair in self.pairs for g in pair]  # a joint outside cos and sin: a constant, as before
+        generators = trig + sorted(side.free_symbols | square.free_symbols, key=str)
+        polys, *_ = poly_ring(generators, QQ)
+        try:  # each read as a numerator in normal form over a denominator free of the joints
+            top, other = self._read(side, polys)[0], self._read(square, polys)[0]
+        except _NotPolynomial:
             return False
-        joints = range(len(trig))
-        if any(any(m[i] for i in joints) for d in (top.denom, other.denom) for m in d.keys()):
-            return False  # a denominator holding a joint: not a trigonometric polynomial
-        try:
-            k = self._normal(top.numer).exquo(self._normal(other.numer))
-        except ExactQuotientFailed:
-            return False
-        return bool(k) and all(not any(monomial[i] for i in joints) for monomial in k.keys())
+        return bool(top) and bool(other) and _proportional(top, other, len(trig))
+
+    def _read(self, expr, polys):
+        """(numerator, denominator) of `expr` in `polys`, the numerator kept in normal form as it is
+        multiplied out (so that px² + py² + pz² shrinks before it is squared), the denominator free
+        of the joints; _NotPolynomial for anything else (a joint in a denominator, √2, a decimal)."""
+        if expr.is_Add:
+            top, below = polys.zero, polys.one
+            for numerator, denominator in (self._read(term, polys) for term in expr.args):
+                if denominator == below:
+                    top += numerator
+                else:
+                    top, below = top * denominator + numerator * below, below * denominator
+            return top, below
+        if expr.is_Mul:
+            top, below = polys.one, polys.one
+            for numerator, denominator in (self._read(factor, polys) for factor in expr.args):
+                top, below = self._normal(top * numerator), below * denominator
+            return top, below
+        if expr.is_Pow and expr.exp.is_Integer:
+            numerator, denominator = self._read(expr.base, polys)
+            if expr.exp < 0:
+                if _holds_joint(numerator, len(self.pairs)):
+                    raise _NotPolynomial
+                numerator, denominator = denominator, numerator
+            return self._normal(numerator ** abs(int(expr.exp))), denominator ** abs(int(expr.exp))
+        if isinstance(expr, (sympy.cos, sympy.sin)):
+            pair = self._angle(expr.args[0], polys)
+            if pair is None:  # not a sum of joints: an offset such as π/2, as expand_trig writes it
+                expanded = sympy.expand_trig(expr).xreplace(self.names)
+                if expanded == expr:
+                    raise _NotPolynomial
+                return self._read(expanded, polys)
+            return pair[0] if isinstance(expr, sympy.cos) else pair[1], polys.one
+        if expr.is_Rational:
+            return polys.ground_new(QQ(expr.p, expr.q)), polys.one
+        if expr in polys.symbols:
+            return polys.gens[polys.symbols.index(expr)], polys.one
+        raise _NotPolynomial
+
+    def _angle(self, angle, polys):
+        """(cos, sin) of a sum of whole multiples of joints, in normal form; None for another angle."""
+        cos, sin = polys.one, polys.zero
+        for term in sympy.Add.make_args(angle):
+            times, joint = term.as_coeff_Mul()
+            if joint not in self.index or not times.is_Integer:
+                return None
+            c, s = polys.gens[2 * self.index[joint] + 1], polys.gens[2 * self.index[joint]]
+            s = s if times > 0 else -s
+            for _ in range(abs(int(times))):  # cos(a + b) = ca cb − sa sb, sin(a + b) = sa cb + ca sb
+                cos, sin = self._normal(cos * c - sin * s), self._normal(sin * c + cos * s)
+        return cos, sin
 
     def _normal(self, p):
-        """p with every s_k² replaced by 1 − c_k² (one pass: the replacement holds no s_k)."""
+        """p with every s_k² replaced by 1 − c_k² (one pass: the replacement holds no s_k). The
+        terms are grouped by the powers of 1 − c_k² they take, each group multiplied once."""
         polys = p.ring
-        one = polys.one
-        lowered = [(2 * k, 2 * k + 1, one - polys.gens[2 * k + 1] ** 2) for k in range(len(self.pairs))]
-        total = polys.zero
+        s_indices = [2 * k for k in range(len(self.pairs))]
+        groups: dict = {}
         for monomial, coefficient in p.items():
-            exponents, term = list(monomial), polys.ground_new(coefficient)
-            for s_index, _, factor in lowered:
+            exponents, halves = list(monomial), []
+            for s_index in s_indices:
                 half, exponents[s_index] = divmod(exponents[s_index], 2)
+                halves.append(half)
+            group = groups.setdefault(tuple(halves), {})
+            group[tuple(exponents)] = coefficient  # distinct: the monomial is recovered from both
+        total = polys.zero
+        for halves, group in groups.items():
+            term = polys.from_dict(group)
+            for k, half in enumerate(halves):
                 if half:
-                    term *= factor ** half
-            total += term * polys.from_dict({tuple(exponents): 1})
+                    term *= (polys.one - polys.gens[2 * k + 1] ** 2) ** half
+            total += term
         return total
 
 
-def _ratio(side, factor, values) -> float | None:
+class _NotPolynomial(Exception):
+    """An expression that is not a polynomial in the joints' cos and sin over the constants."""
+
+
+def _holds_joint(p, joints: int) -> bool:
+    return any(any(monomial[:2 * joints]) for monomial in p.keys())
+
+
+def _proportional(top, other, trig: int) -> bool:
+    """Whether top = r · other with r free of the first `trig` generators (both nonzero): r is the
+    ratio of their coefficients of one monomial in those generators."""
+    chosen = next(iter(other.keys()))[:trig]
+
+    def coefficient(p):  # the part of p at the chosen monomial, as a polynomial in the constants
+        return p.ring.from_dict({(0,) * trig + m[trig:]: c for m, c in p.items() if m[:trig] == chosen})
+
+    mine, theirs = coefficient(top), coefficient(other)
+    return bool(mine) and top * theirs == other * mine
+
+
+def _ratio(side: float, factor, values) -> float | None:
     square = float(factor.xreplace(values)) ** 2
-    return None if abs(square) < 1e-12 else float(side.xreplace(values)) / square
+    return None if abs(square) < 1e-12 else side / square
 
 
 def wrist_factors(chain: Chain, numbers, sample=None) -> list:

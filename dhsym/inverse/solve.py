@@ -35,7 +35,7 @@ from .derive import derive
 from .naming import checked_names
 from .redundant import working_free
 from .solution import Solution
-from .written import as_written, with_written_symbols
+from .written import as_written, with_names, with_written_symbols
 
 
 def solve(chain: Chain, free=(), *, sample=None, numbers: WrittenNumbers | None = None, name: str = "",
@@ -54,6 +54,7 @@ def solve(chain: Chain, free=(), *, sample=None, numbers: WrittenNumbers | None 
         kept, count = ((), redundant.needed) if redundant.lost else (variables, redundant.extra)
         example, tried = working_free(chain, sample, numbers, kept, count) if count else ((), 0)
         raise UserError(redundant_message(name, variables, redundant, example, tried))
+    numbers = with_names(chain, numbers)  # long decimals (an import's 15 digits) are written as names
     solving, solving_sample, written = with_written_symbols(chain, sample, numbers)
     solution = derive(solving, variables, sample=solving_sample, numbers=numbers, name=name, path=path)
     solution = as_written(solution, chain, sample, numbers) if written else solution

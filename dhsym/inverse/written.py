@@ -19,6 +19,11 @@ as a decimal (see dhsym.core.numbers): `2·0.089159·0.0823 r33` is `0.014675571
 px*0.069955 - px/0.0823 + 0.180625
 >>> exact(px / b)
 10000*px/823
+
+A decimal too long to read in a formula (an import's a2 = 0.105948100502085, its offset
+1.23412150740817 = atan(20/7)) is a `Named` number: the solver and the generated code see the
+decimal, the printers write the name `with_names` gives it (a2, β), and folding leaves it alone,
+so that D reads (X² + Y² − a2² − 0.01)/(0.2 a2), not a sum of 30 digits.
 """
 from __future__ import annotations
 
@@ -27,7 +32,7 @@ from dataclasses import replace
 import sympy
 
 from ..core.chain import Chain, DHRow, plain
-from ..core.numbers import decimal_text
+from ..core.numbers import WrittenNumbers, decimal_text, is_long
 from ..core.transforms import Step
 
 
@@ -44,9 +49,59 @@ class Written(sympy.Symbol):
         return sympy.Rational(self.name)
 
 
+class Named(Written):
+    """A long decimal of the file that a derivation writes by a name (see `with_names`)."""
+
+
+def with_names(chain: Chain, numbers: WrittenNumbers) -> WrittenNumbers:
+    """`numbers` with a name for each long decimal (see core.numbers.is_long) of the chain's
+    lengths, revolute joints' offsets and base and tool translations, with the places
+    (parameter, row or axis, whether subtracted) it stands in: a length by its place
+    (`a_2`, `d_3`; the base's and tool's `b_z`, `t_x`), an offset `beta` (`beta_2`, `beta_3`
+    when the offsets differ); none that a symbol of the chain already has.
+
+    >>> q, long = sympy.Symbol("q_1", real=True), sympy.Rational("0.105948100502085")
+    >>> chain = Chain([DHRow("R", q - 2 * long, sympy.S.Zero, long, sympy.S.Zero, q)], "standard")
+    >>> [(text, name) for text, name, _ in with_names(chain, WrittenNumbers(places=15)).named]
+    [('0.105948100502085', 'a_1'), ('0.21189620100417', 'beta')]
+    """
+    chain, found = plain(chain), {}
+
+    def note(value, parameter, place):
+        for term in sympy.Add.make_args(sympy.sympify(value)):  # a number alone, not the coefficient of √2
+            if is_long(term) and numbers.decimal(abs(term)):
+                found.setdefault(decimal_text(abs(term)), []).append((parameter, place, term < 0))
+
+    for number, row in enumerate(chain.rows, 1):
+        note(row.a, "a", number)
+        note(row.d, "d", number)
+        if row.joint == "R":
+            note(row.theta, "theta", number)
+    for parameter, steps in (("b", chain.base), ("t", chain.tool)):
+        for step in (step for step in steps if not step.is_rotation):
+            note(step.value, parameter, step.kind[1])
+    angles = [text for text, places in found.items() if places[0][0] == "theta"]
+    taken, named = {s.name for s in chain.symbols}, []
+    for text, places in found.items():
+        parameter, place, _ = places[0]
+        name = ("beta" if len(angles) == 1 else f"beta_{place}") if parameter == "theta" else f"{parameter}_{place}"
+        if name not in taken:
+            taken.add(name)
+            named.append((text, name, tuple(places)))
+    return replace(numbers, named=tuple(named))
+
+
 def exact(expr):
     """`expr` with every written number put back as its exact rational."""
     found = {s: s.value for s in getattr(expr, "free_symbols", ()) if isinstance(s, Written)}
+    return expr.xreplace(found) if found else expr
+
+
+def exact_but_named(expr):
+    """`expr` with every written number put back as its exact rational but the named ones (a2, β),
+    which a sentence writes by name as the formulas do."""
+    found = {s: s.value for s in getattr(expr, "free_symbols", ())
+             if isinstance(s, Written) and not isinstance(s, Named)}
     return expr.xreplace(found) if found else expr
 
 
@@ -57,19 +112,24 @@ def with_written_symbols(chain: Chain, sample, numbers) -> tuple:
     numbers: the solver reads the axes' directions from them."""
     chain, sample, found = plain(chain), dict(sample or {}), {}
 
-    def put(value):
+    def put(value, named_only=False):
         value = sympy.sympify(value)
         terms = []
         for term in sympy.Add.make_args(value):
             coefficient, rest = term.as_coeff_Mul()
             if coefficient.is_Rational and not coefficient.is_Integer and numbers.decimal(abs(coefficient)):
-                symbol = Written.of(abs(coefficient))
+                named = numbers.name_of(decimal_text(abs(coefficient))) is not None
+                if named_only and not named:
+                    terms.append(term)
+                    continue
+                symbol = (Named if named else Written).of(abs(coefficient))
                 found[symbol] = symbol.value
                 term = (1 if coefficient > 0 else -1) * symbol * rest
             terms.append(term)
         return sympy.Add(*terms)
 
-    rows = [DHRow(row.joint, row.theta, put(row.d), put(row.a), row.alpha, row.variable) for row in chain.rows]
+    rows = [DHRow(row.joint, put(row.theta, True) if row.joint == "R" else row.theta, put(row.d), put(row.a),
+                  row.alpha, row.variable) for row in chain.rows]
     moved = [[step if step.is_rotation else Step(step.kind, put(step.value)) for step in steps]
              for steps in (chain.base, chain.tool)]
     if not found:
@@ -130,8 +190,10 @@ def _holds_written(expr) -> bool:
 
 
 def _is_constant(expr) -> bool:
-    """A number, or a product, power or sum of numbers and written numbers only."""
-    return all(isinstance(s, Written) for s in expr.free_symbols) and not expr.has(sympy.Function)
+    """A number, or a product, power or sum of numbers and written numbers only (a named one is
+    a name, as a2 is)."""
+    return (all(isinstance(s, Written) and not isinstance(s, Named) for s in expr.free_symbols)
+            and not expr.has(sympy.Function))
 
 
 def _written(expr, numbers):

@@ -20,6 +20,7 @@ from pathlib import Path
 import sympy
 
 from ..core.inertia import GRAVITY_SYMBOL
+from ..core.numbers import table_numbers
 from ..core.robot import Robot
 from ..errors import UserError
 from ..geometry.frames import assign_frames
@@ -61,12 +62,22 @@ def import_urdf(path: str | Path, base: str | None = None, tip: str | None = Non
     assignment = assign_frames(urdf.axes, urdf.tool, convention, symbols)
     masses, rounded, odd = in_dh_frames(urdf.bodies, [frame.pose for frame in assignment.frames[1:]])
     robot = assignment.robot(
+        numbers=table_numbers(chain_numbers(assignment.chain())),  # decimals, as its robot file writes them
         name=urdf.name, source=f"{Path(path).name}, links {urdf.base} → {urdf.tip}",
         notes=joined(notes, inertia_note(urdf.bodies, rounded)), masses=masses,
         sample={GRAVITY_SYMBOL: G_SAMPLE} if masses.given else {}, joint_limits=urdf.limits,
         warnings=[*expansion_warnings, *urdf.warnings, *odd])
 
     return Imported(robot, list(urdf.joint_names))
+
+
+def chain_numbers(chain) -> list:
+    """The numbers a chain's table writes as numbers: each term's coefficient in d, a, θ, α and
+    the base's and tool's steps, but a multiple of π's (pi/2 is written so)."""
+    values = [value for row in chain.rows for value in (row.d, row.a, row.theta, row.alpha)]
+    values += [step.value for step in (*chain.base, *chain.tool)]
+    coefficients = [term.as_coeff_Mul() for value in values for term in sympy.Add.make_args(sympy.sympify(value))]
+    return [number for number, rest in coefficients if not rest.has(sympy.pi)]
 
 
 def read_chain(path, base, tip, xacro_args=None, package_paths=()):

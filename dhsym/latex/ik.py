@@ -32,7 +32,7 @@ from ..printing.ik import (
     target_title,
     variable_list,
 )
-from ..printing.ik_solution import ATAN2_LEGEND, uses_atan2
+from ..printing.ik_solution import ATAN2_LEGEND, named_numbers, uses_atan2
 from .display import Latex
 from .ik_branches import DEFINITIONS, PART, branch_sections, heading, merged, value_rows
 from .layout import (
@@ -97,13 +97,7 @@ def ik_sections(solution, robot, page: Page, headings: bool | None = None) -> li
     remarks += [paragraph(f"Degenerate: {printer.sentence(said)}.", page) for said in solution.degenerate]
     if remarks:
         out.append(Section(PART, "Existence and degenerate poses", remarks))
-    legend = legend_items(printer, page)
-    if uses_atan2(solution):  # said once, with the legend (on slides, on its frame)
-        if legend:
-            legend[-1].keep_with_next = True
-        height = paragraph(ATAN2_LEGEND["unicode"], page).height  # as long as what it prints, not its markup
-        legend.append(Block(ATAN2_LEGEND["latex"], height, is_display=False))
-    out[-1].items.extend(legend)
+    out[-1].items.extend(_legend(solution, printer, page))
     if page.height_pt is None if headings is None else headings:  # no frame titles: a heading says which part
         for section in out:
             section.items.insert(0, heading(section.title, page))
@@ -221,6 +215,23 @@ def typeset(items) -> str:
         follows = blocks[position + 1] if position + 1 < len(blocks) else None
         out.append(text if follows is not None and follows.is_display else text + "\\par")
     return "".join(line + "\n" for line in out)
+
+
+def _legend(solution, printer, page: Page) -> list:
+    """The names the formulas use: the table's long decimals named (an import's a2, β), the c/s
+    abbreviations, and atan2's order where a formula holds one (on slides, on the legend's frame)."""
+    legend = legend_items(printer, page)
+    named = named_numbers(solution.numbers, "latex")
+    if named:
+        said = Block(named, paragraph(named_numbers(solution.numbers, "unicode"), page).height, is_display=False)
+        said.keep_with_next = bool(legend)
+        legend.insert(0, said)
+    if uses_atan2(solution):
+        if legend:
+            legend[-1].keep_with_next = True
+        height = paragraph(ATAN2_LEGEND["unicode"], page).height  # as long as what it prints, not its markup
+        legend.append(Block(ATAN2_LEGEND["latex"], height, is_display=False))
+    return legend
 
 
 def notebook_display(solution, robot):

@@ -120,8 +120,10 @@ class _InverseNotation:
         return self._negative[term]
 
     def _print_Written(self, expr):
-        """A number as the robot file wrote it (see dhsym.inverse.written): 0.0823."""
-        return expr.name
+        """A number as the robot file wrote it (see dhsym.inverse.written): 0.0823; a long one by
+        the name the derivation gives it (a2, β)."""
+        name = self.numbers.name_of(expr.name)
+        return expr.name if name is None else display_name(name, self.style)
 
     def _join(self, pieces):
         """Factors side by side; two numbers that could not be made one (0.089159² · 0.0823) get a dot."""
@@ -354,7 +356,8 @@ def angle_meanings(solution) -> tuple:
             for name in sorted(names & value.free_symbols - set(meanings), key=str) if joint in angles else ():
                 slope = sympy.diff(value, name)
                 meaning = sympy.expand((joint - (value - slope * name)) / slope) if slope in (1, -1) else None
-                if meaning is not None and meaning.free_symbols <= angles:  # the joint is the name less other angles
+                known = angles | {s for s in value.free_symbols if isinstance(s, Written)}  # an offset β too
+                if meaning is not None and meaning.free_symbols <= known:  # the joint is the name less other angles
                     meanings[name] = meaning
     return tuple(meanings.items())
 

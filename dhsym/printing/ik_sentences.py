@@ -24,7 +24,7 @@ import sympy
 from sympy.printing.str import StrPrinter
 
 from ..inverse.sentences import ByEquations, CentreOnAxis, Frame, Joint, LinedUp
-from ..inverse.written import exact
+from ..inverse.written import exact_but_named
 from . import render
 from .ik_words import meaning_text
 
@@ -143,7 +143,7 @@ class SentenceWriting:
 
     def _math(self, piece: Math) -> str:
         """A piece of math in the printer's notation; an angle θk + c with θk first (θ5 + 1)."""
-        expr = exact(piece.expr)
+        expr = exact_but_named(piece.expr)
         if isinstance(piece, Angle) and expr.is_Add:
             joint = _joint_symbol(expr)
             offset = expr - joint
@@ -287,7 +287,7 @@ class LatexSentences(SentenceWriting):
 def relation(part: Relation, printer, style: str) -> str:
     """A relation in the printer's notation. An equation to zero starts with a plus, as a book
     writes it: `px − b = 0`, not `−px + b = 0`."""
-    lhs, operator, rhs = exact(part.lhs), part.operator, exact(part.rhs)
+    lhs, operator, rhs = exact_but_named(part.lhs), part.operator, exact_but_named(part.rhs)
     left = printer.doprint(lhs)
     if rhs == 0 and operator in ("=", "!=") and left[:1] in "−-":
         flipped = printer.doprint(-lhs)

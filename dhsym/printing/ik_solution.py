@@ -33,7 +33,7 @@ from .ik import (
 from .ik_limits import limits_json, limits_sentence
 from .ik_lines import assignments_text
 from .ik_sentences import PlainSentences, wrap_sentence
-from .names import GREEK_NAMES
+from .names import GREEK_NAMES, display_name
 
 
 def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str:
@@ -71,7 +71,8 @@ def text_solution(solution, robot, width: int = 100, ascii: bool = False) -> str
         said = ", ".join(f"{printer.doprint(name)} = {printer.doprint(value)}" for name, value in meanings)
         blocks.append(wrap_sentence(f"Angles solved as one: {said}", width, "  "))
     atan2 = [render.wrap(ATAN2_LEGEND["unicode"], width, "  ")] if uses_atan2(solution) else []
-    legend = "\n".join(filter(None, [render.text_legend(printer, width), *atan2]))
+    named = render.wrap(named_numbers(solution.numbers, "unicode"), width, "  ")
+    legend = "\n".join(filter(None, [named, render.text_legend(printer, width), *atan2]))
     text = "\n\n".join(blocks + ([legend] if legend else []))
     return ascii_text(text) if ascii else text
 
@@ -81,6 +82,49 @@ ATAN2_LEGEND = {  # the order of atan2's arguments, said once where a solution u
     "latex": "$\\mathrm{atan2}(y, x)$ is the angle of the point $(x, y)$, $y$ (the sine) first; Spong (2006) writes "
              "$\\mathrm{Atan2}(x, y)$.",
 }
+
+
+def named_numbers(numbers, style: str) -> str:
+    """The sentence that says which of the table's long decimals the formulas write by a name,
+    and what each is, to 6 digits ('' when none); `style` is unicode or latex.
+
+    >>> from dhsym.core.numbers import WrittenNumbers
+    >>> named = WrittenNumbers(named=(("1.23412150740817", "beta", (("theta", 2, True),)),))
+    >>> print(named_numbers(named, "unicode")[:58])
+    Named numbers: β ≈ 1.23412 (the θ offset −β of row 2); the
+    >>> named_numbers(named, "unicode")[58:]
+    ' table gives it to 15 digits, the formulas use it as given.'
+
+    """
+    if not numbers.named:
+        return ""
+    math = (lambda text: f"${text}$") if style == "latex" else (lambda text: text)  # noqa: E731
+    entries, digits = [], 0
+    for decimal, name, places in numbers.named:
+        label, parameter = display_name(name, style), places[0][0]
+        if parameter == "theta":
+            theta, minus = ("$\\theta$", "-") if style == "latex" else ("θ", "−")
+            signs = [(minus, [p for _, p, negative in places if negative]),
+                     ("+" if any(n for *_, n in places) else "", [p for _, p, negative in places if not negative])]
+            what = f"the {theta} offset " + " and ".join(f"{math(sign + label)} of {_rows(rows, 'row')}"
+                                                         for sign, rows in signs if rows)
+        else:
+            kind = {"b": "the base's translation", "t": "the tool's translation"}.get(
+                parameter, f"the {math(parameter)}")
+            what = f"{kind} of {_rows([p for _, p, _ in places], 'axis' if parameter in ('b', 't') else 'row')}"
+        approx = " \\approx " if style == "latex" else " ≈ "
+        entries.append(f"{math(label + approx + format(float(decimal), '.6g'))} ({what})")
+        digits = max(digits, len(decimal.replace(".", "").lstrip("0")))
+    them = "them" if len(entries) > 1 else "it"
+    return (f"Named numbers: {'; '.join(entries)}; the table gives {them} to {digits} digits, the formulas use "
+            f"{them} as given.")
+
+
+def _rows(places, kind: str) -> str:
+    """'row 2', 'rows 2 and 3', 'rows 1, 2 and 4'."""
+    named = [str(place) for place in places]
+    listed = " and ".join([", ".join(named[:-1]), named[-1]]) if len(named) > 1 else named[0]
+    return f"{kind}{'s' if len(named) > 1 else ''} {listed}"
 
 
 def uses_atan2(solution) -> bool:

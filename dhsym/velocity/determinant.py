@@ -200,15 +200,28 @@ def _full(chain: Chain, printed: Printed) -> Determinant:
 def _wrist_partitioned(chain: Chain, centre: Frame, printed: Printed) -> Determinant:
     """det A · det C, each in the frame where it is short: A (linear rows, joints 1–3) in the
     axis frame of joint 3 (Craig's ³J₆), C (angular rows, joints 4–6) in that of joint 5."""
-    body, arm_frame, wrist_frame = chain.last_frame, axis_frame(chain, 3), axis_frame(chain, 5)
-    arm = [linear_part(chain, j, arm_frame, centre, body) for j in (1, 2, 3)]
-    wrist = [angular_part(chain, j, wrist_frame, centre, body) for j in (4, 5, 6)]
-    arm_det = factored(sympy.Matrix(arm).T.det(method="berkowitz"))
-    result = _result(chain, printed, arm_det * factored(sympy.Matrix(wrist).T.det(method="berkowitz")), "J", "")
+    arm_det, wrist_det = partitioned(chain, centre)
+    result = _result(chain, printed, arm_det * wrist_det, "J", "")
     note = (f"The last three axes meet at the origin of frame {printed.numbering.frame(centre)} (the wrist centre), "
             "so det J = (det A)(det C): "
             "A the linear velocities of the wrist centre from joints 1–3, C the wrist axes 4–6.")
     return Determinant(result.value, "J", result.factors, note)
+
+
+def partitioned(chain: Chain, centre: Frame) -> tuple[sympy.Expr, sympy.Expr]:
+    """det A and det C of a wrist-partitioned arm, each factored: A (linear rows, joints 1–3) in
+    the axis frame of joint 3 (Craig's ³J₆), C (angular rows, joints 4–6) in that of joint 5."""
+    body, arm_frame, wrist_frame = chain.last_frame, axis_frame(chain, 3), axis_frame(chain, 5)
+    arm = [linear_part(chain, j, arm_frame, centre, body) for j in (1, 2, 3)]
+    wrist = [angular_part(chain, j, wrist_frame, centre, body) for j in (4, 5, 6)]
+    return tuple(factored(sympy.Matrix(block).T.det(method="berkowitz")) for block in (arm, wrist))
+
+
+def partitioned_factors(chain: Chain, centre: Frame, numbers: WrittenNumbers) -> list:
+    """The factors of det J of a wrist-partitioned arm, as `determinant(chain).factors` gives them,
+    from its two factored blocks without factoring their product again (nor its value)."""
+    arm_det, wrist_det = partitioned(chain, centre)
+    return joint_factors(as_written(arm_det * wrist_det, numbers), chain)
 
 
 def _result(chain: Chain, printed: Printed, det, block: str, note: str) -> Determinant:
@@ -289,9 +302,30 @@ def factored(expr: sympy.Expr) -> sympy.Expr:
     return sympy.factor(shortened) if shortened != result else result
 
 
+def _harmonic(pair: sympy.Add) -> bool:
+    """Whether a sum of two terms is a x + b y, x and y each one cos or sin, a and b free of them
+    and a/b a symbol's ratio or a rational ≠ ±1 (a3 s3 + d4 c3): no identity shortens it (tan of
+    a rational multiple of π is rational only at 0 and ±1), and trigsimp need not try.
+
+    >>> a, b, t = sympy.symbols("a b t")
+    >>> _harmonic(a * sympy.sin(t) + b * sympy.cos(t)), _harmonic(a * sympy.sin(t) + a * sympy.cos(t))
+    (True, False)
+    >>> _harmonic(sympy.sqrt(3) * sympy.sin(t) + sympy.cos(t)), _harmonic(3 * sympy.sin(t) + 4 * sympy.cos(t))
+    (False, True)
+    """
+    coefficients = []
+    for term in pair.args:
+        coefficient, trig = term.as_independent(sympy.sin, sympy.cos, as_Add=False)
+        if not isinstance(trig, (sympy.sin, sympy.cos)) or coefficient.has(sympy.sin, sympy.cos):
+            return False
+        coefficients.append(coefficient)
+    ratio = sympy.cancel(coefficients[0] / coefficients[1])  # √3 s + c is 2 sin(θ + π/6): tan π/6 is √3/3
+    return not ratio.is_number or (ratio.is_Rational and abs(ratio) != 1)
+
+
 def _pythagoras(factor: sympy.Expr) -> sympy.Expr:
     base, exponent = (factor.base, factor.exp) if factor.is_Pow else (factor, 1)
-    if base.is_Add and len(base.args) == 2 and length(base) <= 12:  # s2 c23 − s23 c2 = −s3
+    if base.is_Add and len(base.args) == 2 and length(base) <= 12 and not _harmonic(base):  # s2 c23 − s23 c2 = −s3
         summed = sympy.trigsimp(base)
         if length(summed) < length(base):
             return summed ** exponent
