@@ -59,3 +59,14 @@ joints:
 
 TEST_ROBOTS = {"ten-joints": TEN_JOINTS, "greek": GREEK_PRISMATIC, "mixed": MIXED_FAMILIES, "wrist": NUMBERED_WRIST,
                "sixth-twists": SIXTH_TWISTS, "sixth-twists-root": SIXTH_TWISTS_AND_ROOT}
+
+# A waist and three pitch joints (Trossen's PincherX 100, Lynxmotion's AL5D)
+PITCH_ARM = """name: pitch arm
+convention: standard
+joints:
+  - {joint: R, theta: theta_1, d: d_1, a: 0, alpha: pi/2}
+  - {joint: R, theta: theta_2, d: 0, a: a_2, alpha: 0}
+  - {joint: R, theta: theta_3, d: 0, a: a_3, alpha: 0}
+  - {joint: R, theta: theta_4, d: 0, a: a_4, alpha: 0}
+sample: {d_1: 0.09, a_2: 0.106, a_3: 0.1, a_4: 0.114}
+"""

@@ -9,6 +9,7 @@ import numpy
 import pytest
 import sympy
 from cli_runner import run_dhsym
+from robots import PITCH_ARM
 
 from dhsym import load
 from dhsym.inverse.sentences import Exists, Undetermined
@@ -16,16 +17,6 @@ from dhsym.inverse.unreachable import contradicts
 from dhsym.latex.ik import snippet
 
 pytestmark = pytest.mark.slow  # real robots solved in closed form: seconds per test
-
-PITCH_ARM = """name: pitch arm
-convention: standard
-joints:
-  - {joint: R, theta: theta_1, d: d_1, a: 0, alpha: pi/2}
-  - {joint: R, theta: theta_2, d: 0, a: a_2, alpha: 0}
-  - {joint: R, theta: theta_3, d: 0, a: a_3, alpha: 0}
-  - {joint: R, theta: theta_4, d: 0, a: a_4, alpha: 0}
-sample: {d_1: 0.09, a_2: 0.106, a_3: 0.1, a_4: 0.114}
-"""
 
 
 def _ik(*args):

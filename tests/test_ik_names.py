@@ -12,6 +12,7 @@ import sympy
 from cli_runner import run_dhsym
 from ik_checks import random_joints, sample_constants
 from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
+from robots import PITCH_ARM
 
 from dhsym import load
 
@@ -25,13 +26,14 @@ WORDS = {
     "puma560": {("shoulder left", "shoulder right"), ("elbow up", "elbow down"), FLIP},
     "stanford": {("shoulder left", "shoulder right"), ("slide forward", "slide back"),
                  FLIP},
-    "ur5": {("shoulder left", "shoulder right"), FLIP, ("elbow +√", "elbow −√")},
+    "ur5": {("shoulder left", "shoulder right"), FLIP, ("elbow up", "elbow down")},
     "inline6": {("shoulder front", "shoulder back"), ("elbow up", "elbow down"), FLIP},
     "spatial3r": {("shoulder front", "shoulder back"), ("elbow up", "elbow down")},
     "finger_rrr": {("shoulder front", "shoulder back"), ("elbow up", "elbow down")},
     "iiwa7": {("shoulder front", "shoulder back"), ("elbow +√", "elbow −√"), FLIP},  # with --free theta_3
     "irb140": {("shoulder front", "shoulder back"), ("elbow up", "elbow down"), FLIP},  # imported from rtb-data
-    "asokan_dh_example": {("shoulder front", "shoulder back"), ("elbow +√", "elbow −√")},
+    "asokan_dh_example": {("shoulder front", "shoulder back"), ("elbow up", "elbow down")},
+    "pitch_arm": {("elbow up", "elbow down")},  # tests/robots.py: a waist and three pitch joints
     "cylindrical_wrist": {("slide forward", "slide back"), FLIP},
     "cylindrical_rpp": {("slide forward", "slide back")},
     "rps_leg": {("slide forward", "slide back")},
@@ -124,6 +126,12 @@ def _truths(kind: str, frames: Frames, q) -> dict:
         reach, bend, out = (v - (v @ across) * across for v in (wrist - s, axis(3)[0] - s, wrist - base))
         ahead = _flat(out, up) / np.linalg.norm(_flat(out, up))
         truths["elbow up"] = (bend @ up) * (reach @ ahead) - (reach @ up) * (bend @ ahead)
+    if kind in ("ur5", "asokan_dh_example", "pitch_arm"):
+        # the elbow left of the line from the shoulder to axis 4, seen with axis 1 up and frame 1's x axis
+        # to the right (the wrist can lie on either side of axis 1 within a branch)
+        s = axis(2)[0]
+        toward_viewer = np.cross(_flat(poses[1][:3, 0], up), up)
+        truths["elbow up"] = np.cross(axis(4)[0] - s, axis(3)[0] - s) @ toward_viewer
     if kind in ("planar2r", "planar3r", "pratihar_2r", "fourbar_left", "scara", "scara_spong"):
         revolute = [j for j, row in enumerate(chain.rows, 1) if row.joint == "R"]
         point = axis(revolute[2])[0] if len(revolute) > 2 else end  # the wrist: the axis after the elbow
@@ -171,10 +179,19 @@ def _check(kind, chain, result, rng, count=6, free=()):
     assert checked > 0
 
 
-@pytest.mark.parametrize("name", sorted(set(WORDS) - {"irb140", "iiwa7"}))
+@pytest.mark.parametrize("name", sorted(set(WORDS) - {"irb140", "iiwa7", "pitch_arm"}))
 def test_every_word_of_every_branch_is_what_the_arm_does(name):
     chain = load(name)
     _check(name, chain, chain.ik(), np.random.default_rng(12))
+
+
+def test_a_four_joint_arm_says_elbow_up_or_down_though_its_wrist_reaches_over_the_back(tmp_path):
+    # The waist comes from the tool's orientation, so within a branch the wrist point lies in front of
+    # axis 1 at some poses and behind it at others: the words are the way the arm bends.
+    path = tmp_path / "pitch.yaml"
+    path.write_text(PITCH_ARM)
+    chain = load(str(path))
+    _check("pitch_arm", chain, chain.ik(), np.random.default_rng(4), count=12)
 
 
 def test_a_redundant_arm_with_a_free_joint_has_its_words_checked_too():

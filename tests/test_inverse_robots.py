@@ -13,6 +13,7 @@ import sympy
 from ik_checks import derived as solve
 from ik_checks import said
 from packages import EXAMPLE_ROBOT_DATA, RTB_XACRO
+from robots import PITCH_ARM
 
 import dhsym
 from dhsym import Robot
@@ -257,23 +258,12 @@ def test_a_leg_whose_roots_cannot_all_reach_is_refused_not_printed_wrong():
         solve(robot)
 
 
-PITCH_ARM = """name: pitch arm
-convention: {convention}
-joints:
-  - {{joint: R, theta: theta_1, d: d_1, a: 0, alpha: pi/2}}
-  - {{joint: R, theta: theta_2, d: 0, a: a_2, alpha: 0}}
-  - {{joint: R, theta: theta_3, d: 0, a: a_3, alpha: 0}}
-  - {{joint: R, theta: theta_4, d: 0, a: a_4, alpha: 0}}
-sample: {{d_1: 0.09, a_2: 0.106, a_3: 0.1, a_4: 0.114}}
-"""
-
-
 def test_a_waist_and_three_pitch_joints_take_the_waist_from_the_tool_not_the_position(tmp_path):
     # The waist's two roots from px, py (atan2(py, px) and its opposite) both put the tool's point
     # in the arm's plane; only one turns the tool as the target does. A four-joint arm cannot
     # reach every pose, so the search must not keep a root the rest of the target contradicts.
     path = tmp_path / "pitch.yaml"
-    path.write_text(PITCH_ARM.format(convention="standard"))
+    path.write_text(PITCH_ARM)
     robot = dhsym.load(str(path))
     solution = solve(robot)
     check_round_trip(robot, solution, random.Random(7), trials=20)

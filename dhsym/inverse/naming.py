@@ -21,10 +21,11 @@ are measured in dhsym.inverse.sides, "up" being the direction of axis 1:
   "below" within a branch; there the line is drawn going the way the wrist lies from axis 1 (which
   the shoulder's choice fixes): the elbow left / right of it, seen with axis 1 up and the wrist to
   its right, which is above / below wherever the wrist is further out than the shoulder. For the
-  UR5 (its wrist: the point of axis 4 in the plane of axes 2, 3, 4) and the Rhino-like arm even
-  the side of axis 1 the wrist lies on changes within a branch (no choice of theirs places that
-  point on one side of axis 1): at some of the twelve poses the word would be wrong, so their
-  names say the root, "elbow +√";
+  UR5 (its wrist: the point of axis 4 in the plane of axes 2, 3, 4), the Rhino-like arm and a
+  four-joint arm (a waist the tool's orientation fixes) even the side of axis 1 the wrist lies on
+  changes within a branch: there the words say the way the arm bends, the elbow left / right of
+  the line drawn with axis 1 up and frame 1's x axis to the right (above / below wherever the
+  wrist lies ahead of the shoulder);
 - elbow up / down of a planar arm, Spong's, drawn with x0 right and y0 up: seen from +z0, the
   elbow left (up) / right (down) of the line from joint 1 to the wrist point (the next revolute
   axis, else the end); Spong's +√ of the elbow's cosine law is elbow down, and the two agree at
@@ -200,7 +201,7 @@ def _measured(solution, arm, parts, joints) -> list:
 def _candidates(role: str) -> tuple:
     """The words tried for a choice of `role`, in order."""
     return {"shoulder": ("right", "front", "ahead", "slide", "ahead_end"),
-            "elbow": ("lefty", "planar", "up", "up_out", "slide"),
+            "elbow": ("lefty", "planar", "up", "up_out", "turned", "slide"),
             "wrist": ("flip",), "slide": ("slide",)}[role]
 
 

@@ -192,6 +192,27 @@ def _up(outward: bool):
     return measure
 
 
+def _turned(arm, frames, joint):
+    """The elbow (on the axis of `joint`, parallel to axis 2) left of the line from the shoulder to
+    the wrist, drawn in the arm's plane with axis 1 up and frame 1's x axis to the right: the way
+    the arm bends, whichever side of axis 1 the wrist lies on. (An arm whose waist the orientation
+    fixes, as a four-joint arm's, can reach over its back within a branch, where "above the line"
+    would turn into "below".)"""
+    chain = arm.chain
+    up, shoulder, across = _shoulder(arm, frames)
+    if across is None or joint < 3 or chain.rows[joint - 1].joint != "R":
+        return None
+    elbow, third = axis_line(chain, joint, frames)
+    if not _parallel(across, third):
+        return None
+    right = _flat([row[0] for row in frames[1][0]], up)
+    if norm(right) < TOLERANCE:
+        return None
+    wrist = arm.elbow_wrist(frames, joint)[0]
+    toward_viewer = cross(right, up)
+    return dot(cross(minus(wrist, shoulder), minus(elbow, shoulder)), toward_viewer)
+
+
 def _left(arm, frames, joint):
     """A planar arm seen from +z0: the elbow (on the axis of `joint`) left of the line from axis 1
     to the wrist point."""
@@ -246,6 +267,7 @@ MEASURES = {"right": Measure("shoulder", ("right", "left"), _right),
             "up": Measure("elbow", ("up", "down"), _up(False)),
             "up_out": Measure("elbow", ("up", "down"), _up(True)),
             "planar": Measure("elbow", ("up", "down"), _planar_only(False)),
+            "turned": Measure("elbow", ("up", "down"), _turned),
             "lefty": Measure("", ("lefty", "righty"), _planar_only(True)),
             "slide": Measure("slide", ("forward", "back"), _forward),
             "flip": Measure("wrist", ("not flipped", "flipped"), _unflipped)}

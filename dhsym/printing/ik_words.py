@@ -20,6 +20,9 @@ DEFINITIONS = {
     "up_out": "elbow up/down: drawn in the arm's plane with axis {one} up and the {elbow_wrist} right of it, the "
               "elbow left/right of the line from the shoulder to the {elbow_wrist} (above/below it where the "
               "{elbow_wrist} is further out than the shoulder)",
+    "turned": "elbow up/down: drawn in the arm's plane with axis {one} up and frame {one}'s x axis to the right, the "
+              "elbow left/right of the line from the shoulder to the {elbow_wrist} (above/below it where the "
+              "point lies ahead of the shoulder)",
     "planar": "elbow up/down: seen from +z{zero} (x{zero} right, y{zero} up), the elbow left/right of the line from "
               "joint {one} to the {planar_wrist} (Spong's +√ of the elbow is down)",
     "lefty": "righty/lefty: seen from above (axis {one} up), the elbow right/left of the line from axis {one} to the "
