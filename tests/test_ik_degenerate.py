@@ -9,6 +9,7 @@ import numpy
 import pytest
 import sympy
 from cli_runner import run_dhsym
+from ik_checks import numeric_fk, random_joints, sample_constants
 from robots import PITCH_ARM
 
 from dhsym import load
@@ -71,8 +72,64 @@ def test_a_factor_said_to_meet_the_roots_vanishes_where_they_meet():
     solution = robot.ik().solution
     elbow = next(c for c in solution.conditions if isinstance(c, Exists) and "K" in str(c.expression))
     t3 = robot.joint_variables[2]
-    stretched = sympy.atan2(-elbow.singular.factor.coeff(sympy.cos(t3)), elbow.singular.factor.coeff(sympy.sin(t3)))
-    assert sympy.simplify(elbow.singular.factor.subs(t3, stretched)) == 0
+    factor = elbow.singular[0].factor
+    stretched = sympy.atan2(-factor.coeff(sympy.cos(t3)), factor.coeff(sympy.sin(t3)))
+    assert sympy.simplify(factor.subs(t3, stretched)) == 0
+
+
+def test_stanfords_shoulder_and_the_ur5s_every_meeting_are_factors_of_det_j():
+    stanford = _flat(_ik("stanford"))
+    assert ("xc² + yc² − d2² ≥ 0 (else θ1 has no real value: the target is out of reach); where it is 0 the two roots "
+            "meet, singularities of J: the factors d3 (joint 3 retracted to zero extension) and s2 (axes 1 and 4 are "
+            "parallel) of det J") in stanford
+    ur5 = _flat(_ik("ur5"))
+    for unknown, factor in (("θ1", "a2 c2 + a3 c23 + d5 s234"), ("θ5", "s5"), ("θ3", "s3")):
+        said = (f"≥ 0 (else {unknown} has no real value: the target is out of reach); where it is 0 the two roots "
+                f"meet, a singularity of J: the factor {factor} of det J")
+        assert said in ur5, said
+    jacobian = _flat(run_dhsym("jacobian", "ur5").stdout)  # the same factors as `dhsym jacobian` prints
+    assert "det J = a2 a3 s3 s5(a2 c2 + a3 c23 + d5 s234)" in jacobian
+
+
+@pytest.mark.parametrize("name", ["puma560", "stanford", "ur5"])
+def test_where_a_factor_said_is_zero_the_two_roots_meet(name):
+    # Put one joint where the factor vanishes; at that pose the condition's two roots give one value.
+    robot = load(name)
+    result = robot.ik()
+    chain, unknowns = robot.chain, list(result.solution.joint_variables)
+    constants = sample_constants(robot)
+    fk = numeric_fk(robot, constants)
+    known = {s: constants[s.name] for s in chain.symbols if s.name in constants}
+    rng = numpy.random.default_rng(8)
+    tied = [c for c in result.solution.conditions if isinstance(c, Exists) and c.singular]
+    assert len(tied) == {"puma560": 3, "stanford": 2, "ur5": 3}[name]
+    for condition in tied:
+        column = unknowns.index(condition.unknown)
+        for singular in condition.singular:
+            q = random_joints(chain, rng, 1)[0]
+            _vanish(singular.factor.xreplace(known), chain.joint_variables, q)
+            found = result.evaluate(numpy.array(fk(*q), dtype=float))
+            generic = result.evaluate(numpy.array(fk(*random_joints(chain, rng, 1)[0]), dtype=float))
+            values = [found[numpy.isfinite(found).all(axis=1), column], generic[:, column]]
+            met, apart = (len(set(numpy.round(v, 5))) for v in values)
+            assert 0 < met < apart, (name, singular.factor, values)
+
+
+def _vanish(factor, joints, q) -> None:
+    """Set one joint of q where `factor` is 0 (the last one it holds that can), by bisection."""
+    grid = numpy.linspace(-3.1, 3.1, 63)
+    for k in sorted((joints.index(v) for v in factor.free_symbols), reverse=True):
+        value = sympy.lambdify([joints[k]], factor.xreplace({v: q[j] for j, v in enumerate(joints) if j != k}))
+        crossing = next(((a, b) for a, b in zip(grid, grid[1:]) if value(a) * value(b) <= 0), None)
+        if crossing is None:
+            continue
+        below, above = crossing
+        for _ in range(60):
+            middle = (below + above) / 2
+            below, above = (middle, above) if value(below) * value(middle) > 0 else (below, middle)
+        q[k] = (below + above) / 2
+        return
+    raise AssertionError(f"no joint puts {factor} at 0")
 
 
 def test_the_latex_says_the_singularity_in_words():

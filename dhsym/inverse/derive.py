@@ -55,7 +55,7 @@ def derive(chain: Chain, free=(), *, sample=None, numbers: WrittenNumbers | None
                                              derivation.signs)
     nonzero = {c for c in problem.constants if sample.get(c, 1) != 0}
     explain_cases(chain, derivation, found.definitions, sample, numbers, nonzero,
-                  tie=bool(problem.structure.wrist) and len(unknowns) == 6 and chain.n == 6)
+                  tie=len(unknowns) == 6 and chain.n == 6)
     conditions, method = list(derivation.conditions), found.method
     if len(unknowns) < 6:
         used = _used_elements(definitions, assignments, chain)

@@ -7,7 +7,7 @@ the printers write as the robot file numbers it.
 >>> import sympy
 >>> D, t2 = sympy.symbols("D theta_2", real=True)
 >>> Exists(1 - D**2, unknown=t2)
-Exists(expression=1 - D**2, relation='>=', unknown=theta_2, singular=None)
+Exists(expression=1 - D**2, relation='>=', unknown=theta_2, singular=())
 >>> Undetermined((sympy.sin(t2),), t2, LinedUp(t2)).reason.said
 False
 """
@@ -54,13 +54,14 @@ class Singular(KeepsForm):
 @dataclass(frozen=True)
 class Exists(KeepsForm):
     """`expression relation 0` (the argument of a square root ≥ 0); `unknown`: what has no real
-    value otherwise (the target out of reach), where that is said; `singular`: the factor of det J
-    (a Singular) that vanishes where the expression is 0 and the two roots meet, where one does."""
+    value otherwise (the target out of reach), where that is said; `singular`: the factors of det J
+    (a Singular each) whose product vanishes exactly where the expression is 0 and the two roots
+    meet (Stanford's x_c² + y_c² − d2² is d3² s2²), where there are such factors."""
 
     expression: sympy.Expr
     relation: str = ">="
     unknown: sympy.Expr | None = None
-    singular: Singular | None = None
+    singular: tuple[Singular, ...] = ()
 
 
 @dataclass(frozen=True)

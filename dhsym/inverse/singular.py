@@ -14,6 +14,7 @@ milliseconds where det A takes most of the time (the same factors `dhsym jacobia
 """
 from __future__ import annotations
 
+import itertools
 import random
 from dataclasses import replace
 from types import SimpleNamespace
@@ -73,9 +74,9 @@ def tie_to_jacobian(chain: Chain, derivation, definitions, sample, numbers) -> N
             derivation.degenerate[index] = replace(derivation.degenerate[index], singular=said[matched[0]])
     names = _in_joints(chain, definitions, derivation)
     for k in meeting:
-        factor = meeting_factor(chain, derivation.conditions[k].expression.xreplace(names), factors, sample)
-        if factor is not None:
-            derivation.conditions[k] = replace(derivation.conditions[k], singular=said[factor])
+        product = meeting_factors(chain, derivation.conditions[k].expression.xreplace(names), factors, sample)
+        if product:
+            derivation.conditions[k] = replace(derivation.conditions[k], singular=tuple(said[f] for f in product))
 
 
 def _in_joints(chain: Chain, definitions, derivation) -> dict:
@@ -89,22 +90,27 @@ def _in_joints(chain: Chain, definitions, derivation) -> dict:
     return names
 
 
-def meeting_factor(chain: Chain, side, factors, sample, trials: int = 3):
-    """The factor f of det J with `side` (an existence condition's left side, in the joint variables)
-    equal to k f², k free of the joints: the two roots meet exactly where f = 0. Tried in numbers at
-    a few poses first, then proven by algebra: both sides in cos and sin of each joint, reduced by
-    sin² + cos² = 1 (a normal form: two trigonometric polynomials are equal exactly when theirs are)."""
+def meeting_factors(chain: Chain, side, factors, sample, trials: int = 3) -> tuple:
+    """The factors f1 … fm of det J with `side` (an existence condition's left side, in the joint
+    variables) equal to k (f1 ⋯ fm)², k free of the joints: the two roots meet exactly where one of
+    them is 0 (the PUMA's a3² + d4² − K² is (d4 c3 + a3 s3)², Stanford's x_c² + y_c² − d2² is
+    d3² s2²). Tried in numbers at a few poses first, the fewest factors first, then proven by algebra:
+    both sides in cos and sin of each joint, reduced by sin² + cos² = 1 (a normal form: two
+    trigonometric polynomials are equal exactly when theirs are). () where no product is."""
     rng = random.Random(5)
     points = [sample_values(chain, rng, sample) for _ in range(trials)]
     ring = _Ring(chain.joint_variables)
-    sides = [float(side.xreplace(values)) for values in points]  # once, for every factor
-    for factor in factors:
-        ratios = [_ratio(value, factor, values) for value, values in zip(sides, points)]
-        if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
-            continue
-        if ring.multiple(side, factor ** 2):
-            return factor
-    return None
+    sides = [float(side.xreplace(values)) for values in points]  # once, for every product
+    joined = [f for f in factors if f.free_symbols & set(chain.joint_variables)]
+    for size in range(1, len(joined) + 1):
+        for product in itertools.combinations(joined, size):
+            square = sympy.Mul(*product) ** 2
+            ratios = [_ratio(value, square, values) for value, values in zip(sides, points)]
+            if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
+                continue
+            if ring.multiple(side, square):
+                return product
+    return ()
 
 
 class _Ring:
@@ -226,9 +232,9 @@ def _proportional(top, other, trig: int) -> bool:
     return bool(mine) and top * theirs == other * mine
 
 
-def _ratio(side: float, factor, values) -> float | None:
-    square = float(factor.xreplace(values)) ** 2
-    return None if abs(square) < 1e-12 else side / square
+def _ratio(side: float, square, values) -> float | None:
+    value = float(square.xreplace(values))
+    return None if abs(value) < 1e-12 else side / value
 
 
 def wrist_factors(chain: Chain, numbers, sample=None) -> list:

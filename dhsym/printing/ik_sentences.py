@@ -93,10 +93,12 @@ class SentenceWriting:
     def _print_Exists(self, said):
         if said.unknown is None:
             return self._said(Relation(said.expression, said.relation))
-        if said.singular is None:
+        if not said.singular:
             meet = "; where it is 0 the two roots meet)"
+        elif len(said.singular) == 1:
+            meet = ("); where it is 0 the two roots meet, ", self._singular(said.singular[0]))
         else:
-            meet = ("); where it is 0 the two roots meet, ", self._singular(said.singular))
+            meet = ("); where it is 0 the two roots meet, ", self._singulars(said.singular))
         return self._said(Relation(said.expression, said.relation), " (else ", Math(said.unknown),
                           " has no real value: the target is out of reach", meet)
 
@@ -105,6 +107,15 @@ class SentenceWriting:
         meaning = () if not singular.template else (
             ", ", singular.template.format(*(self._joint(j) for j in singular.joints)))
         return ("a singularity of J: the factor ", Math(singular.factor), " of det J", meaning)
+
+    def _singulars(self, singulars) -> tuple:
+        """'singularities of J: the factors d3 (joint 3 retracted …) and s2 (axes 1 and 4 …) of det J'."""
+        named = []
+        for singular in singulars:
+            meaning = () if not singular.template else (
+                " (", singular.template.format(*(self._joint(j) for j in singular.joints)), ")")
+            named.append((Math(singular.factor), *meaning))
+        return ("singularities of J: the factors ", *_listed(named[:-1]), " and ", named[-1], " of det J")
 
     def _print_RealRoot(self, said):
         return self._said("quartic root k (for ", Math(said.joint), f") exists where the root {said.root.name} of the "
