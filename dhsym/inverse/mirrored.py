@@ -66,13 +66,23 @@ def _book_pair(pool, option, derivation, settings):
     if not sines:
         return None
     found = []
+    pool = [equation for equation in pool if _may_share(equation.expr, variable, sines)]
     for other in pairs_for(pool, variable, settings, lambda c: _shares(c.form, sines)):
         forms = tuple(c.form for c in other.candidates)
+        if found and sum(sympy.count_ops(x) for form in forms for x in form) > min(found)[0]:
+            continue  # its atan2 is built from products of these terms: it prints no shorter, and tidying it costs
         value = sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms), set(constants))
         signed = sine_as_sign(value, derivation)
         if signed is not value:
             found.append((sympy.count_ops(signed), len(found), other, signed))
     return min(found, key=lambda item: item[:2])[2:] if found else None
+
+
+def _may_share(expr, variable, sines) -> bool:
+    """Whether every term of `expr` that turns with `variable` holds one same sine: a test on the
+    equation as it stands, before its form is worked out, that spares the forms _shares rejects."""
+    turning = [term for term in sympy.Add.make_args(expr) if term.has(sympy.cos(variable), sympy.sin(variable))]
+    return bool(turning) and any(all(term.has(sine) for term in turning) for sine in sines)
 
 
 def _shares(form, sines) -> bool:
