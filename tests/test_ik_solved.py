@@ -93,11 +93,11 @@ def test_the_puma_derivation_compiles_and_fits(tmp_path, kind):
 
 
 def test_branch_names_that_say_the_root_compile_in_the_sign_table_and_as_titles(tmp_path):
-    status, out, _ = run_dhsym("latex", "asokan_dh_example", "--ik", "--document", "slides")
-    assert status == 0 and "4 & $-$ & $-$ & shoulder back, elbow $-\\surd$ \\\\" in out
+    status, out, _ = run_dhsym("latex", "iiwa7", "--ik", "--free", "theta_3", "--document", "slides")
+    assert status == 0 and "8 & $-$ & $-$ & $-$ & elbow $-\\surd$, shoulder back, wrist flipped \\\\" in out
     assert _pdflatex(tmp_path, "slides", out) == (0, [])
-    status, out, _ = run_dhsym("latex", "asokan_dh_example", "--ik", "--document", "article")
-    assert status == 0 and "Branch 4: shoulder back, elbow $-\\surd$" in out
+    status, out, _ = run_dhsym("latex", "iiwa7", "--ik", "--free", "theta_3", "--document", "article")
+    assert status == 0 and "Branch 8: elbow $-\\surd$, shoulder back, wrist flipped" in out
     assert _pdflatex(tmp_path, "article", out) == (0, [])
 
 
@@ -155,18 +155,20 @@ def test_shoulder_and_elbow_names_are_what_the_arm_does(name, frames):
     """Seen from above (z0 up): 'shoulder left' puts the arm's plane left of the line from axis 1
     to the wrist, 'elbow up' puts the elbow above the line from the shoulder to the wrist: checked
     at random poses from the frames' positions (frames: the one on axis 2, on axis 3, the wrist's).
-    The UR5's elbow is not above or below that line in a whole branch: its name says the root."""
+    The UR5's elbow is not above or below that line in a whole branch: its words say the way it
+    bends, the elbow left of the line from the shoulder to axis 4 seen with z0 up and x1 right."""
     import sympy
 
     chain, result = _solved(name)
     constants = sample_constants(chain)
     values = {s: constants[s.name] for s in chain.symbols if s.name in constants}
-    at = {k: sympy.lambdify(chain.joint_variables, chain.transform(0, k).subs(values), "numpy") for k in frames}
+    at = {k: sympy.lambdify(chain.joint_variables, chain.transform(0, k).subs(values), "numpy")
+          for k in {*frames, 1, 3}}
     fk = numeric_fk(chain, constants)
     names = [branch.name for branch in result.branches]
     words = {part for n in names for part in n.split(", ")}
     assert {"shoulder left", "shoulder right"} <= words
-    assert ({"elbow up", "elbow down"} <= words) == (name == "puma560")
+    assert {"elbow up", "elbow down"} <= words
     for q in random_joints(chain, np.random.default_rng(8), 6):
         for branch, joints in zip(names, result.evaluate(np.array(fk(*q), dtype=float))):
             if np.isnan(joints).any():
@@ -179,6 +181,10 @@ def test_shoulder_and_elbow_names_are_what_the_arm_does(name, frames):
             ahead = reach - (reach @ up) * up
             ahead /= np.linalg.norm(ahead)
             above = (bend @ up) * (reach @ ahead) - (reach @ up) * (bend @ ahead) > 0
+            if name == "ur5":
+                x1, axis4 = (np.array(at[k](*joints), float) for k in (1, 3))
+                right = x1[:3, 0] - (x1[:3, 0] @ up) * up
+                above = np.cross(axis4[:3, 3] - s, e - s) @ np.cross(right, up) > 0
             assert ("shoulder left" in branch) == left and ("shoulder right" in branch) == (not left), branch
             if "elbow up" in branch or "elbow down" in branch:
                 assert ("elbow up" in branch) == above and ("elbow down" in branch) == (not above), branch
