@@ -172,15 +172,11 @@ def _up(outward: bool):
     from the shoulder, or (`outward`) from axis 1. The two differ only when the wrist lies between
     axis 1 and a shoulder off it."""
     def measure(arm, frames, joint):
-        chain = arm.chain
-        up, shoulder, across = _shoulder(arm, frames)
-        if across is None or joint < 3 or chain.rows[joint - 1].joint != "R":
+        found = _elbow_plane(arm, frames, joint)
+        if found is None:
             return None
-        elbow, third = axis_line(chain, joint, frames)
-        if not _parallel(across, third):
-            return None
-        wrist = arm.elbow_wrist(frames, joint)[0]
-        start = axis_line(chain, 1, frames)[0] if outward else shoulder
+        up, shoulder, across, elbow, wrist = found
+        start = axis_line(arm.chain, 1, frames)[0] if outward else shoulder
         reach, bend, out = (minus(a, b) for a, b in ((wrist, shoulder), (elbow, shoulder), (wrist, start)))
         reach, bend, out = ([x - dot(across, v) * a for x, a in zip(v, across)] for v in (reach, bend, out))
         flat = _flat(out, up)
@@ -198,6 +194,21 @@ def _turned(arm, frames, joint):
     the arm bends, whichever side of axis 1 the wrist lies on. (An arm whose waist the orientation
     fixes, as a four-joint arm's, can reach over its back within a branch, where "above the line"
     would turn into "below".)"""
+    found = _elbow_plane(arm, frames, joint)
+    if found is None:
+        return None
+    up, shoulder, _, elbow, wrist = found
+    right = _flat([row[0] for row in frames[1][0]], up)
+    if norm(right) < TOLERANCE:
+        return None
+    toward_viewer = cross(right, up)
+    return dot(cross(minus(wrist, shoulder), minus(elbow, shoulder)), toward_viewer)
+
+
+def _elbow_plane(arm, frames, joint):
+    """(axis 1's direction, a point on axis 2, axis 2's direction, a point on the elbow's axis, the
+    elbow words' wrist point) where the elbow (joint `joint`, revolute) turns about an axis parallel
+    to axis 2 and axis 2 is perpendicular to axis 1; else None."""
     chain = arm.chain
     up, shoulder, across = _shoulder(arm, frames)
     if across is None or joint < 3 or chain.rows[joint - 1].joint != "R":
@@ -205,12 +216,7 @@ def _turned(arm, frames, joint):
     elbow, third = axis_line(chain, joint, frames)
     if not _parallel(across, third):
         return None
-    right = _flat([row[0] for row in frames[1][0]], up)
-    if norm(right) < TOLERANCE:
-        return None
-    wrist = arm.elbow_wrist(frames, joint)[0]
-    toward_viewer = cross(right, up)
-    return dot(cross(minus(wrist, shoulder), minus(elbow, shoulder)), toward_viewer)
+    return up, shoulder, across, elbow, arm.elbow_wrist(frames, joint)[0]
 
 
 def _left(arm, frames, joint):
