@@ -104,18 +104,17 @@ class SentenceWriting:
 
     def _singular(self, singular) -> tuple:
         """'a singularity of J: the factor s5 of det J, wrist: axes 4 and 6 line up'."""
-        meaning = () if not singular.template else (
-            ", ", singular.template.format(*(self._joint(j) for j in singular.joints)))
-        return ("a singularity of J: the factor ", Math(singular.factor), " of det J", meaning)
+        meaning = (", ", self._meaning(singular)) if singular.template else ()
+        return ("a singularity of J: the factor ", Math(singular.factor), " of det J", *meaning)
 
     def _singulars(self, singulars) -> tuple:
         """'singularities of J: the factors d3 (joint 3 retracted …) and s2 (axes 1 and 4 …) of det J'."""
-        named = []
-        for singular in singulars:
-            meaning = () if not singular.template else (
-                " (", singular.template.format(*(self._joint(j) for j in singular.joints)), ")")
-            named.append((Math(singular.factor), *meaning))
+        named = [(Math(s.factor), *((" (", self._meaning(s), ")") if s.template else ())) for s in singulars]
         return ("singularities of J: the factors ", *_listed(named[:-1]), " and ", named[-1], " of det J")
+
+    def _meaning(self, singular) -> str:
+        """What a factor of det J means, with the joints numbered as printed ('' where it is not said)."""
+        return singular.template.format(*(self._joint(j) for j in singular.joints)) if singular.template else ""
 
     def _print_RealRoot(self, said):
         return self._said("quartic root k (for ", Math(said.joint), f") exists where the root {said.root.name} of the "
