@@ -27,6 +27,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import sympy
+from sympy.core.cache import cacheit
 
 from .transforms import Step, product, rotation
 
@@ -92,10 +93,18 @@ def split_into_blocks(steps) -> list[Block]:
 
 def block_matrix(block: Block) -> sympy.Matrix:
     """Closed form of one block: rotation F·Rz(φ)·Rx(π)^flip, origin F·Σ Rz(φ_k)·v_k."""
+    return _block_matrix(tuple(block.lead), tuple(block.body)).as_mutable()
+
+
+# A derivation asks for the same blocks many times (its estimates, its transforms, its Jacobian: the
+# PUMA's inverse kinematics 98 times for 23 blocks). SymPy's own cache keeps them, so that
+# sympy.core.cache.clear_cache() forgets them with everything else.
+@cacheit
+def _block_matrix(lead: tuple, body: tuple) -> sympy.ImmutableMatrix:
     angle, flipped = sympy.Integer(0), False
     origin = [sympy.Integer(0)] * 3
     sign = lambda value: -value if flipped else value  # noqa: E731 - a twist of π mirrors y and z
-    for step in block.body:
+    for step in body:
         if step.kind == "Rz":
             angle += sign(step.value)
         elif step.is_rotation:
@@ -108,10 +117,9 @@ def block_matrix(block: Block) -> sympy.Matrix:
             v[step.axis] = step.value if step.kind == "Tx" else sign(step.value)
             c, s = sympy.cos(angle), sympy.sin(angle)
             origin = [origin[0] + v[0] * c - v[1] * s, origin[1] + v[0] * s + v[1] * c, origin[2] + v[2]]
-    lead = product(block.lead)
-    body = rotation(2, angle) * (rotation(0, sympy.pi) if flipped else sympy.eye(4))
-    body[:3, 3] = sympy.Matrix(origin)
-    return lead * body
+    rotated = rotation(2, angle) * (rotation(0, sympy.pi) if flipped else sympy.eye(4))
+    rotated[:3, 3] = sympy.Matrix(origin)
+    return sympy.ImmutableMatrix(product(lead) * rotated)
 
 
 def compose(outer: sympy.Matrix, inner: sympy.Matrix, atoms) -> sympy.Matrix:
