@@ -25,6 +25,7 @@ from dataclasses import replace
 
 import sympy
 
+from ..core.size import operations
 from . import subproblems as sp
 from .ranking import pairs_for
 from .rules import sign_of, sine_as_sign, solve_rule
@@ -41,7 +42,7 @@ def solve_round(pool, option, derivation, settings, last=()) -> sympy.Expr:
     through = solve_rule(option.rule, option.candidates, _scratch(derivation), constants, memos, witness)
     signs = {sigma for sigma, _, _ in derivation.signs}
     book = None if through.free_symbols & signs else _book_pair(pool, option, derivation, settings)
-    if book is None or sympy.count_ops(book[1]) >= sympy.count_ops(through):
+    if book is None or operations(book[1]) >= operations(through):
         return solve_rule(option.rule, option.candidates, derivation, constants, memos, witness)
     cases = len(derivation.degenerate)
     value = solve_rule("pair", book[0].candidates, derivation, constants, memos, witness)
@@ -69,12 +70,12 @@ def _book_pair(pool, option, derivation, settings):
     pool = [equation for equation in pool if _may_share(equation.expr, variable, sines)]
     for other in pairs_for(pool, variable, settings, lambda c: _shares(c.form, sines)):
         forms = tuple(c.form for c in other.candidates)
-        if found and sum(sympy.count_ops(x) for form in forms for x in form) > min(found)[0]:
+        if found and sum(operations(x) for form in forms for x in form) > min(found)[0]:
             continue  # its atan2 is built from products of these terms: it prints no shorter, and tidying it costs
         value = sp.pair(*forms, memos.remember(memos.signs, forms, sp.determinant_sign, *forms), set(constants))
         signed = sine_as_sign(value, derivation)
         if signed is not value:
-            found.append((sympy.count_ops(signed), len(found), other, signed))
+            found.append((operations(signed), len(found), other, signed))
     return min(found, key=lambda item: item[:2])[2:] if found else None
 
 

@@ -22,7 +22,7 @@ from dataclasses import replace
 
 import sympy
 
-from ..core.size import length
+from ..core.size import length, operations
 from . import algebra
 from . import subproblems as sp
 from .candidates import touches
@@ -140,7 +140,7 @@ def by_one_equation(candidates, derivation, constants, memos, witness=None) -> s
     shape = "A"
     if not single and c != 0:  # the book's form: the equation's sign and the atan2 identity that print shortest
         a, b, c, shape = min(sp.book_variants(a, b, c, sigma),
-                             key=lambda v: sympy.count_ops(v[4]) + sympy.count_ops(v[2]))[:4]
+                             key=lambda v: operations(v[4]) + operations(v[2]))[:4]
     law = law_of_cosines(c, first.equation, constants) if label == "law of cosines" else None
     c = _named(derivation, letter(label, first.equation), c)
     if law is not None and c.is_Symbol:

@@ -22,7 +22,7 @@ import math
 
 import sympy
 
-from ..core.size import length
+from ..core.size import length, operations
 from . import algebra
 from .sentences import LinedUp, Undetermined
 from .turned import turned_pair
@@ -183,7 +183,7 @@ def pair(first, second, sign: int | None | str = "unknown", constants=frozenset(
     if turned is not None:
         single = sympy.atan2(_tidy(sin_part), _tidy(cos_part)) if algebra.expand(a1 * b2 - a2 * b1).is_positive \
             else None
-        return min(filter(None, (turned, single)), key=sympy.count_ops)
+        return min(filter(None, (turned, single)), key=operations)
     if sign is None:  # atan2(s·det², c·det²) = atan2(s, c): det² > 0 wherever det ≠ 0
         det = a1 * b2 - a2 * b1
         return sympy.atan2(_tidy(sin_part * det), _tidy(cos_part * det))

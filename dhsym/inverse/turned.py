@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import sympy
 
+from ..core.size import operations
 from . import algebra
 
 
@@ -35,7 +36,7 @@ def turned_pair(first, second, constants=frozenset(), tidy=lambda expr: expr):
                         for stretch in _angles(-sign * b1, sign * a1, tidy):
                             form = target - stretch
                             stretched = any(_is_stretch(angle, constants) for angle in form.atoms(sympy.atan2))
-                            found.append((sympy.count_ops(form), not stretched, _minus_signs(form), form))
+                            found.append((operations(form), not stretched, _minus_signs(form), form))
     best = min(found, key=lambda option: option[:3], default=None)
     return best[-1] if best and not best[1] else None  # a stretch as the elbow's triangle has it, else one atan2
 
