@@ -13,7 +13,7 @@ from ik_checks import numeric_fk, random_joints, sample_constants
 from robots import PITCH_ARM
 
 from dhsym import load
-from dhsym.inverse.sentences import Exists, Undetermined
+from dhsym.inverse.sentences import Exists, OnAxis, Undetermined
 from dhsym.inverse.unreachable import contradicts
 from dhsym.latex.ik import snippet
 
@@ -168,4 +168,34 @@ def test_the_generated_ik_of_a_four_joint_arm_gives_nan_off_its_plane(tmp_path):
 
 def test_the_iiwa_with_its_first_joint_free_names_s4_zero():
     text = _flat(_ik("iiwa7", "--free", "theta_1"))
-    assert "s4 = 0: θ3 is not determined by this equation" in text
+    assert "s4 = 0: θ3 is not determined (the wrist centre on axis 3)" in text  # the elbow stretched
+
+
+@pytest.mark.parametrize("name, words, point, axis", [
+    ("planar2r", "px = 0 and py = 0: θ1 is not determined (the end point on axis 1)", 2, 0),
+    ("planar3r", "θ1 is not determined (the origin of frame 3 on axis 1)", 3, 0),
+    ("puma560", "px c1 + py s1 = 0 and pz = 0: θ2 + θ3 is not determined (the wrist centre on axis 2)", 4, 2),
+    ("ur5", "a2 + a3 c3 = 0 and a3 s3 = 0: θ2 is not determined (the origin of frame 3 on axis 2)", 3, 1)])
+def test_a_case_said_on_an_axis_is_where_that_point_lies_on_it(name, words, point, axis):
+    # The test's own geometry: the origin of frame `point` and the z axis of frame `axis` in numbers,
+    # at random poses; the case's expressions are all 0 exactly where the distance between them is:
+    # their sum of squares is a constant times the distance squared.
+    robot = load(name)
+    assert words in _flat(_ik(name))
+    solution = robot.ik().solution
+    (case,) = [c for c in solution.degenerate if isinstance(c, Undetermined) and isinstance(c.reason, OnAxis)]
+    chain, constants = robot.chain, sample_constants(robot)
+    known = {s: constants[s.name] for s in chain.symbols if s.name in constants}
+    joints = list(chain.joint_variables)
+    where = sympy.lambdify(joints, chain.transform(chain.frames[axis], chain.frames[point]).subs(known), "numpy")
+    fk = numeric_fk(robot, constants)
+    names = ["r11", "r12", "r13", "px", "r21", "r22", "r23", "py", "r31", "r32", "r33", "pz"]
+    rng, ratios = numpy.random.default_rng(4), []
+    for q in random_joints(chain, rng, 5):
+        pose = numpy.array(fk(*q), dtype=float)
+        values = {**{v: q[k] for k, v in enumerate(joints)}, **known,
+                  **{sympy.Symbol(n, real=True): pose[k // 4, k % 4] for k, n in enumerate(names)}}
+        side = sum(float(e.xreplace(values)) ** 2 for e in case.condition)
+        x, y = numpy.array(where(*q), dtype=float)[:2, 3]
+        ratios.append(side / (x * x + y * y))
+    assert numpy.ptp(ratios) < 1e-9 * max(ratios) and min(ratios) > 0, ratios

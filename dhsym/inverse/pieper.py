@@ -31,7 +31,7 @@ from ..errors import UserError
 from .fresh import fresh, fresh_symbol
 from .quartic import SIGNS, Complex, ferrari
 from .scan import Derivation
-from .sentences import CentreOnAxis, Joint, RealRoot, RootAtPi, Subproblem, Undetermined
+from .sentences import Joint, OnAxis, RealRoot, RootAtPi, Subproblem, Undetermined
 from .solution import DerivationStep
 from .written import Written, exact
 
@@ -175,8 +175,8 @@ def _say(derivation: Derivation, shape: _Arm, arm, names, length) -> None:
                        ("its y (equation 2 of 2)",)),
     ]
     derivation.conditions.append(RealRoot(t3, u))
-    derivation.degenerate += [Undetermined((f1 ** 2 + f2 ** 2,), t2, CentreOnAxis(shape.joints[1])),
-                              Undetermined((g1 ** 2 + g2 ** 2,), t1, CentreOnAxis(shape.joints[0])),
+    derivation.degenerate += [Undetermined((f1 ** 2 + f2 ** 2,), t2, OnAxis(shape.joints[1])),
+                              Undetermined((g1 ** 2 + g2 ** 2,), t1, OnAxis(shape.joints[0])),
                               RootAtPi(a4, t3, u)]
 
 

@@ -117,16 +117,20 @@ class LinedUp(KeepsForm):
 
 
 @dataclass(frozen=True)
-class CentreOnAxis:
-    """Pieper's case: the wrist centre lies on the axis of `joint` (1..n)."""
+class OnAxis:
+    """A point of the arm lies on the axis of `joint` (1..n): `point` "wrist centre" (Pieper's case,
+    the PUMA's θ2 + θ3), "end point" (the planar 2R's px = 0 and py = 0) or "frame" (the origin of
+    frame `frame`, the planar 3R's wrist)."""
 
     joint: int
+    point: str = "wrist centre"
+    frame: int | None = None
 
 
 @dataclass(frozen=True)
 class Undetermined(KeepsForm):
     """Where every expression of `condition` is 0, `unknown` (a joint variable or a sum of
-    angles) is not determined, for the `reason` given (ByEquations, LinedUp, CentreOnAxis);
+    angles) is not determined, for the `reason` given (ByEquations, LinedUp, OnAxis);
     `singular`: the factor of det J that the condition is (a Singular), where it is one;
     `member`: [(joint, value)] a numeric evaluation takes there instead of the branch's value
     (the wrist's θ6 through θ4 where the books' atan2(σ r32, −σ r31) is atan2(0, 0))."""

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import sympy
 from sympy.printing.str import StrPrinter
 
-from ..inverse.sentences import ByEquations, CentreOnAxis, Frame, Joint, LinedUp
+from ..inverse.sentences import ByEquations, Frame, Joint, LinedUp, OnAxis
 from ..inverse.written import exact_but_named
 from . import render
 from .ik_words import meaning_text
@@ -135,8 +135,9 @@ class SentenceWriting:
         reason = said.reason
         if isinstance(reason, ByEquations):
             why = " by this equation" if reason.count == 1 else " by these equations"
-        elif isinstance(reason, CentreOnAxis):
-            why = (" (the wrist centre on axis ", Joint(reason.joint), ")")
+        elif isinstance(reason, OnAxis):
+            point = ("the origin of frame ", Frame(reason.frame)) if reason.point == "frame" else f"the {reason.point}"
+            why = (" (", point, " on axis ", Joint(reason.joint), ")")
         else:
             why = (" on its own: the axes on either side of ", Math(_joint_symbol(reason.angle)), " line up, and ",
                    self._lined_up(reason), ", a one-parameter family (a numeric evaluation gives one member",

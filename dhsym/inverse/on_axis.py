@@ -1,0 +1,85 @@
+"""Where a degenerate case is a point of the arm on a joint's axis, as a lecturer says it: the
+planar 2R's θ1 is not determined where px = 0 and py = 0, the end point on axis 1; the PUMA's
+θ2 + θ3 where px c1 + py s1 = 0 and pz = 0, the wrist centre on axis 2: turning about that axis
+does not move the point, so the equations cannot tell its angle.
+
+A case α = 0 and β = 0 says so where α² + β² = k·d² with k a constant, d the distance of the point
+from the axis of a joint the case leaves undetermined: the expressions are all 0 exactly where the
+point lies on that axis. Tried in numbers at a few poses first, then proven in the ring of the
+joints' cos and sin (dhsym.inverse.joint_space). The points tried: the wrist centre, the end point,
+then the origins of the frames from the base out.
+
+>>> import dhsym
+>>> from dhsym.inverse import solve
+>>> case = solve(dhsym.load("planar2r").chain).degenerate[0]
+>>> case.condition, case.reason
+((px, py), OnAxis(joint=1, point='end point', frame=None))
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import replace
+
+import sympy
+
+from ..core.chain import Chain
+from ..velocity.geometry import sample_values, wrist_centre
+from ..velocity.jacobian import axis_frame
+from .joint_space import TrigRing, in_joints, ratio_at
+from .sentences import ByEquations, OnAxis, Undetermined
+
+TRIALS = 3  # poses at which the two sides must be in one ratio before the proof is tried
+
+
+def say_on_axis(chain: Chain, derivation, definitions, sample) -> None:
+    """Give each degenerate case (ByEquations) that is a point on the axis of a joint it leaves
+    undetermined that reason instead. `chain` has frames 0..n; `definitions` the shared names before
+    the derivation's; `sample` the robot file's numbers for its constants."""
+    cases = [(k, case) for k, case in enumerate(derivation.degenerate)
+             if isinstance(case, Undetermined) and isinstance(case.reason, ByEquations)]
+    if not cases:
+        return
+    names = in_joints(chain, definitions, derivation)
+    rng = random.Random(11)
+    poses = [sample_values(chain, rng, sample) for _ in range(TRIALS)]
+    ring, points = TrigRing(chain.joint_variables), _points(chain, sample)
+    for index, case in cases:
+        used = set().union(*(e.free_symbols for e in case.condition))
+        if not used <= set(names) | set(poses[0]):  # a sign σ, or a name not in the joints: no point
+            continue
+        at = [values | {n: float(names[n].xreplace(values)) for n in used & names.keys()} for values in poses]
+        sides = [sum(float(e.xreplace(numbers)) ** 2 for e in case.condition) for numbers in at]
+        said = _on_axis(chain, case, names, sides, poses, ring, points)
+        if said is not None:
+            derivation.degenerate[index] = replace(case, reason=said)
+
+
+def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> OnAxis | None:
+    """The first (joint, point) where Σ expression² is the point's distance² from the axis times a
+    constant: in numbers at `poses` (where the sides are `sides`), then by algebra."""
+    side = None
+    for joint in [k + 1 for k, v in enumerate(chain.joint_variables) if v in case.unknown.free_symbols]:
+        line = axis_frame(chain, joint)
+        for point, frame in points:
+            if chain.frames.index(frame) <= chain.frames.index(line):
+                continue  # a frame before the axis: the joint does not move it
+            x, y = chain.transform(line, frame)[:2, 3]
+            square = x ** 2 + y ** 2  # in the axis's own frame the axis is z: the distance is x, y
+            ratios = [ratio_at(value, square, values) for value, values in zip(sides, poses)]
+            if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
+                continue
+            side = side if side is not None else sympy.Add(*[sympy.expand(e.xreplace(names)) ** 2
+                                                             for e in case.condition])
+            if ring.multiple(side, square):
+                return OnAxis(joint, point, frame if point == "frame" else None)
+    return None
+
+
+def _points(chain: Chain, sample) -> list:
+    """[(point, frame)]: the wrist centre (where the last three axes meet), the end point, then the
+    origins of the other frames from the base out (the UR5's wrist point, frame 3, before frame 4)."""
+    centre = wrist_centre(chain, sample=sample)
+    last = chain.frames[-1]
+    points = [("wrist centre", centre)] if centre is not None else []
+    points += [("end point", last)] if last != centre else []
+    return points + [("frame", f) for f in chain.frames[1:-1] if f != centre]
