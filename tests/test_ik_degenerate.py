@@ -10,6 +10,7 @@ import pytest
 import sympy
 from cli_runner import run_dhsym
 from ik_checks import numeric_fk, random_joints, sample_constants
+from packages import EXAMPLE_ROBOT_DATA
 from robots import PITCH_ARM
 
 from dhsym import load
@@ -199,3 +200,17 @@ def test_a_case_said_on_an_axis_is_where_that_point_lies_on_it(name, words, poin
         x, y = numpy.array(where(*q), dtype=float)[:2, 3]
         ratios.append(side / (x * x + y * y))
     assert numpy.ptp(ratios) < 1e-9 * max(ratios) and min(ratios) > 0, ratios
+
+
+def test_a_case_the_files_numbers_keep_off_the_axis_is_not_printed(tmp_path):
+    # The UR10 of example-robot-data: its origin of frame 3 is 0.612 and 0.5723 from axis 2 along its
+    # two links, never on it; the UR5 written with names keeps the case (a2 = a3 would meet it).
+    urdf = EXAMPLE_ROBOT_DATA / "ur_description" / "urdf" / "ur10_robot.urdf"
+    if not urdf.exists():
+        pytest.skip("example-robot-data is not installed")
+    robot = tmp_path / "ur10.yaml"
+    result = run_dhsym("import", str(urdf), "--tip", "tool0", "-o", str(robot))
+    assert result.status == 0, result.stderr
+    text = _flat(_ik(str(robot)))
+    assert "Degenerate: s5 = 0" in text and "c3 = 0 and" not in text
+    assert "a2 + a3 c3 = 0 and a3 s3 = 0: θ2 is not determined (the origin of frame 3 on axis 2)" in _flat(_ik("ur5"))

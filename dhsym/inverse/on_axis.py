@@ -7,7 +7,10 @@ A case α = 0 and β = 0 says so where α² + β² = k·d² with k a constant, d
 from the axis of a joint the case leaves undetermined: the expressions are all 0 exactly where the
 point lies on that axis. Tried in numbers at a few poses first, then proven in the ring of the
 joints' cos and sin (dhsym.inverse.joint_space). The points tried: the wrist centre, the end point,
-then the origins of the frames from the base out.
+then the origins of the frames from the base out. Where the robot file's own numbers keep the point
+off the axis in every pose (the UR10's origin of frame 3, 0.612 and 0.5723 from axis 2 along its two
+links), no pose meets the case, and it is not printed, as dhsym.inverse.unreachable leaves out the
+cases no reachable target meets.
 
 >>> import dhsym
 >>> from dhsym.inverse import solve
@@ -27,6 +30,7 @@ from ..velocity.geometry import sample_values, wrist_centre
 from ..velocity.jacobian import axis_frame
 from .joint_space import TrigRing, in_joints, ratio_at
 from .sentences import ByEquations, OnAxis, Undetermined
+from .written import Written
 
 TRIALS = 3  # poses at which the two sides must be in one ratio before the proof is tried
 
@@ -42,21 +46,27 @@ def say_on_axis(chain: Chain, derivation, definitions, sample) -> None:
     names = in_joints(chain, definitions, derivation)
     rng = random.Random(11)
     poses = [sample_values(chain, rng, sample) for _ in range(TRIALS)]
-    ring, points = TrigRing(chain.joint_variables), _points(chain, sample)
+    ring, points, never = TrigRing(chain.joint_variables), _points(chain, sample), []
     for index, case in cases:
         used = set().union(*(e.free_symbols for e in case.condition))
         if not used <= set(names) | set(poses[0]):  # a sign σ, or a name not in the joints: no point
             continue
         at = [values | {n: float(names[n].xreplace(values)) for n in used & names.keys()} for values in poses]
         sides = [sum(float(e.xreplace(numbers)) ** 2 for e in case.condition) for numbers in at]
-        said = _on_axis(chain, case, names, sides, poses, ring, points)
-        if said is not None:
-            derivation.degenerate[index] = replace(case, reason=said)
+        found = _on_axis(chain, case, names, sides, poses, ring, points)
+        if found is not None and never_zero(found[1]):
+            never.append(index)
+        elif found is not None:
+            derivation.degenerate[index] = replace(case, reason=found[0])
+    kept = [k for k in range(len(derivation.degenerate)) if k not in never]
+    derivation.degenerate = [derivation.degenerate[k] for k in kept]
+    derivation.vanishing = [(expr, kept.index(k)) for expr, k in derivation.vanishing if k in kept]
 
 
-def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> OnAxis | None:
-    """The first (joint, point) where Σ expression² is the point's distance² from the axis times a
-    constant: in numbers at `poses` (where the sides are `sides`), then by algebra."""
+def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> tuple | None:
+    """(OnAxis, the distance² in the other joints) of the first joint and point where Σ expression² is the
+    point's distance² from the axis times a constant: in numbers at `poses` (where the sides are
+    `sides`), then by algebra."""
     side = None
     for joint in [k + 1 for k, v in enumerate(chain.joint_variables) if v in case.unknown.free_symbols]:
         line = axis_frame(chain, joint)
@@ -70,9 +80,38 @@ def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> OnAxis | 
                 continue
             side = side if side is not None else sympy.Add(*[sympy.expand(e.xreplace(names)) ** 2
                                                              for e in case.condition])
-            if ring.multiple(side, square):
-                return OnAxis(joint, point, frame if point == "frame" else None)
+            if ring.multiple(side, square):  # the distance holds the axis's own angle only as a turn about it
+                turn = chain.joint_variables[joint - 1]
+                return OnAxis(joint, point, frame if point == "frame" else None), square.xreplace({turn: 0})
     return None
+
+
+def never_zero(square) -> bool:
+    """Whether a distance² in the robot file's own numbers (Written, exact) and at most one joint θ,
+    A + B cos θ + C sin θ once sin² is 1 − cos², is positive in every pose: A > √(B² + C²).
+
+    >>> t = sympy.Symbol("theta_3", real=True)
+    >>> a2, a3 = Written.of(sympy.Rational(612, 1000)), Written.of(sympy.Rational(5723, 10000))
+    >>> never_zero((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2), never_zero((a2 - a2 * sympy.cos(t))**2)
+    (True, False)
+    """
+    numbers = {s: s.value for s in square.free_symbols if isinstance(s, Written)}
+    joints = square.free_symbols - set(numbers)
+    if len(joints) > 1:
+        return False
+    value = sympy.expand(sympy.expand_trig(square.xreplace(numbers)))
+    if not joints:
+        return bool(value.is_Rational and value > 0)
+    (joint,) = joints
+    c, s = sympy.Dummy("c"), sympy.Dummy("s")
+    value = sympy.expand(value.xreplace({sympy.cos(joint): c, sympy.sin(joint): s}).subs(s ** 2, 1 - c ** 2))
+    if value.has(joint):
+        return False
+    poly = sympy.Poly(value, c, s)
+    if poly.total_degree() > 1 or not all(k.is_Rational for k in poly.coeffs()):
+        return False
+    a, b, k = (poly.coeff_monomial(m) for m in (1, c, s))
+    return bool(a > 0 and a ** 2 > b ** 2 + k ** 2)
 
 
 def _points(chain: Chain, sample) -> list:
