@@ -10,13 +10,14 @@ joints' cos and sin (dhsym.inverse.joint_space). The points tried: the wrist cen
 then the origins of the frames from the base out. Where the robot file's own numbers keep the point
 off the axis in every pose (the UR10's origin of frame 3, 0.612 and 0.5723 from axis 2 along its two
 links), no pose meets the case, and it is not printed, as dhsym.inverse.unreachable leaves out the
-cases no reachable target meets.
+cases no reachable target meets. Where names stand for the numbers, the case says the relation
+between them that it needs (the UR5's a2² = a3²: its two links of one length, folded).
 
 >>> import dhsym
 >>> from dhsym.inverse import solve
 >>> case = solve(dhsym.load("planar2r").chain).degenerate[0]
 >>> case.condition, case.reason
-((px, py), OnAxis(joint=1, point='end point', frame=None))
+((px, py), OnAxis(joint=1, point='end point', frame=None, only=(a_1**2, a_2**2)))
 """
 from __future__ import annotations
 
@@ -54,10 +55,11 @@ def say_on_axis(chain: Chain, derivation, definitions, sample) -> None:
         at = [values | {n: float(names[n].xreplace(values)) for n in used & names.keys()} for values in poses]
         sides = [sum(float(e.xreplace(numbers)) ** 2 for e in case.condition) for numbers in at]
         found = _on_axis(chain, case, names, sides, poses, ring, points)
-        if found is not None and never_zero(found[1]):
+        if found is not None and never_zero(found[1], chain.joint_variables):
             never.append(index)
         elif found is not None:
-            derivation.degenerate[index] = replace(case, reason=found[0])
+            said = replace(found[0], only=only_where(found[1], chain.joint_variables))
+            derivation.degenerate[index] = replace(case, reason=said)
     kept = [k for k in range(len(derivation.degenerate)) if k not in never]
     derivation.degenerate = [derivation.degenerate[k] for k in kept]
     derivation.vanishing = [(expr, kept.index(k)) for expr, k in derivation.vanishing if k in kept]
@@ -86,32 +88,68 @@ def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> tuple | N
     return None
 
 
-def never_zero(square) -> bool:
-    """Whether a distance² in the robot file's own numbers (Written, exact) and at most one joint θ,
-    A + B cos θ + C sin θ once sin² is 1 − cos², is positive in every pose: A > √(B² + C²).
+def never_zero(square, joints) -> bool:
+    """Whether a distance² in the robot file's own numbers (Written, exact) and at most one of
+    `joints`, A + B cos θ + C sin θ, is positive in every pose: A > √(B² + C²).
 
     >>> t = sympy.Symbol("theta_3", real=True)
     >>> a2, a3 = Written.of(sympy.Rational(612, 1000)), Written.of(sympy.Rational(5723, 10000))
-    >>> never_zero((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2), never_zero((a2 - a2 * sympy.cos(t))**2)
-    (True, False)
+    >>> never_zero((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2, [t])
+    True
+    >>> never_zero((a2 - a2 * sympy.cos(t))**2, [t])   # folded back onto the axis at θ = 0
+    False
     """
     numbers = {s: s.value for s in square.free_symbols if isinstance(s, Written)}
-    joints = square.free_symbols - set(numbers)
-    if len(joints) > 1:
+    found = _turning(square.xreplace(numbers), joints)
+    if found is None or not all(k.is_Rational for k in found):
         return False
-    value = sympy.expand(sympy.expand_trig(square.xreplace(numbers)))
-    if not joints:
-        return bool(value.is_Rational and value > 0)
-    (joint,) = joints
+    a, b, k = found
+    return bool(a > 0 and a ** 2 > b ** 2 + k ** 2)
+
+
+def only_where(square, joints) -> tuple:
+    """(lhs, rhs): the constants' relation without which a distance² A + B cos θ + C sin θ (θ one of
+    `joints`, or none) is never 0, A² = B² + C² written as a book does; () where it is 0 in some
+    pose whatever the constants, or this cannot tell.
+
+    >>> t, a2, a3 = sympy.symbols("theta_3 a_2 a_3", real=True)
+    >>> only_where((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2, [t])
+    (a_2**2, a_3**2)
+    """
+    found = _turning(square.xreplace({s: s.value for s in square.free_symbols if isinstance(s, Written)}), joints)
+    if found is None or any(k.free_symbols & set(joints) for k in found):
+        return ()
+    a, b, k = found
+    gap = sympy.factor(a if b == k == 0 else a ** 2 - b ** 2 - k ** 2)
+    if gap.is_number:
+        return ()
+    coefficient, factors = sympy.factor_list(gap)
+    if coefficient > 0 and all(e % 2 == 0 for _, e in factors):  # a square: its root, as a book writes it
+        gap = sympy.Mul(*[f ** (e // 2) for f, e in factors])
+    terms = sympy.Add.make_args(sympy.expand(gap))
+    lhs = sympy.Add(*[t for t in terms if not t.could_extract_minus_sign()])
+    rhs = -sympy.Add(*[t for t in terms if t.could_extract_minus_sign()])
+    return (lhs, rhs) if lhs != 0 else (rhs, lhs)
+
+
+def _turning(square, joints) -> tuple | None:
+    """(A, B, C) with `square` = A + B cos θ + C sin θ (sin² read as 1 − cos²), θ the one of
+    `joints` it holds in a cos or sin; (square, 0, 0) where it holds none; None for anything else."""
+    held = square.free_symbols & set(joints)
+    if len(held) > 1:
+        return None
+    value = sympy.expand(sympy.expand_trig(square))
+    if not held:
+        return value, sympy.Integer(0), sympy.Integer(0)
+    (joint,) = held
     c, s = sympy.Dummy("c"), sympy.Dummy("s")
     value = sympy.expand(value.xreplace({sympy.cos(joint): c, sympy.sin(joint): s}).subs(s ** 2, 1 - c ** 2))
     if value.has(joint):
-        return False
+        return None
     poly = sympy.Poly(value, c, s)
-    if poly.total_degree() > 1 or not all(k.is_Rational for k in poly.coeffs()):
-        return False
-    a, b, k = (poly.coeff_monomial(m) for m in (1, c, s))
-    return bool(a > 0 and a ** 2 > b ** 2 + k ** 2)
+    if poly.total_degree() > 1:
+        return None
+    return tuple(poly.coeff_monomial(m) for m in (1, c, s))
 
 
 def _points(chain: Chain, sample) -> list:

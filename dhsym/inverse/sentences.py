@@ -120,11 +120,13 @@ class LinedUp(KeepsForm):
 class OnAxis:
     """A point of the arm lies on the axis of `joint` (1..n): `point` "wrist centre" (Pieper's case,
     the PUMA's θ2 + θ3), "end point" (the planar 2R's px = 0 and py = 0) or "frame" (the origin of
-    frame `frame`, the planar 3R's wrist)."""
+    frame `frame`, the planar 3R's wrist); `only`: (lhs, rhs), where the point gets there only if
+    lhs = rhs (the UR5's a2² = a3²)."""
 
     joint: int
     point: str = "wrist centre"
     frame: int | None = None
+    only: tuple = ()  # (lhs, rhs): the constants' relation without which the point never gets there
 
 
 @dataclass(frozen=True)

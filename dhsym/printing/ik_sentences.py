@@ -137,7 +137,8 @@ class SentenceWriting:
             why = " by this equation" if reason.count == 1 else " by these equations"
         elif isinstance(reason, OnAxis):
             point = ("the origin of frame ", Frame(reason.frame)) if reason.point == "frame" else f"the {reason.point}"
-            why = (" (", point, " on axis ", Joint(reason.joint), ")")
+            only = ("; only where ", Relation(reason.only[0], "=", reason.only[1])) if reason.only else ()
+            why = (" (", point, " on axis ", Joint(reason.joint), *only, ")")
         else:
             why = (" on its own: the axes on either side of ", Math(_joint_symbol(reason.angle)), " line up, and ",
                    self._lined_up(reason), ", a one-parameter family (a numeric evaluation gives one member",

@@ -8,11 +8,11 @@ sympy.sympify; the sentences as plain strings).
 >>> arm = dhsym.load("planar2r")
 >>> solution = solve(arm.chain, sample=arm.sample)
 >>> json_solution(solution, arm)["degenerate"]
-['px = 0 and py = 0: theta_1 is not determined (the end point on axis 1)']
+['px = 0 and py = 0: theta_1 is not determined (the end point on axis 1; only where a_1**2 = a_2**2)']
 >>> json_solution(solve(dhsym.load("puma560").chain), dhsym.load("puma560"))["angles_solved_as_one"]
 [['theta_23', 'theta_2 + theta_3']]
 >>> print(text_solution(solution, arm).split("Degenerate:")[1].strip().splitlines()[0])
-px = 0 and py = 0: θ1 is not determined (the end point on axis 1)
+px = 0 and py = 0: θ1 is not determined (the end point on axis 1; only where a1² = a2²)
 """
 from __future__ import annotations
 
