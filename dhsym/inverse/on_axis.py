@@ -55,11 +55,13 @@ def say_on_axis(chain: Chain, derivation, definitions, sample) -> None:
         at = [values | {n: float(names[n].xreplace(values)) for n in used & names.keys()} for values in poses]
         sides = [sum(float(e.xreplace(numbers)) ** 2 for e in case.condition) for numbers in at]
         found = _on_axis(chain, case, names, sides, poses, ring, points)
-        if found is not None and never_zero(found[1], chain.joint_variables):
+        if found is None:
+            continue
+        turning = turning_of(found[1], chain.joint_variables)
+        if never_zero(turning):
             never.append(index)
-        elif found is not None:
-            said = replace(found[0], only=only_where(found[1], chain.joint_variables))
-            derivation.degenerate[index] = replace(case, reason=said)
+        else:
+            derivation.degenerate[index] = replace(case, reason=replace(found[0], only=only_where(turning)))
     kept = [k for k in range(len(derivation.degenerate)) if k not in never]
     derivation.degenerate = [derivation.degenerate[k] for k in kept]
     derivation.vanishing = [(expr, kept.index(k)) for expr, k in derivation.vanishing if k in kept]
@@ -88,53 +90,14 @@ def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> tuple | N
     return None
 
 
-def never_zero(square, joints) -> bool:
-    """Whether a distance² in the robot file's own numbers (Written, exact) and at most one of
-    `joints`, A + B cos θ + C sin θ, is positive in every pose: A > √(B² + C²).
-
-    >>> t = sympy.Symbol("theta_3", real=True)
-    >>> a2, a3 = Written.of(sympy.Rational(612, 1000)), Written.of(sympy.Rational(5723, 10000))
-    >>> never_zero((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2, [t])
-    True
-    >>> never_zero((a2 - a2 * sympy.cos(t))**2, [t])   # folded back onto the axis at θ = 0
-    False
-    """
-    numbers = {s: s.value for s in square.free_symbols if isinstance(s, Written)}
-    found = _turning(square.xreplace(numbers), joints)
-    if found is None or not all(k.is_Rational for k in found):
-        return False
-    a, b, k = found
-    return bool(a > 0 and a ** 2 > b ** 2 + k ** 2)
-
-
-def only_where(square, joints) -> tuple:
-    """(lhs, rhs): the constants' relation without which a distance² A + B cos θ + C sin θ (θ one of
-    `joints`, or none) is never 0, A² = B² + C² written as a book does; () where it is 0 in some
-    pose whatever the constants, or this cannot tell.
+def turning_of(square, joints) -> tuple | None:
+    """(A, B, C) with `square` = A + B cos θ + C sin θ (sin² read as 1 − cos²), θ the one of
+    `joints` it holds in a cos or sin; (square, 0, 0) where it holds none; None for anything else.
 
     >>> t, a2, a3 = sympy.symbols("theta_3 a_2 a_3", real=True)
-    >>> only_where((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2, [t])
-    (a_2**2, a_3**2)
+    >>> turning_of((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2, [t])
+    (a_2**2 + a_3**2, 2*a_2*a_3, 0)
     """
-    found = _turning(square.xreplace({s: s.value for s in square.free_symbols if isinstance(s, Written)}), joints)
-    if found is None or any(k.free_symbols & set(joints) for k in found):
-        return ()
-    a, b, k = found
-    gap = sympy.factor(a if b == k == 0 else a ** 2 - b ** 2 - k ** 2)
-    if gap.is_number:
-        return ()
-    coefficient, factors = sympy.factor_list(gap)
-    if coefficient > 0 and all(e % 2 == 0 for _, e in factors):  # a square: its root, as a book writes it
-        gap = sympy.Mul(*[f ** (e // 2) for f, e in factors])
-    terms = sympy.Add.make_args(sympy.expand(gap))
-    lhs = sympy.Add(*[t for t in terms if not t.could_extract_minus_sign()])
-    rhs = -sympy.Add(*[t for t in terms if t.could_extract_minus_sign()])
-    return (lhs, rhs) if lhs != 0 else (rhs, lhs)
-
-
-def _turning(square, joints) -> tuple | None:
-    """(A, B, C) with `square` = A + B cos θ + C sin θ (sin² read as 1 − cos²), θ the one of
-    `joints` it holds in a cos or sin; (square, 0, 0) where it holds none; None for anything else."""
     held = square.free_symbols & set(joints)
     if len(held) > 1:
         return None
@@ -150,6 +113,52 @@ def _turning(square, joints) -> tuple | None:
     if poly.total_degree() > 1:
         return None
     return tuple(poly.coeff_monomial(m) for m in (1, c, s))
+
+
+def never_zero(turning) -> bool:
+    """Whether a distance² A + B cos θ + C sin θ (`turning`) in the robot file's own numbers
+    (Written, exact) is positive in every pose: A > √(B² + C²).
+
+    >>> t = sympy.Symbol("theta_3", real=True)
+    >>> a2, a3 = Written.of(sympy.Rational(612, 1000)), Written.of(sympy.Rational(5723, 10000))
+    >>> never_zero(turning_of((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2, [t]))
+    True
+    >>> never_zero(turning_of((a2 - a2 * sympy.cos(t))**2, [t]))   # folded back onto the axis at θ = 0
+    False
+    """
+    if turning is None:
+        return False
+    a, b, k = _in_numbers(turning)
+    return bool(all(x.is_Rational for x in (a, b, k)) and a > 0 and a ** 2 > b ** 2 + k ** 2)
+
+
+def only_where(turning) -> tuple:
+    """(lhs, rhs): the constants' relation without which a distance² A + B cos θ + C sin θ
+    (`turning`) is never 0, A² = B² + C² written as a book does; () where it is 0 in some pose
+    whatever the constants, or this cannot tell.
+
+    >>> t, a2, a3 = sympy.symbols("theta_3 a_2 a_3", real=True)
+    >>> only_where(turning_of((a2 + a3 * sympy.cos(t))**2 + (a3 * sympy.sin(t))**2, [t]))
+    (a_2**2, a_3**2)
+    """
+    if turning is None:
+        return ()
+    a, b, k = _in_numbers(turning)
+    gap = sympy.expand(a if b == k == 0 else a ** 2 - b ** 2 - k ** 2)
+    if gap.is_number:
+        return ()
+    coefficient, factors = sympy.factor_list(gap)
+    if coefficient > 0 and all(e % 2 == 0 for _, e in factors):  # a square: its root, as a book writes it
+        gap = sympy.Mul(*[f ** (e // 2) for f, e in factors])
+    terms = sympy.Add.make_args(sympy.expand(gap))
+    lhs = sympy.Add(*[t for t in terms if not t.could_extract_minus_sign()])
+    rhs = -sympy.Add(*[t for t in terms if t.could_extract_minus_sign()])
+    return (lhs, rhs) if lhs != 0 else (rhs, lhs)
+
+
+def _in_numbers(turning) -> tuple:
+    """A, B, C with the robot file's own numbers (Written) as their exact values."""
+    return tuple(x.xreplace({s: s.value for s in x.free_symbols if isinstance(s, Written)}) for x in turning)
 
 
 def _points(chain: Chain, sample) -> list:
