@@ -153,6 +153,11 @@ def _proportional(top, other, trig: int) -> bool:
     return bool(mine) and top * theirs == other * mine
 
 
-def ratio_at(side: float, square, values) -> float | None:
-    value = float(square.xreplace(values))
-    return None if abs(value) < 1e-12 else side / value
+def in_one_ratio(sides, square, poses) -> bool:
+    """Whether `sides` (one side's values at `poses`) are `square` at the same poses times one
+    number: the cheap test in numbers before a proof in the ring."""
+    values = [float(square.xreplace(pose)) for pose in poses]
+    if any(abs(value) < 1e-12 for value in values):
+        return False
+    ratios = [side / value for side, value in zip(sides, values)]
+    return max(ratios) - min(ratios) <= 1e-9 * max(1.0, max(map(abs, ratios)))

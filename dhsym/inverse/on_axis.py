@@ -29,7 +29,7 @@ import sympy
 from ..core.chain import Chain
 from ..velocity.geometry import sample_values, wrist_centre
 from ..velocity.jacobian import axis_frame
-from .joint_space import TrigRing, in_joints, ratio_at
+from .joint_space import TrigRing, in_joints, in_one_ratio
 from .sentences import ByEquations, OnAxis, Undetermined
 from .written import Written
 
@@ -62,9 +62,7 @@ def say_on_axis(chain: Chain, derivation, definitions, sample) -> None:
             never.append(index)
         else:
             derivation.degenerate[index] = replace(case, reason=replace(found[0], only=only_where(turning)))
-    kept = [k for k in range(len(derivation.degenerate)) if k not in never]
-    derivation.degenerate = [derivation.degenerate[k] for k in kept]
-    derivation.vanishing = [(expr, kept.index(k)) for expr, k in derivation.vanishing if k in kept]
+    derivation.keep_degenerate([k for k in range(len(derivation.degenerate)) if k not in never])
 
 
 def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> tuple | None:
@@ -79,8 +77,7 @@ def _on_axis(chain: Chain, case, names, sides, poses, ring, points) -> tuple | N
                 continue  # a frame before the axis: the joint does not move it
             x, y = chain.transform(line, frame)[:2, 3]
             square = x ** 2 + y ** 2  # in the axis's own frame the axis is z: the distance is x, y
-            ratios = [ratio_at(value, square, values) for value, values in zip(sides, poses)]
-            if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
+            if not in_one_ratio(sides, square, poses):
                 continue
             side = side if side is not None else sympy.Add(*[sympy.expand(e.xreplace(names)) ** 2
                                                              for e in case.condition])

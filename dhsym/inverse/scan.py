@@ -49,6 +49,12 @@ class Derivation:
     coordinates: list = field(default_factory=list)  # (sum, name): a distance's coordinates named (X, Y)
     laws: list = field(default_factory=list)  # the law of cosines' knowns (dhsym.inverse.coordinates.Law)
 
+    def keep_degenerate(self, kept) -> None:
+        """Keep the degenerate cases at the indices `kept` (in order), and the pairs in `vanishing`
+        that point at them, renumbered."""
+        self.vanishing = [(expr, kept.index(k)) for expr, k in self.vanishing if k in kept]
+        self.degenerate = [self.degenerate[k] for k in kept]
+
 
 def scan(equations, unknowns, prismatic, derivation: Derivation | None = None, prefer=("position",),
          constants=frozenset(), witness: dict | None = None, unique=frozenset(), first=(),

@@ -26,7 +26,7 @@ from ..velocity.determinant import TooManyTerms, as_written, determinant, factor
 from ..velocity.geometry import TOLERANCE, axis_line, dot, poses, sample_values, wrist_centre
 from ..velocity.jacobian import angular_part, axis_frame
 from ..velocity.singularities import singularities
-from .joint_space import TrigRing, in_joints, ratio_at
+from .joint_space import TrigRing, in_joints, in_one_ratio
 from .on_axis import say_on_axis
 from .sentences import Exists, LinedUp, Singular
 from .subproblems import angle_symbol, factor_bases
@@ -42,8 +42,7 @@ def explain_cases(chain: Chain, derivation, definitions, sample, numbers, nonzer
     say_lined_up(chain, derivation)
     if tie:
         tie_to_jacobian(chain, derivation, definitions, sample, numbers)
-    derivation.degenerate, kept = reachable_cases(derivation.degenerate, derivation.conditions, nonzero)
-    derivation.vanishing = [(expr, kept.index(k)) for expr, k in derivation.vanishing if k in kept]
+    derivation.keep_degenerate(reachable_cases(derivation.degenerate, derivation.conditions, nonzero)[1])
     say_on_axis(chain, derivation, definitions, sample)
 
 
@@ -95,8 +94,7 @@ def meeting_factors(chain: Chain, side, factors, sample, trials: int = 3) -> tup
     for size in range(1, len(joined) + 1):
         for product in itertools.combinations(joined, size):
             square = sympy.Mul(*product) ** 2
-            ratios = [ratio_at(value, square, values) for value, values in zip(sides, points)]
-            if None in ratios or max(ratios) - min(ratios) > 1e-9 * max(1.0, max(map(abs, ratios))):
+            if not in_one_ratio(sides, square, points):
                 continue
             if ring.multiple(side, square):
                 return product
